@@ -1,0 +1,57 @@
+"""Find ROS packages on a package path, the way rospack crawls ``ROS_PACKAGE_PATH``.
+
+A package is a directory holding a ``package.xml``; its name is the manifest's ``<name>``. The
+crawl does not descend into a package, into hidden directories, or below a directory holding
+``CATKIN_IGNORE`` or ``rospack_nosubdirs``. When a name occurs twice, the first one on the path
+wins, as with rospack.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from pathlib import Path
+
+_NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
+
+
+def package_name(manifest: Path) -> str | None:
+    """The ``<name>`` of a ``package.xml``, or None when it has none or cannot be read."""
+    try:
+        match = _NAME.search(manifest.read_text(encoding="utf-8", errors="replace"))
+    except OSError:
+        return None
+    return match.group(1) if match else None
+
+
+def split_package_path(value: str | None) -> list[Path]:
+    """The entries of a ``ROS_PACKAGE_PATH`` value, empty ones dropped."""
+    return [Path(p) for p in (value or "").split(os.pathsep) if p]
+
+
+def find_packages(roots: list[Path]) -> dict[str, Path]:
+    """Map each package name found under ``roots`` to its directory."""
+    found: dict[str, Path] = {}
+    for root in roots:
+        _crawl(root, found)
+    return found
+
+
+def _crawl(directory: Path, found: dict[str, Path]) -> None:
+    manifest = directory / "package.xml"
+    if manifest.is_file():
+        name = package_name(manifest)
+        if name and name not in found:
+            found[name] = directory
+        return
+    try:
+        entries = sorted(os.scandir(directory), key=lambda e: e.name)
+    except OSError:
+        return
+    names = {e.name for e in entries}
+    if "CATKIN_IGNORE" in names or "rospack_nosubdirs" in names:
+        return
+    for entry in entries:
+        if entry.name.startswith(".") or not entry.is_dir():
+            continue
+        _crawl(Path(entry.path), found)

@@ -1,0 +1,120 @@
+"""The parsed form of ROS 1 message and service definitions.
+
+A `MsgSpec` is what a `.msg` file says once its type names are resolved: constants, then fields,
+each field type fully qualified (``geometry_msgs/Vector3``, ``std_msgs/Header``) unless it is a
+built-in. Services are a request and a response spec under one name. These are plain values; the
+parser builds them, the type store holds them, and the codec, md5 and YAML code read them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+#: Built-in field types of ROS 1 messages. ``char`` and ``byte`` are the deprecated aliases of
+#: ``uint8`` and ``int8``; they keep their own names in definitions and md5 texts.
+PRIMITIVE_TYPES = frozenset(
+    {
+        "bool",
+        "int8",
+        "uint8",
+        "int16",
+        "uint16",
+        "int32",
+        "uint32",
+        "int64",
+        "uint64",
+        "float32",
+        "float64",
+        "string",
+        "char",
+        "byte",
+        "time",
+        "duration",
+    }
+)
+
+#: Types a constant may have (every primitive but time and duration).
+CONSTANT_TYPES = PRIMITIVE_TYPES - {"time", "duration"}
+
+HEADER_TYPE = "std_msgs/Header"
+
+
+@dataclass(frozen=True)
+class Field:
+    """One field: ``base_type`` is a primitive or a full ``pkg/Type`` name.
+
+    ``is_array`` marks ``T[]`` and ``T[N]``; ``array_len`` is N for fixed-size arrays and
+    None for variable-length ones (and for scalars).
+    """
+
+    name: str
+    base_type: str
+    is_array: bool = False
+    array_len: int | None = None
+
+    @property
+    def type(self) -> str:
+        """The type as ROS 1 writes it in resolved form, e.g. ``float64[9]``, ``pkg/T[]``."""
+        if not self.is_array:
+            return self.base_type
+        return f"{self.base_type}[{'' if self.array_len is None else self.array_len}]"
+
+    @property
+    def is_builtin(self) -> bool:
+        return self.base_type in PRIMITIVE_TYPES
+
+
+@dataclass(frozen=True)
+class Constant:
+    """A constant: ``text`` is the value as written (what rosmsg shows and md5 hashes)."""
+
+    type: str
+    name: str
+    value: bool | int | float | str
+    text: str
+
+
+@dataclass(frozen=True)
+class MsgSpec:
+    """A message type. ``text`` is its definition text (what ``rosmsg show -r`` prints)."""
+
+    full_name: str
+    constants: tuple[Constant, ...]
+    fields: tuple[Field, ...]
+    text: str
+
+    @property
+    def package(self) -> str:
+        return self.full_name.partition("/")[0]
+
+    @property
+    def short_name(self) -> str:
+        return self.full_name.partition("/")[2]
+
+    @property
+    def has_header(self) -> bool:
+        """ROS 1's rule: the first field is ``Header header``."""
+        return (
+            bool(self.fields)
+            and self.fields[0].name == "header"
+            and not self.fields[0].is_array
+            and self.fields[0].base_type == HEADER_TYPE
+        )
+
+
+@dataclass(frozen=True)
+class SrvSpec:
+    """A service type: ``request`` and ``response`` are named ``pkg/TypeRequest``/``…Response``."""
+
+    full_name: str
+    request: MsgSpec
+    response: MsgSpec
+    text: str
+
+    @property
+    def package(self) -> str:
+        return self.full_name.partition("/")[0]
+
+    @property
+    def short_name(self) -> str:
+        return self.full_name.partition("/")[2]

@@ -1,0 +1,214 @@
+"""One type store: every message and service type rosx knows, found lazily by name.
+
+Sources, first match wins per package, as rospack's search order does:
+
+1. packages on the package path (``ROS_PACKAGE_PATH``): their ``msg/*.msg`` and ``srv/*.srv``;
+2. the standard types: rosbags' ROS 1 Noetic messages, the standard packages' services that
+   rosbags does not carry (``rosx/msg/interfaces``) and turtlesim's types (``rosx_turtle``).
+
+Nothing is parsed until asked for; listing every type reads directory names, not files.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+from collections.abc import Mapping
+from functools import cached_property
+from pathlib import Path
+
+from rosx.msg.md5 import full_text, message_md5, service_md5
+from rosx.msg.packages import find_packages, split_package_path
+from rosx.msg.parser import InvalidMsgSpecError, is_valid_type_name, parse_msg, parse_srv
+from rosx.msg.spec import MsgSpec, SrvSpec
+from rosx.msg.standard import standard_text, standard_types
+
+_INTERFACES = Path(__file__).parent / "interfaces"
+#: Packages shipped with rosx whose definitions are part of the standard set.
+_BUNDLED_PACKAGES = ("rosx_turtle",)
+
+
+class UnknownTypeError(LookupError):
+    """No definition of the type was found; ``package_known`` tells which part was missing."""
+
+    def __init__(self, full_name: str, kind: str, package_known: bool) -> None:
+        super().__init__(f"Cannot locate {kind} [{full_name}]")
+        self.full_name = full_name
+        self.kind = kind
+        self.package_known = package_known
+
+
+class TypeStore:
+    """Message and service specs by ``pkg/Type`` name, with their md5 sums and full texts."""
+
+    def __init__(self, package_path: list[Path] | None = None) -> None:
+        self._package_path = package_path or []
+        self._msgs: dict[str, MsgSpec] = {}
+        self._srvs: dict[str, SrvSpec] = {}
+        self._md5: dict[str, str] = {}
+        self._md5_pending: set[str] = set()
+
+    @classmethod
+    def from_environ(cls, environ: Mapping[str, str] | None = None) -> TypeStore:
+        env = os.environ if environ is None else environ
+        return cls(split_package_path(env.get("ROS_PACKAGE_PATH")))
+
+    # -- where definitions live -------------------------------------------------------------
+
+    @cached_property
+    def path_packages(self) -> dict[str, Path]:
+        """Packages found on the package path, by name."""
+        return find_packages(self._package_path)
+
+    @cached_property
+    def _bundled_packages(self) -> dict[str, Path]:
+        found = {p.name: p for p in sorted(_INTERFACES.iterdir()) if p.is_dir()}
+        for module in _BUNDLED_PACKAGES:
+            spec = importlib.util.find_spec(module)
+            if spec is not None and spec.origin is not None:
+                found.update(find_packages([Path(spec.origin).parent]))
+        return found
+
+    def _directory(self, package: str, kind: str) -> Path | None:
+        root = self.path_packages.get(package)
+        if root is None:
+            root = self._bundled_packages.get(package)
+        return None if root is None else root / kind
+
+    def _has_package(self, package: str) -> bool:
+        return (
+            package in self.path_packages
+            or package in self._bundled_packages
+            or any(name.partition("/")[0] == package for name in standard_types())
+        )
+
+    def _standard_allowed(self, package: str) -> bool:
+        return package not in self.path_packages
+
+    # -- lookups ---------------------------------------------------------------------------
+
+    def msg(self, full_name: str) -> MsgSpec:
+        """The spec of message ``full_name``; service halves (``pkg/SrvRequest``) included."""
+        spec = self._msgs.get(full_name)
+        if spec is not None:
+            return spec
+        text = self._msg_text(full_name)
+        spec = parse_msg(full_name, text) if text is not None else self._service_half(full_name)
+        self._msgs[full_name] = spec
+        return spec
+
+    def srv(self, full_name: str) -> SrvSpec:
+        spec = self._srvs.get(full_name)
+        if spec is None:
+            text = self._file_text(full_name, "srv") if is_valid_type_name(full_name) else None
+            if text is None:
+                package = full_name.partition("/")[0]
+                raise UnknownTypeError(full_name, "service", self._has_package(package))
+            spec = self._srvs[full_name] = parse_srv(full_name, text)
+        return spec
+
+    def has_msg(self, full_name: str) -> bool:
+        try:
+            self.msg(full_name)
+        except UnknownTypeError:
+            return False
+        return True
+
+    def has_srv(self, full_name: str) -> bool:
+        try:
+            self.srv(full_name)
+        except UnknownTypeError:
+            return False
+        return True
+
+    def _msg_text(self, full_name: str) -> str | None:
+        if not is_valid_type_name(full_name):
+            return None
+        text = self._file_text(full_name, "msg")
+        if text is None and self._standard_allowed(full_name.partition("/")[0]):
+            text = standard_text(full_name)
+        return text
+
+    def _file_text(self, full_name: str, kind: str) -> str | None:
+        package, _, short = full_name.partition("/")
+        directory = self._directory(package, kind)
+        if directory is None:
+            return None
+        try:
+            return (directory / f"{short}.{kind}").read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError):
+            return None
+
+    def _service_half(self, full_name: str) -> MsgSpec:
+        for suffix in ("Request", "Response"):
+            if full_name.endswith(suffix) and len(full_name) > len(suffix):
+                try:
+                    service = self.srv(full_name[: -len(suffix)])
+                except UnknownTypeError:
+                    break
+                return service.request if suffix == "Request" else service.response
+        package = full_name.partition("/")[0]
+        raise UnknownTypeError(full_name, "message", self._has_package(package))
+
+    # -- sums and texts --------------------------------------------------------------------
+
+    def md5(self, full_name: str) -> str:
+        """The md5sum of message ``full_name``."""
+        cached = self._md5.get(full_name)
+        if cached is None:
+            if full_name in self._md5_pending:
+                raise InvalidMsgSpecError(f"[{full_name}] embeds itself")
+            self._md5_pending.add(full_name)
+            try:
+                cached = message_md5(self.msg(full_name), self.msg, self.md5)
+            finally:
+                self._md5_pending.discard(full_name)
+            self._md5[full_name] = cached
+        return cached
+
+    def srv_md5(self, full_name: str) -> str:
+        key = "srv:" + full_name
+        cached = self._md5.get(key)
+        if cached is None:
+            cached = self._md5[key] = service_md5(self.srv(full_name), self.msg, self.md5)
+        return cached
+
+    def full_text(self, full_name: str) -> str:
+        """The ``message_definition`` of message ``full_name``."""
+        return full_text(self.msg(full_name), self.msg)
+
+    # -- listings --------------------------------------------------------------------------
+
+    def types(self, kind: str) -> list[str]:
+        """Every ``pkg/Type`` of ``kind`` (``msg`` or ``srv``), sorted."""
+        names: set[str] = set()
+        packages = {**self._bundled_packages, **self.path_packages}
+        for package, root in packages.items():
+            directory = root / kind
+            if directory.is_dir():
+                names.update(f"{package}/{e.stem}" for e in directory.glob("*." + kind))
+        if kind == "msg":
+            names.update(n for n in standard_types() if self._standard_allowed(n.split("/")[0]))
+        return sorted(names)
+
+    def packages(self, kind: str) -> list[str]:
+        """Packages holding types of ``kind``, sorted."""
+        return sorted({name.partition("/")[0] for name in self.types(kind)})
+
+    def find(self, short_name: str, kind: str) -> list[str]:
+        """Full names of every type of ``kind`` whose bare name is ``short_name``."""
+        return [n for n in self.types(kind) if n.partition("/")[2] == short_name]
+
+
+_default: TypeStore | None = None
+
+
+def default_store() -> TypeStore:
+    """The process-wide store over ``ROS_PACKAGE_PATH`` as it was at first use."""
+    global _default  # noqa: PLW0603 - one lazily built store a process
+    if _default is None:
+        _default = TypeStore.from_environ()
+    return _default
+
+
+__all__ = ["InvalidMsgSpecError", "TypeStore", "UnknownTypeError", "default_store"]

@@ -1,0 +1,1 @@
+"""turtlesim for rosx; ``msg/`` and ``srv/`` hold the ``turtlesim`` package's types."""
