@@ -1,0 +1,1 @@
+"""The rosx command line: one typer app per ROS tool, composed under ``rosx``."""

@@ -69,11 +69,22 @@ class TypeStore:
                 found.update(find_packages([Path(spec.origin).parent]))
         return found
 
-    def _directory(self, package: str, kind: str) -> Path | None:
+    def package_dir(self, package: str) -> Path | None:
+        """The directory of ``package`` when its definitions live in files."""
         root = self.path_packages.get(package)
-        if root is None:
-            root = self._bundled_packages.get(package)
+        return self._bundled_packages.get(package) if root is None else root
+
+    def _directory(self, package: str, kind: str) -> Path | None:
+        root = self.package_dir(package)
         return None if root is None else root / kind
+
+    @property
+    def package_path(self) -> list[Path]:
+        return list(self._package_path)
+
+    def has_package(self, package: str) -> bool:
+        """True when ``package`` is known, with or without types."""
+        return self._has_package(package)
 
     def _has_package(self, package: str) -> bool:
         return (

@@ -1,0 +1,52 @@
+"""What a command needs from the outside world, passed in rather than read deep in the stack."""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from enum import IntEnum
+from typing import TextIO
+
+
+class ExitStatus(IntEnum):
+    """Exit codes, as ROS 1's tools use them."""
+
+    OK = 0
+    ERROR = 1
+    USAGE = 2  # optparse's status for a bad option or argument
+    NOT_FOUND = 3  # rosrun: no such executable
+    EX_USAGE = 64  # rostopic/rosnode/rosservice/rosmsg: unknown or missing sub-command
+
+
+@dataclass
+class Environment:
+    """Streams and environment variables of one command run."""
+
+    stdout: TextIO = field(default_factory=lambda: sys.stdout)
+    stderr: TextIO = field(default_factory=lambda: sys.stderr)
+    stdin: TextIO = field(default_factory=lambda: sys.stdin)
+    environ: Mapping[str, str] = field(default_factory=lambda: dict(os.environ))
+
+    @property
+    def stdout_isatty(self) -> bool:
+        isatty = getattr(self.stdout, "isatty", None)
+        return bool(isatty and isatty())
+
+    def out(self, text: str = "") -> None:
+        """Print a line to stdout."""
+        self.stdout.write(text + "\n")
+
+    def err(self, text: str = "") -> None:
+        """Print a line to stderr."""
+        self.stderr.write(text + "\n")
+
+
+class CommandError(Exception):
+    """A user's mistake: ``message`` goes to stderr as is, the command exits with ``status``."""
+
+    def __init__(self, message: str, status: int = ExitStatus.ERROR) -> None:
+        super().__init__(message)
+        self.message = message
+        self.status = status

@@ -1,0 +1,63 @@
+"""Where the ROS 1 reference is, and how to run it; tests that need it skip cleanly without it."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+ROS1_PYTHON = os.environ.get("ROS1_PYTHON", "/usr/bin/python3")
+OVERLAY = Path(os.environ.get("ROS1_OVERLAY", "/tmp/ros1-overlay"))
+
+
+def ros1_available() -> bool:
+    """True when ROS 1's tools and rospy (Debian's Python) are installed with the overlay."""
+    if shutil.which("roscore", path="/usr/bin") is None or not (OVERLAY / "turtlesim").is_dir():
+        return False
+    probe = subprocess.run(
+        [ROS1_PYTHON, "-c", "import rospy, rosmsg, genpy"], capture_output=True, check=False
+    )
+    return probe.returncode == 0
+
+
+ROS1 = ros1_available()
+needs_ros1 = pytest.mark.skipif(not ROS1, reason="the ROS 1 reference is not installed")
+
+
+def ros1_environ(**extra: str) -> dict[str, str]:
+    """The environment ROS 1's tools need (as ../shared/tools/ros1-reference prints it)."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith("ROS_")}
+    env["ROS_PACKAGE_PATH"] = f"{OVERLAY}:/usr/share"
+    env.update(extra)
+    return env
+
+
+def run_ros1(args: list[str], *, stdin: str = "", **extra: str) -> subprocess.CompletedProcess[str]:
+    """Run a ROS 1 command line (``rosmsg show …``) and capture its output."""
+    return subprocess.run(
+        args,
+        input=stdin,
+        capture_output=True,
+        text=True,
+        env=ros1_environ(**extra),
+        timeout=60,
+        check=False,
+    )
+
+
+def ros1_python(script: str, **extra: str) -> Any:
+    """Run ``script`` under ROS 1's Python; it prints one JSON document, which is returned."""
+    done = subprocess.run(
+        [ROS1_PYTHON, "-c", script],
+        capture_output=True,
+        text=True,
+        env=ros1_environ(**extra),
+        timeout=120,
+        check=True,
+    )
+    return json.loads(done.stdout)

@@ -1,0 +1,41 @@
+"""Short commands stay fast: the headless core never pays for the TUI, numpy or unused layers."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+HEAVY = ("textual", "numpy", "rosbags")
+
+
+def _modules_after(code: str) -> set[str]:
+    script = f"{code}\nimport sys, json\nprint(json.dumps(sorted(sys.modules)))"
+    done = subprocess.run(
+        [sys.executable, "-c", script], capture_output=True, text=True, check=True
+    )
+    return set(json.loads(done.stdout.splitlines()[-1]))
+
+
+@pytest.mark.parametrize(
+    "code",
+    [
+        "import rosx.names, rosx.wire.xmlrpc, rosx.wire.tcpros, rosx.msg.store",
+        "from rosx.msg.classes import get_message_class; from rosx.msg.store import TypeStore\n"
+        "TypeStore([]).msg('turtlesim/Pose'); get_message_class('turtlesim/Pose')().serialize",
+    ],
+)
+def test_core_imports_nothing_heavy(code: str) -> None:
+    loaded = _modules_after(code)
+    assert not {m for m in loaded if m.split(".")[0] in HEAVY}
+    assert not {m for m in loaded if m.startswith(("rosx_commands", "rosx_turtle"))}
+
+
+def test_rosmsg_of_a_user_type_loads_no_tui_and_no_numpy() -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        "run_tool(['rosmsg', 'show', 'turtlesim/Pose'], Environment(stdout=io.StringIO(), environ={}))"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in HEAVY}
