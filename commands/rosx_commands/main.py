@@ -14,6 +14,7 @@ from typing import Annotated
 import typer
 
 import rosx
+from rosx_commands.cli import run_app
 from rosx_commands.context import Environment
 
 Tool = Callable[[Sequence[str], Environment], int]
@@ -22,6 +23,8 @@ Tool = Callable[[Sequence[str], Environment], int]
 TOOLS: dict[str, tuple[str, str]] = {
     "rosmsg": ("rosx_commands.rosmsg:rosmsg", "Show information about ROS message types."),
     "rossrv": ("rosx_commands.rosmsg:rossrv", "Show information about ROS service types."),
+    "rostopic": ("rosx_commands.rostopic:rostopic", "Print information about ROS topics."),
+    "rosnode": ("rosx_commands.rosnode:rosnode", "Print information about ROS nodes."),
 }
 
 
@@ -75,7 +78,6 @@ def _add_forwarder(app: typer.Typer, name: str, help_text: str) -> None:
 
 
 def _run_root(argv: Sequence[str], env: Environment) -> int:
-    from rosx_commands.cli import run_app  # noqa: PLC0415 - only the menu needs it
 
     return run_app(build_root_app(), list(argv) or ["--help"], env, tool="rosx", usages={})
 

@@ -1,0 +1,449 @@
+"""``rosx rosnode``: list, info, ping, kill, machine, cleanup, as ROS 1's rosnode."""
+
+import contextlib
+import re
+import socket
+import time
+from collections.abc import Sequence
+from typing import Annotated, Any
+from urllib.parse import urlparse
+
+import typer
+
+from rosx.names.resolution import make_global_ns
+from rosx.names.script import ros_namespace, script_resolve_name
+from rosx.transport.errors import CallTimeoutError, ConnectError, FaultError, TransportError
+from rosx_commands.cli import run_app, tool_app, usage_error
+from rosx_commands.context import CommandError, Environment, ExitStatus
+from rosx_commands.master import Master
+
+CALLER_ID = "/rosnode"
+PING_TIMEOUT = 3.0
+_CONNECTION = re.compile(r"\w+ connection on port (\d+) to \[(.*) on socket (\d+)\]")
+
+COMMANDS = [
+    ("ping", "test connectivity to node"),
+    ("list", "list active nodes"),
+    ("info", "print information about node"),
+    ("machine", "list nodes running on a particular machine or list machines"),
+    ("kill", "kill a running node"),
+    ("cleanup", "purge registration information of unreachable nodes"),
+]
+USAGES = {
+    "ping": "rosnode ping [options] <node>",
+    "list": "rosnode list",
+    "info": "rosnode info [options] node1 [node2...]",
+    "machine": "rosnode machine [machine-name]",
+    "kill": "rosnode kill [node]...",
+    "cleanup": "rosnode cleanup",
+}
+
+
+def overview() -> str:
+    lines = [
+        "rosnode is a command-line tool for printing information about ROS Nodes.",
+        "",
+        "Commands:",
+    ]
+    lines += [f"\trosnode {name}\t{text}" for name, text in COMMANDS]
+    lines += ["", "Type rosnode <command> -h for more detailed usage, e.g. 'rosnode ping -h'", ""]
+    return "\n".join(lines)
+
+
+def _resolve(env: Environment, name: str) -> str:
+    return script_resolve_name("rosnode", name, ros_namespace(env.environ))
+
+
+def node_names(master: Master, namespace: str | None = None) -> list[str]:
+    """Every node the master knows through a registration, sorted."""
+    nodes: set[str] = set()
+    prefix = make_global_ns(namespace) if namespace else None
+    for section in master.system_state():
+        for _, names in section:
+            nodes.update(
+                n for n in names if prefix is None or n.startswith(prefix) or n == namespace
+            )
+    return sorted(nodes)
+
+
+def list_nodes(
+    ctx: typer.Context,
+    namespace: Annotated[list[str] | None, typer.Argument(metavar="[namespace]")] = None,
+    list_uri: Annotated[bool, typer.Option("-u", help="list XML-RPC URIs")] = False,
+    list_all: Annotated[bool, typer.Option("-a", "--all", help="list all information")] = False,
+) -> int:
+    env: Environment = ctx.obj
+    names = list(namespace or [])
+    if len(names) > 1:
+        raise usage_error(
+            "rosnode", USAGES["list"], "invalid args: you may only specify one namespace"
+        )
+    ns = script_resolve_name("rostopic", names[0], ros_namespace(env.environ)) if names else None
+    master = Master(env, CALLER_ID)
+    nodes = node_names(master, ns)
+    if list_all:
+        env.out("\n".join(f"{master.lookup_node(n) or 'unknown address'} \t{n}" for n in nodes))
+    elif list_uri:
+        env.out("\n".join(master.lookup_node(n) or "unknown address" for n in nodes))
+    else:
+        env.out("\n".join(nodes))
+    return ExitStatus.OK
+
+
+def _topic_type(topic: str, published: dict[str, str]) -> str:
+    return published.get(topic, "unknown type")
+
+
+def node_description(master: Master, node: str) -> str:
+    """The master's view of ``node``: publications, subscriptions, services."""
+    pubs_state, subs_state, srvs_state = master.system_state()
+    published = master.published_topics("/")
+    pubs = sorted(t for t, nodes in pubs_state if node in nodes)
+    subs = sorted(t for t, nodes in subs_state if node in nodes)
+    srvs = sorted(s for s, nodes in srvs_state if node in nodes)
+    text = f"Node [{node}]"
+    for title, topics in (("Publications", pubs), ("Subscriptions", subs)):
+        if topics:
+            text += (
+                f"\n{title}: \n"
+                + "\n".join(f" * {t} [{_topic_type(t, published)}]" for t in topics)
+                + "\n"
+            )
+        else:
+            text += f"\n{title}: None\n"
+    if srvs:
+        text += "\nServices: \n" + "\n".join(f" * {s}" for s in srvs) + "\n"
+    else:
+        text += "\nServices: None\n"
+    return text
+
+
+def _peer(master: Master, state: Any, topic: str, dest: str, cache: dict[str, str | None]) -> str:
+    for section in state[:2]:
+        for name, nodes in section:
+            if name != topic:
+                continue
+            for node in nodes:
+                if node not in cache:
+                    cache[node] = master.lookup_node(node)
+                if cache[node] == dest:
+                    return f"{node} ({dest})"
+    return dest
+
+
+def connection_description(master: Master, node: str, uri: str) -> str:
+    """What the node says of itself: its PID and its live connections (``getBusInfo``)."""
+    state = master.system_state()
+    try:
+        pid = _succeed(master.node_call(uri, "getPid", timeout=5.0))
+        text = f"Pid: {pid}\n"
+        bus_info = _succeed(master.node_call(uri, "getBusInfo", timeout=5.0))
+    except (TransportError, FaultError):
+        raise CommandError(f"ERROR: Communication with node[{uri}] failed!") from None
+    if bus_info:
+        text += "Connections:\n"
+        cache: dict[str, str | None] = {}
+        for info in bus_info:
+            dest, direction, transport, topic = info[1], info[2], info[3], info[4]
+            if len(info) > 5 and not info[5]:
+                continue
+            text += f" * topic: {topic}\n"
+            text += f"    * to: {_peer(master, state, topic, dest, cache)}\n"
+            text += {"i": "    * direction: inbound", "o": "    * direction: outbound"}.get(
+                direction, "    * direction: unknown"
+            )
+            if len(info) > 6:
+                match = _CONNECTION.match(info[6])
+                if match is not None:
+                    text += " ({} - {}) [{}]".format(*match.groups())
+            text += f"\n    * transport: {transport}\n"
+    return text
+
+
+def _succeed(reply: Any) -> Any:
+    code, status, value = reply
+    if code != 1:
+        raise CommandError(f"ERROR: remote call failed: {status}")
+    return value
+
+
+def info(
+    ctx: typer.Context,
+    nodes: Annotated[list[str] | None, typer.Argument(metavar="node1 [node2...]")] = None,
+    quiet: Annotated[
+        bool,
+        typer.Option(
+            "-q",
+            "--quiet",
+            help="Prints only basic information such as pubs/subs and does not contact nodes "
+            "for more information",
+        ),
+    ] = False,
+) -> int:
+    env: Environment = ctx.obj
+    if not nodes:
+        raise usage_error("rosnode", USAGES["info"], "You must specify at least one node name")
+    master = Master(env, CALLER_ID)
+    for raw in nodes:
+        node = _resolve(env, raw)
+        env.out("-" * 80)
+        env.out(node_description(master, node))
+        uri = master.lookup_node(node)
+        if uri is None:
+            env.err(f"cannot contact [{node}]: unknown node")
+            continue
+        if not quiet:
+            env.out(f"\ncontacting node {uri} ...")
+            env.out(connection_description(master, node, uri))
+    return ExitStatus.OK
+
+
+def ping_node(
+    env: Environment, master: Master, node: str, count: int | None, verbose: bool
+) -> bool:
+    """Ping ``node`` through ``getPid`` ``count`` times (forever when None), once a second."""
+    uri = master.lookup_node(node)
+    if uri is None:
+        env.err(f"cannot ping [{node}]: unknown node")
+        return False
+    if verbose:
+        env.out(f"pinging {node} with a timeout of {PING_TIMEOUT}s")
+    done, total = 0, 0.0
+    try:
+        while True:
+            start = time.time()
+            try:
+                master.node_call(uri, "getPid", timeout=PING_TIMEOUT)
+            except CallTimeoutError:
+                env.err(f"connection to [{node}] timed out")
+                return False
+            except ConnectError:
+                fresh = master.lookup_node(node)
+                if fresh is None:
+                    env.err(f"cannot ping [{node}]: unknown node")
+                    return False
+                if fresh != uri:
+                    if verbose:
+                        env.out(f"node url has changed from [{uri}] to [{fresh}], retrying to ping")
+                    uri = fresh
+                    continue
+                env.err(f"ERROR: connection refused to [{uri}]")
+                return False
+            except (TransportError, FaultError):
+                env.err(f"connection to [{node}] failed")
+                return False
+            elapsed = (time.time() - start) * 1000.0
+            total += elapsed
+            done += 1
+            if verbose:
+                env.out(f"xmlrpc reply from {uri}\ttime={elapsed:f}ms")
+            if count and done >= count:
+                break
+            time.sleep(1.0)
+    except KeyboardInterrupt:
+        pass
+    if verbose and done > 1:
+        env.out(f"ping average: {total / done:f}ms")
+    return True
+
+
+def ping(
+    ctx: typer.Context,
+    nodes: Annotated[list[str] | None, typer.Argument(metavar="<node>")] = None,
+    ping_all: Annotated[bool, typer.Option("--all", "-a", help="ping all nodes")] = False,
+    count: Annotated[
+        int | None,
+        typer.Option(
+            "-c", metavar="COUNT", help="number of pings to send. Not available with --all"
+        ),
+    ] = None,
+) -> int:
+    env: Environment = ctx.obj
+    names = list(nodes or [])
+    master = Master(env, CALLER_ID)
+    if ping_all:
+        if names:
+            raise usage_error(
+                "rosnode", USAGES["ping"], f"Invalid arguments '{' '.join(names)}' used with --all"
+            )
+        if count:
+            raise usage_error("rosnode", USAGES["ping"], "-c may not be used with --all")
+        every = node_names(master)
+        env.out("Will ping the following nodes: \n" + "".join(f" * {n}\n" for n in every))
+        for node in every:
+            ping_node(env, master, node, 1, True)
+        return ExitStatus.OK
+    if not names:
+        listing = "\n".join(node_names(master))
+        raise usage_error(
+            "rosnode",
+            USAGES["ping"],
+            "Please enter a node to ping. Available nodes are:\n" + listing,
+        )
+    if len(names) > 1:
+        raise usage_error("rosnode", USAGES["ping"], "you may only specify one input node")
+    node = _resolve(env, names[0])
+    env.out(f"rosnode: node is [{node}]")
+    ping_node(env, master, node, count, True)
+    return ExitStatus.OK
+
+
+def machine(
+    ctx: typer.Context,
+    machines: Annotated[list[str] | None, typer.Argument(metavar="[machine-name]")] = None,
+) -> int:
+    env: Environment = ctx.obj
+    names = list(machines or [])
+    if len(names) > 1:
+        raise usage_error("rosnode", USAGES["machine"], "please enter only one machine name")
+    master = Master(env, CALLER_ID)
+    hosts: dict[str, str] = {}
+    for node in node_names(master):
+        uri = master.lookup_node(node)
+        if uri is not None:
+            hosts[node] = urlparse(uri).hostname or ""
+    if not names:
+        env.out("\n".join(sorted(set(hosts.values()))))
+        return ExitStatus.OK
+    wanted = _addresses(names[0])
+    if wanted is None:
+        raise CommandError(f"ERROR: cannot resolve machine name [{names[0]}] to address")
+    chosen = [n for n, h in hosts.items() if h == names[0] or (_addresses(h) or set()) & wanted]
+    env.out("\n".join(sorted(chosen)))
+    return ExitStatus.OK
+
+
+def _addresses(host: str) -> set[str] | None:
+
+    try:
+        return {str(info[4][0]) for info in socket.getaddrinfo(host, 0, 0, 0, socket.SOL_TCP)}
+    except OSError:
+        return None
+
+
+def kill(
+    ctx: typer.Context,
+    nodes: Annotated[list[str] | None, typer.Argument(metavar="[node]...")] = None,
+    kill_all: Annotated[bool, typer.Option("-a", "--all", help="kill all nodes")] = False,
+) -> int:
+    env: Environment = ctx.obj
+    names = list(nodes or [])
+    master = Master(env, CALLER_ID)
+    if kill_all:
+        if names:
+            raise usage_error(
+                "rosnode", USAGES["kill"], "invalid arguments with kill all (-a) option"
+            )
+        targets = node_names(master)
+    elif not names:
+        listing = node_names(master)
+        if not listing:
+            env.err("No nodes running")
+            return ExitStatus.OK
+        env.stdout.write("\n".join(f"{i + 1}. {n}" for i, n in enumerate(listing)))
+        env.stdout.write("\n\nPlease enter the number of the node you wish to kill.\n> ")
+        env.stdout.flush()
+        targets = [listing[_read_choice(env, len(listing)) - 1]]
+    else:
+        targets = [_resolve(env, n) for n in names]
+        known = node_names(master)
+        unknown = [n for n in targets if n not in known]
+        if unknown:
+            raise CommandError("ERROR: Unknown node(s):\n" + "\n".join(f" * {n}" for n in unknown))
+    if len(targets) > 1:
+        env.out("killing:\n" + "\n".join(f" * {n}" for n in targets))
+    else:
+        env.out(f"killing {targets[0]}")
+    failed = []
+    for node in targets:
+        uri = master.lookup_node(node)
+        if uri is None:
+            failed.append(node)
+            continue
+        with contextlib.suppress(TransportError, FaultError):
+            master.node_call(uri, "shutdown", "user request")
+    if failed:
+        env.err("ERROR: Failed to kill:\n" + "\n".join(f" * {n}" for n in failed))
+        return ExitStatus.ERROR
+    env.out("killed")
+    return ExitStatus.OK
+
+
+def _read_choice(env: Environment, limit: int) -> int:
+    while True:
+        line = env.stdin.readline()
+        if not line:
+            raise CommandError("ERROR: no selection")
+        try:
+            choice = int(line.strip())
+        except ValueError:
+            env.out("ERROR: please enter a number (ctrl-C to cancel)")
+            continue
+        if 0 < choice <= limit:
+            return choice
+        env.out("ERROR: invalid selection. Please enter a number (ctrl-C to cancel)")
+
+
+def cleanup(ctx: typer.Context) -> int:
+    env: Environment = ctx.obj
+    master = Master(env, CALLER_ID)
+    dead = []
+    for node in node_names(master):
+        uri = master.lookup_node(node)
+        try:
+            if uri is None:
+                raise ConnectError("", "unknown")
+            master.node_call(uri, "getPid", timeout=PING_TIMEOUT)
+        except (TransportError, FaultError):
+            dead.append(node)
+    if not dead:
+        return ExitStatus.OK
+    env.out("Unable to contact the following nodes:")
+    env.out("\n".join(f" * {n}" for n in dead))
+    env.out("Warning: these might include alive and functioning nodes, e.g. in unstable networks.")
+    env.out("Cleanup will purge all information about these nodes from the master.")
+    env.out("Please type y or n to continue:")
+    while True:
+        answer = env.stdin.readline()
+        if not answer:
+            env.out("aborting")
+            return ExitStatus.OK
+        if answer.strip() in ("y", "n"):
+            break
+    if answer.strip() == "n":
+        env.out("aborting")
+        return ExitStatus.OK
+    pubs, subs, srvs = master.system_state()
+    for node in dead:
+        env.out(f"Unregistering {node}")
+        uri = master.lookup_node(node)
+        as_node = Master(env, node)
+        for topic, nodes in pubs:
+            if node in nodes:
+                as_node.call("unregisterPublisher", topic, uri)
+        for topic, nodes in subs:
+            if node in nodes:
+                as_node.call("unregisterSubscriber", topic, uri)
+        for service, nodes in srvs:
+            if node in nodes:
+                as_node.call("unregisterService", service, master.call("lookupService", service))
+    env.out("done")
+    return ExitStatus.OK
+
+
+def rosnode(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosnode ARGV…``."""
+    known = {name for name, _ in COMMANDS}
+    if not argv or argv[0] not in known:
+        env.out(overview())
+        return ExitStatus.OK if argv and argv[0] == "--help" else ExitStatus.EX_USAGE
+    app = tool_app("Prints information about ROS nodes.")
+    app.command("ping", help="test connectivity to node")(ping)
+    app.command("list", help="list active nodes")(list_nodes)
+    app.command("info", help="print information about node")(info)
+    app.command("machine", help="list nodes running on a particular machine or list machines")(
+        machine
+    )
+    app.command("kill", help="kill a running node")(kill)
+    app.command("cleanup", help="purge registration information of unreachable nodes")(cleanup)
+    return run_app(app, argv, env, tool="rosnode", usages=USAGES)

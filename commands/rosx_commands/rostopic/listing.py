@@ -1,0 +1,240 @@
+"""``rostopic list``, ``info``, ``type`` and ``find``: what the master knows about topics."""
+
+from typing import Annotated, Any
+from urllib.parse import urlparse
+
+import typer
+
+from rosx.msg.store import TypeStore, UnknownTypeError
+from rosx.names.resolution import make_global_ns
+from rosx.names.script import ros_namespace, script_resolve_name
+from rosx_commands.cli import usage_error
+from rosx_commands.context import CommandError, Environment, ExitStatus
+from rosx_commands.master import Master
+
+CALLER_ID = "/rostopic"
+
+TopicRows = list[tuple[str, str, list[str]]]
+
+
+def resolve(env: Environment, name: str) -> str:
+    """A topic name typed by the user, resolved as ROS 1's tools do (``ROS_NAMESPACE``)."""
+    return script_resolve_name("rostopic", name, ros_namespace(env.environ))
+
+
+def topic_rows(master: Master) -> tuple[TopicRows, TopicRows]:
+    """Published and subscribed topics with their types and nodes, in the master's order."""
+    publishers, subscribers, _ = master.system_state()
+    types = master.topic_types()
+
+    def rows(state: list[Any]) -> TopicRows:
+        return [(topic, types.get(topic, "unknown type"), list(nodes)) for topic, nodes in state]
+
+    return rows(publishers), rows(subscribers)
+
+
+def register(app: typer.Typer) -> None:
+    app.command("list", help="list active topics")(list_topics)
+    app.command("info", help="print information about active topic")(info)
+    app.command("type", help="print topic or field type")(topic_type)
+    app.command("find", help="find topics by type")(find)
+
+
+def list_topics(
+    ctx: typer.Context,
+    namespace: Annotated[list[str] | None, typer.Argument(metavar="[/namespace]")] = None,
+    verbose: Annotated[
+        bool, typer.Option("-v", "--verbose", help="list full details about each topic")
+    ] = False,
+    publishers_only: Annotated[bool, typer.Option("-p", help="list only publishers")] = False,
+    subscribers_only: Annotated[bool, typer.Option("-s", help="list only subscribers")] = False,
+    host: Annotated[bool, typer.Option("--host", help="group by host name")] = False,
+    bag: Annotated[
+        str | None, typer.Option("-b", "--bag", metavar="BAGFILE", help="list topics in .bag file")
+    ] = None,
+) -> int:
+    env: Environment = ctx.obj
+    names = list(namespace or [])
+    usage = "rostopic list [/namespace]"
+    if len(names) > 1:
+        raise usage_error("rostopic", usage, "you may only specify one input topic")
+    if bag is not None:
+        raise CommandError("ERROR: rosx does not read .bag files")
+    if publishers_only and subscribers_only:
+        raise CommandError("ERROR: cannot specify both subscribers- and publishers-only")
+    master = Master(env, CALLER_ID)
+    pubs, subs = topic_rows(master)
+    if names:
+        topic = resolve(env, names[0])
+        prefix = make_global_ns(topic)
+        pubs = [r for r in pubs if r[0] == topic or r[0].startswith(prefix)]
+        subs = [r for r in subs if r[0] == topic or r[0].startswith(prefix)]
+    if host:
+        _print_by_host(env, master, pubs, subs, publishers_only, subscribers_only, verbose)
+    else:
+        _print_list(env, pubs, subs, publishers_only, subscribers_only, verbose, "")
+    return ExitStatus.OK
+
+
+def _print_list(
+    env: Environment,
+    pubs: TopicRows,
+    subs: TopicRows,
+    publishers_only: bool,
+    subscribers_only: bool,
+    verbose: bool,
+    indent: str,
+) -> None:
+    if not verbose:
+        if publishers_only:
+            topics = [t for t, _, _ in pubs]
+        elif subscribers_only:
+            topics = [t for t, _, _ in subs]
+        else:
+            topics = list({t for t, _, _ in pubs} | {t for t, _, _ in subs})
+        env.out("\n".join(indent + t for t in sorted(topics)))
+        return
+    if not subscribers_only:
+        env.out(f"\n{indent}Published topics:")
+        for topic, type_name, nodes in pubs:
+            count = f"{len(nodes)} publishers" if len(nodes) > 1 else "1 publisher"
+            env.out(f"{indent} * {topic} [{type_name}] {count}")
+    if not publishers_only:
+        env.out(indent)
+        env.out(f"{indent}Subscribed topics:")
+        for topic, type_name, nodes in subs:
+            count = f"{len(nodes)} subscribers" if len(nodes) > 1 else "1 subscriber"
+            env.out(f"{indent} * {topic} [{type_name}] {count}")
+    env.out("")
+
+
+def _print_by_host(
+    env: Environment,
+    master: Master,
+    pubs: TopicRows,
+    subs: TopicRows,
+    publishers_only: bool,
+    subscribers_only: bool,
+    verbose: bool,
+) -> None:
+
+    uris: dict[str, str | None] = {}
+
+    def by_host(rows: TopicRows) -> dict[str, TopicRows]:
+        hosts: dict[str, TopicRows] = {}
+        for topic, type_name, nodes in rows:
+            for node in nodes:
+                if node not in uris:
+                    uris[node] = master.lookup_node(node)
+                host = urlparse(uris[node] or "").hostname or ""
+                mine = hosts.setdefault(host, [])
+                match = [n for t, _, n in mine if t == topic]
+                if match:
+                    match[0].append(node)
+                else:
+                    mine.append((topic, type_name, [node]))
+        return hosts
+
+    host_pubs, host_subs = by_host(pubs), by_host(subs)
+    for host in dict.fromkeys([*host_pubs, *host_subs]):
+        hp, hs = host_pubs.get(host, []), host_subs.get(host, [])
+        if (hp and not subscribers_only) or (hs and not publishers_only):
+            env.out(f"Host [{host}]:")
+            _print_list(env, hp, hs, publishers_only, subscribers_only, verbose, "  ")
+
+
+def info(
+    ctx: typer.Context,
+    topics: Annotated[list[str] | None, typer.Argument(metavar="/topic")] = None,
+) -> int:
+    env: Environment = ctx.obj
+    names = list(topics or [])
+    if not names:
+        raise usage_error("rostopic", "rostopic info /topic", "you must specify a topic name")
+    if len(names) > 1:
+        raise usage_error("rostopic", "rostopic info /topic", "you may only specify one topic name")
+    topic = resolve(env, names[0])
+    master = Master(env, CALLER_ID)
+    pubs, subs = topic_rows(master)
+    pubs = [r for r in pubs if r[0] == topic]
+    subs = [r for r in subs if r[0] == topic]
+    if not pubs and not subs:
+        raise CommandError(f"ERROR: Unknown topic {topic}")
+    types = master.topic_types()
+    lines = [f"Type: {types.get(topic, 'unknown type')}", ""]
+    for title, rows in (("Publishers", pubs), ("Subscribers", subs)):
+        if rows:
+            lines.append(f"{title}: ")
+            for node in (n for _, _, nodes in rows for n in nodes):
+                lines.append(f" * {node} ({master.lookup_node(node)})")
+        else:
+            lines.append(f"{title}: None")
+        lines.append("")
+    env.out("\n".join(lines) + "\n")
+    return ExitStatus.OK
+
+
+def topic_type(
+    ctx: typer.Context,
+    topic_or_field: Annotated[str, typer.Argument(help="Topic or field name")],
+) -> int:
+    env: Environment = ctx.obj
+    name = resolve(env, topic_or_field)
+    types = Master(env, CALLER_ID).topic_types()
+    found = find_topic(name, types)
+    if found is None:
+        raise CommandError(f"unknown topic type [{name}]")
+    topic, type_name = found
+    if topic == name:
+        env.out(type_name)
+        return ExitStatus.OK
+    field = name[len(topic) + 1 :]
+    field_type = type_name
+
+    store = TypeStore.from_environ(env.environ)
+    for part in field.split("/"):
+        spec = store.msg(field_type)
+        field_type = next(f.type for f in spec.fields if f.name == part)
+    env.out(f"{type_name} {field} {field_type}")
+    return ExitStatus.OK
+
+
+def find_topic(name: str, types: dict[str, str]) -> tuple[str, str] | None:
+    """The topic ``name`` denotes, itself or the longest topic it is a field path of.
+
+    A topic whose type has no such field is skipped, as ROS 1 does.
+    """
+    if name in types:
+        return name, types[name]
+
+    store = TypeStore([])
+    for topic in sorted((t for t in types if name.startswith(t + "/")), reverse=True):
+        path = name[len(topic) + 1 :].rstrip("/").split("[")[0]
+        if not path:
+            return topic, types[topic]
+        try:
+            spec_type = types[topic]
+            for part in path.split("/"):
+                field = next(f for f in store.msg(spec_type).fields if f.name == part)
+                spec_type = field.base_type
+        except (StopIteration, UnknownTypeError):
+            continue
+        return topic, types[topic]
+    return None
+
+
+def find(
+    ctx: typer.Context,
+    msg_types: Annotated[list[str] | None, typer.Argument(metavar="msg-type")] = None,
+) -> int:
+    env: Environment = ctx.obj
+    names = list(msg_types or [])
+    if not names:
+        raise usage_error("rostopic", "rostopic find msg-type", "please specify a message type")
+    if len(names) > 1:
+        raise usage_error(
+            "rostopic", "rostopic find msg-type", "you may only specify one message type"
+        )
+    types = Master(env, CALLER_ID).topic_types()
+    env.out("\n".join(t for t, type_name in types.items() if type_name == names[0]))
+    return ExitStatus.OK
