@@ -1,63 +1,86 @@
-"""Running one tool's typer app: ROS 1-style usage errors, exit codes, no tracebacks."""
+"""Argument parsing for the ROS-named tools, with ROS 1's own option parser.
+
+ROS 1's rostopic, rosnode, rosmsg, rosservice and rosparam parse their arguments with the
+standard library's optparse; parsing the same way gives the same ``-h`` text, the same usage
+errors (``Usage: …`` / ``tool: error: …``, exit 2) and, unlike a richer framework, costs a tool
+almost nothing at start-up, which is what keeps ``rosx rostopic list`` fast. The ``rosx`` menu
+and rosx's own commands use typer (`rosx_commands.main`).
+"""
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
-
-import typer
+import argparse
+import optparse
+import sys
+from typing import Any, NoReturn
 
 from rosx_commands.context import CommandError, Environment, ExitStatus
 
-#: typer carries click's UsageError (its own copy in recent releases) as BadParameter's base.
-UsageError: type[Exception] = next(
-    c for c in typer.BadParameter.__mro__ if c.__name__ == "UsageError"
-)
 
-CONTEXT_SETTINGS = {"help_option_names": ["-h", "--help"]}
+class HelpShown(Exception):  # noqa: N818 - a signal to stop, not an error
+    """``-h`` was given: the help has been printed and the tool exits with status 0."""
 
 
-def tool_app(help_text: str) -> typer.Typer:
-    """A typer app for one ROS tool, with ROS 1's ``-h``."""
-    return typer.Typer(
-        help=help_text,
-        context_settings=CONTEXT_SETTINGS,
-        add_completion=False,
-        pretty_exceptions_enable=False,
-        rich_markup_mode=None,
-    )
+class ToolParser(optparse.OptionParser):
+    """An OptionParser that writes to the command's streams and raises instead of exiting."""
+
+    def __init__(self, env: Environment, prog: str, usage: str) -> None:
+        super().__init__(usage=usage, prog=prog)
+        self.env = env
+
+    def print_help(self, file: object = None) -> None:
+        self.env.stdout.write(self.format_help())
+
+    def exit(self, status: int = 0, msg: str | None = None) -> NoReturn:
+        if msg:
+            self.env.stderr.write(msg)
+        if status == 0:
+            raise HelpShown
+        raise CommandError("", status)
+
+    def error(self, msg: str) -> NoReturn:
+        raise CommandError(
+            f"{self.get_usage()}\n{self.get_prog_name()}: error: {msg}", ExitStatus.USAGE
+        )
+
+    def parse(self, argv: list[str]) -> tuple[optparse.Values, list[str]]:
+        return self.parse_args(argv)
 
 
-def usage_error(tool: str, usage: str, message: str) -> CommandError:
-    """An optparse-style usage error: ``Usage: …``, blank line, ``tool: error: …``; exit 2."""
-    return CommandError(f"Usage: {usage}\n\n{tool}: error: {message}", ExitStatus.USAGE)
+class ToolArgumentParser(argparse.ArgumentParser):
+    """The argparse counterpart of `ToolParser`, for the sub-commands ROS 1 parses with argparse."""
+
+    def __init__(self, env: Environment, prog: str) -> None:
+        super().__init__(prog=prog)
+        self.env = env
+
+    def _print_message(self, message: str, file: object = None) -> None:
+        if message:
+            (self.env.stderr if file is sys.stderr else self.env.stdout).write(message)
+
+    def exit(self, status: int = 0, message: str | None = None) -> NoReturn:
+        if message:
+            self.env.stderr.write(message)
+        if status == 0:
+            raise HelpShown
+        raise CommandError("", status)
+
+    def parse(self, argv: list[str]) -> Any:
+        return self.parse_args(argv)
 
 
-def run_app(
-    app: typer.Typer,
-    argv: Sequence[str],
-    env: Environment,
-    *,
-    tool: str,
-    usages: Mapping[str, str],
-) -> int:
-    """Run ``app`` on ``argv``; ``usages`` maps sub-command names to ROS 1's usage lines."""
-    command = typer.main.get_command(app)
+def run_command(command: object, argv: list[str], env: Environment) -> int:
+    """Run one sub-command function ``command(argv, env) -> status`` with error mapping."""
     try:
-        result = command.main(args=list(argv), prog_name=tool, standalone_mode=False, obj=env)
+        status = command(argv, env)  # type: ignore[operator]
+    except HelpShown:
+        return ExitStatus.OK
     except CommandError as error:
-        env.err(error.message)
+        if error.message:
+            env.err(error.message)
         return error.status
-    except UsageError as error:
-        context = getattr(error, "ctx", None)
-        name = getattr(context, "info_name", None)
-        usage = usages.get(name or "", f"{tool} [options]")
-        text = str(getattr(error, "format_message", error.__str__)())
-        env.err(usage_error(tool, usage, text[:1].lower() + text[1:]).message)
-        return ExitStatus.USAGE
-    except typer.Exit as done:
-        return int(done.exit_code)
-    except typer.Abort:
-        return ExitStatus.ERROR
     except BrokenPipeError:
         return ExitStatus.ERROR
-    return result if isinstance(result, int) else ExitStatus.OK
+    except KeyboardInterrupt:
+        return ExitStatus.OK
+    return int(status or 0)

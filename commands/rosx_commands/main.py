@@ -1,7 +1,7 @@
 """The ``rosx`` entry point: one sub-command per ROS tool, each loaded only when used.
 
-``rosx rostopic list`` imports the rostopic module and nothing else of the CLI, so short
-commands stay fast; ``rosx --help`` builds the whole menu.
+``rosx rostopic list`` imports the rostopic module and nothing else of the CLI (not even typer),
+so short commands stay fast; ``rosx --help`` builds the typer menu (`rosx_commands.menu`).
 """
 
 from __future__ import annotations
@@ -9,12 +9,7 @@ from __future__ import annotations
 import importlib
 import sys
 from collections.abc import Callable, Sequence
-from typing import Annotated
 
-import typer
-
-import rosx
-from rosx_commands.cli import run_app
 from rosx_commands.context import Environment
 
 Tool = Callable[[Sequence[str], Environment], int]
@@ -39,47 +34,9 @@ def run_tool(argv: Sequence[str], env: Environment | None = None) -> int:
     env = env or Environment()
     if argv and argv[0] in TOOLS:
         return load_tool(argv[0])(argv[1:], env)
-    return _run_root(argv, env)
+    from rosx_commands.menu import run_menu  # noqa: PLC0415 - typer only for the menu
 
-
-def build_root_app() -> typer.Typer:
-    """The ``rosx`` menu: ``--help``, ``--version`` and every tool as a sub-command."""
-    app = typer.Typer(
-        help="The ROS 1 command-line world. Each sub-command is the ROS tool of that name.",
-        context_settings={"help_option_names": ["-h", "--help"]},
-        add_completion=False,
-        pretty_exceptions_enable=False,
-    )
-
-    @app.callback(invoke_without_command=True)
-    def root(
-        ctx: typer.Context,
-        version: Annotated[
-            bool, typer.Option("--version", help="Print the version and exit.")
-        ] = False,
-    ) -> None:
-        if version:
-            ctx.obj.out(f"rosx {rosx.__version__}")
-            raise typer.Exit(0)
-        if ctx.invoked_subcommand is None:
-            ctx.obj.out(ctx.get_help())
-
-    for name, (_, help_text) in TOOLS.items():
-        _add_forwarder(app, name, help_text)
-    return app
-
-
-def _add_forwarder(app: typer.Typer, name: str, help_text: str) -> None:
-    settings = {"ignore_unknown_options": True, "allow_extra_args": True, "help_option_names": []}
-
-    @app.command(name, help=help_text, context_settings=settings, add_help_option=False)
-    def forward(ctx: typer.Context) -> None:
-        raise typer.Exit(load_tool(name)(ctx.args, ctx.obj))
-
-
-def _run_root(argv: Sequence[str], env: Environment) -> int:
-
-    return run_app(build_root_app(), list(argv) or ["--help"], env, tool="rosx", usages={})
+    return run_menu(argv, env)
 
 
 def run() -> None:

@@ -1,14 +1,13 @@
-"""``rosx rosmsg`` and ``rosx rossrv``: show, list, md5, package, packages (ROS 1's rosmsg)."""
+"""``rosx rosmsg`` and ``rosx rossrv``: show, info, list, md5, package, packages, as ROS 1."""
 
-from collections.abc import Sequence
-from typing import Annotated
+from __future__ import annotations
 
-import typer
+from collections.abc import Callable, Sequence
 
 from rosx.msg.describe import describe_msg, describe_srv
 from rosx.msg.parser import InvalidMsgSpecError
 from rosx.msg.store import TypeStore, UnknownTypeError
-from rosx_commands.cli import run_app, tool_app, usage_error
+from rosx_commands.cli import ToolParser, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
 
 _COMMANDS = {
@@ -44,47 +43,41 @@ def _overview(kind: str) -> str:
     return "\n".join(lines)
 
 
-def _usages(kind: str) -> dict[str, str]:
-    noun = "message" if kind == "msg" else "service"
-    tool = "ros" + kind
-    return {
-        "show": f"{tool} show [options] <{noun} type>",
-        "info": f"{tool} show [options] <{noun} type>",
-        "md5": f"{tool} md5 <{noun} type>",
-        "package": f"{tool} package <package>",
-        "packages": f"{tool} packages",
-        "list": f"{tool} list",
-    }
-
-
 class _Tool:
-    """The state of one rosmsg/rossrv run: which kind, and the store."""
+    """One rosmsg/rossrv run: which kind, its streams and the type store."""
 
     def __init__(self, kind: str, env: Environment) -> None:
         self.kind = kind
         self.tool = "ros" + kind
+        self.noun = "message type" if kind == "msg" else "service type"
         self.env = env
-        self.store = TypeStore.from_environ(env.environ)
+        self._store: TypeStore | None = None
 
-    def check_type_arg(self, command: str, type_name: str) -> None:
-        usage = _usages(self.kind)[command]
-        if "::" in type_name:
-            raise usage_error(
-                self.tool,
-                usage,
-                f"{self.tool} does not understand C++-style namespaces (i.e. '::').\n"
-                "Please refer to msg/srv types as 'package_name/Type'.",
-            )
-        if "." in type_name:
-            raise usage_error(
-                self.tool,
-                usage,
-                f"invalid message type '{type_name}'.\n"
-                "Please refer to msg/srv types as 'package_name/Type'.",
-            )
+    @property
+    def store(self) -> TypeStore:
+        if self._store is None:
+            self._store = TypeStore.from_environ(self.env.environ)
+        return self._store
+
+    def parser(self, usage: str) -> ToolParser:
+        return ToolParser(self.env, self.tool, usage)
+
+    def type_arg(self, parser: ToolParser, argv: list[str]) -> tuple[object, str]:
+        """The one type argument, or a line read from stdin when there is none (as ROS 1)."""
+        options, args = parser.parse(argv)
+        if len(args) > 1:
+            parser.error(f"you may only specify one {self.noun}")
+        if args:
+            return options, args[0]
+        line = ""
+        while not line:
+            read = self.env.stdin.readline()
+            if not read:
+                parser.error(f"please specify a {self.noun}")
+            line = read.strip()
+        return options, line
 
     def matches(self, type_name: str) -> list[str]:
-        """Full names for ``type_name``: itself, or every package's type of that bare name."""
         if "/" in type_name:
             return [type_name]
         return self.store.find(type_name, self.kind)
@@ -103,14 +96,14 @@ class _Tool:
         if isinstance(error, UnknownTypeError):
             package, _, short = error.full_name.partition("/")
             where = self._search_paths(package)
-            if not error.package_known:
+            if error.package_known:
                 reason = (
-                    f"Cannot locate message [{short}]: unknown package [{package}] "
-                    f"on search path [{where}]"
+                    f"Cannot locate message [{short}] in package [{package}] with paths [{where}]"
                 )
             else:
                 reason = (
-                    f"Cannot locate message [{short}] in package [{package}] with paths [{where}]"
+                    f"Cannot locate message [{short}]: unknown package [{package}] "
+                    f"on search path [{where}]"
                 )
         else:
             reason = str(error)
@@ -126,155 +119,138 @@ class _Tool:
         roots = self.store.path_packages
         return repr({name: [str(path / self.kind)] for name, path in roots.items()})
 
-
-def build_app(kind: str) -> typer.Typer:
-    """The typer app of ``rosmsg`` (kind ``msg``) or ``rossrv`` (kind ``srv``)."""
-    app = tool_app(f"Displays information about ROS {_WHAT[kind]} types.")
-    _add_show(app, kind)
-    _add_md5(app, kind)
-    _add_listings(app, kind)
-    return app
+    def print_list(self, items: list[str], single: bool) -> None:
+        self.env.out((" " if single else "\n").join(items))
 
 
-def _add_show(app: typer.Typer, kind: str) -> None:
-    noun = "message" if kind == "msg" else "service"
+def _show(tool: _Tool, argv: list[str], alias: str) -> int:
+    parser = tool.parser(f"usage: {tool.tool} {alias} [options] <{tool.noun}>")
+    parser.add_option(
+        "-r",
+        "--raw",
+        dest="raw",
+        default=False,
+        action="store_true",
+        help="show raw message text, including comments",
+    )
+    parser.add_option(
+        "-b",
+        "--bag",
+        dest="bag",
+        default=None,
+        help="show message from .bag file",
+        metavar="BAGFILE",
+    )
+    options, type_name = tool.type_arg(parser, argv)
+    if type_name.endswith("." + tool.kind):
+        type_name = type_name[: -len(tool.kind) - 1]
+    if "::" in type_name:
+        parser.error(
+            f"{tool.tool} does not understand C++-style namespaces (i.e. '::').\n"
+            "Please refer to msg/srv types as 'package_name/Type'."
+        )
+    if "." in type_name:
+        parser.error(
+            f"invalid message type '{type_name}'.\n"
+            "Please refer to msg/srv types as 'package_name/Type'."
+        )
+    if getattr(options, "bag", None):
+        raise CommandError("ERROR: rosx does not read .bag files")
+    full_names = tool.matches(type_name)
+    if not full_names:
+        raise CommandError(f"Could not find msg '{type_name}'")
+    for full_name in full_names:
+        try:
+            text = tool.text(full_name, bool(getattr(options, "raw", False)))
+        except (UnknownTypeError, InvalidMsgSpecError) as error:
+            raise tool.load_error(full_name, error) from None
+        if "/" not in type_name:
+            tool.env.out(f"[{full_name}]:")
+        tool.env.out(text)
+    return ExitStatus.OK
 
-    def show(
-        ctx: typer.Context,
-        type_names: Annotated[list[str] | None, typer.Argument(metavar=f"<{noun} type>")] = None,
-        raw: Annotated[
-            bool, typer.Option("-r", "--raw", help="show raw message text, including comments")
-        ] = False,
-    ) -> int:
-        tool = _Tool(kind, ctx.obj)
-        command = ctx.info_name or "show"
-        names = list(type_names or [])
-        if len(names) > 1:
-            raise usage_error(
-                tool.tool, _usages(kind)[command], f"you may only specify one {noun} type"
-            )
-        if not names:
-            line = tool.env.stdin.readline().strip()
-            if not line:
-                raise usage_error(
-                    tool.tool, _usages(kind)[command], f"please specify a {noun} type"
-                )
-            names = [line]
-        type_name = names[0]
-        tool.check_type_arg(command, type_name)
-        full_names = tool.matches(type_name)
-        if not full_names:
-            raise CommandError(f"Could not find msg '{type_name}'")
-        for full_name in full_names:
-            try:
-                text = tool.text(full_name, raw)
-            except (UnknownTypeError, InvalidMsgSpecError) as error:
-                raise tool.load_error(full_name, error) from None
-            if "/" not in type_name:
-                tool.env.out(f"[{full_name}]:")
-            tool.env.out(text)
+
+def _md5(tool: _Tool, argv: list[str]) -> int:
+    parser = tool.parser(f"usage: {tool.tool} md5 <{tool.noun}>")
+    _, type_name = tool.type_arg(parser, argv)
+    if "/" in type_name:
+        try:
+            tool.env.out(tool.md5(type_name))
+        except (UnknownTypeError, InvalidMsgSpecError):
+            tool.env.err(f"Cannot locate [{type_name}]")
         return ExitStatus.OK
-
-    app.command("show", help=f"Show {noun} description")(show)
-    app.command("info", help=f"Alias for ros{kind} show")(show)
-
-
-def _add_md5(app: typer.Typer, kind: str) -> None:
-    noun = "message" if kind == "msg" else "service"
-
-    @app.command("md5", help=f"Display {noun} md5sum")
-    def md5(
-        ctx: typer.Context,
-        type_names: Annotated[list[str] | None, typer.Argument(metavar=f"<{noun} type>")] = None,
-    ) -> int:
-        tool = _Tool(kind, ctx.obj)
-        names = list(type_names or [])
-        if len(names) != 1:
-            raise usage_error(
-                tool.tool, _usages(kind)["md5"], f"you may only specify one {noun} type"
-            )
-        type_name = names[0]
-        tool.check_type_arg("md5", type_name)
-        if "/" in type_name:
-            try:
-                tool.env.out(tool.md5(type_name))
-            except (UnknownTypeError, InvalidMsgSpecError):
-                tool.env.err(f"Cannot locate [{type_name}]")
-            return ExitStatus.OK
-        full_names = tool.matches(type_name)
-        if not full_names:
-            tool.env.err(f"No {noun}s matching the name [{type_name}]")
-        for full_name in full_names:
-            try:
-                tool.env.out(f"[{full_name}]: {tool.md5(full_name)}")
-            except (UnknownTypeError, InvalidMsgSpecError):
-                tool.env.err(f"Cannot locate [{full_name}]")
-        return ExitStatus.OK
+    full_names = tool.matches(type_name)
+    for full_name in full_names:
+        try:
+            tool.env.out(f"[{full_name}]: {tool.md5(full_name)}")
+        except (UnknownTypeError, InvalidMsgSpecError):
+            tool.env.err(f"Cannot locate [{full_name}]")
+    if not full_names:
+        tool.env.err(f"No messages matching the name [{type_name}]")
+    return ExitStatus.OK
 
 
-def _add_listings(app: typer.Typer, kind: str) -> None:
-    noun = "message" if kind == "msg" else "service"
-
-    @app.command("list", help=f"List all {noun}s")
-    def list_(ctx: typer.Context) -> int:
-        tool = _Tool(kind, ctx.obj)
-        for name in tool.store.types(kind):
-            tool.env.out(name)
-        return ExitStatus.OK
-
-    @app.command("package", help=f"List {noun}s in a package")
-    def package(
-        ctx: typer.Context,
-        packages: Annotated[list[str] | None, typer.Argument(metavar="<package>")] = None,
-        single: Annotated[bool, typer.Option("-s", help="list all msgs on a single line")] = False,
-    ) -> int:
-        tool = _Tool(kind, ctx.obj)
-        names = list(packages or [])
-        if len(names) != 1:
-            raise usage_error(
-                tool.tool, _usages(kind)["package"], "you must specify one package name"
-            )
-        name = names[0]
-        if not tool.store.has_package(name):
-            paths = [str(p) for p in tool.store.package_path]
-            lines = [f"Invalid package: {name}"] + [
-                f"ROS path [{i}]={p}" for i, p in enumerate(paths)
-            ]
-            raise CommandError("\n".join(lines), ExitStatus.EX_USAGE)
-        found = [t for t in tool.store.types(kind) if t.partition("/")[0] == name]
-        _print_list(tool.env, found, single)
-        return ExitStatus.OK
-
-    @app.command("packages", help=f"List packages that contain {noun}s")
-    def packages_(
-        ctx: typer.Context,
-        single: Annotated[
-            bool, typer.Option("-s", help="list all packages on a single line")
-        ] = False,
-    ) -> int:
-        tool = _Tool(kind, ctx.obj)
-        _print_list(tool.env, tool.store.packages(kind), single)
-        return ExitStatus.OK
+def _package(tool: _Tool, argv: list[str]) -> int:
+    parser = tool.parser(f"usage: {tool.tool} package <package>")
+    parser.add_option(
+        "-s",
+        dest="single_line",
+        default=False,
+        action="store_true",
+        help="list all msgs on a single line",
+    )
+    options, package = tool.type_arg(parser, argv)
+    if not tool.store.has_package(package):
+        paths = [str(p) for p in tool.store.package_path]
+        lines = [f"Invalid package: {package}"] + [
+            f"ROS path [{i}]={p}" for i, p in enumerate(paths)
+        ]
+        raise CommandError("\n".join(lines), ExitStatus.EX_USAGE)
+    found = [t for t in tool.store.types(tool.kind) if t.partition("/")[0] == package]
+    tool.print_list(found, bool(getattr(options, "single_line", False)))
+    return ExitStatus.OK
 
 
-def _print_list(env: Environment, items: list[str], single: bool) -> None:
-    if single:
-        env.out(" ".join(items))
-    else:
-        for item in items:
-            env.out(item)
+def _packages(tool: _Tool, argv: list[str]) -> int:
+    parser = tool.parser(f"usage: {tool.tool} packages")
+    parser.add_option(
+        "-s",
+        dest="single_line",
+        default=False,
+        action="store_true",
+        help="list all packages on a single line",
+    )
+    options, _ = parser.parse(argv)
+    tool.print_list(tool.store.packages(tool.kind), bool(options.single_line))
+    return ExitStatus.OK
+
+
+def _list(tool: _Tool, argv: list[str]) -> int:
+    tool.parser(f"usage: {tool.tool} list").parse(argv)
+    tool.print_list(tool.store.types(tool.kind), single=False)
+    return ExitStatus.OK
 
 
 def main(argv: Sequence[str], env: Environment, kind: str) -> int:
     """Run ``rosmsg`` (``kind='msg'``) or ``rossrv`` (``kind='srv'``) on ``argv``."""
-    commands = {name for name, _ in _COMMANDS[kind]}
-    if not argv:
+    args = list(argv)
+    if not args or args[0] == "--help":
         env.out(_overview(kind))
         return ExitStatus.OK
-    if argv[0] not in commands and argv[0] not in ("-h", "--help"):
+    tool = _Tool(kind, env)
+    command, rest = args[0], args[1:]
+    handlers: dict[str, Callable[[list[str], Environment], int]] = {
+        "show": lambda a, _: _show(tool, a, "show"),
+        "info": lambda a, _: _show(tool, a, "info"),
+        "md5": lambda a, _: _md5(tool, a),
+        "package": lambda a, _: _package(tool, a),
+        "packages": lambda a, _: _packages(tool, a),
+        "list": lambda a, _: _list(tool, a),
+    }
+    if command not in handlers:
         env.out(_overview(kind))
         return ExitStatus.EX_USAGE
-    return run_app(build_app(kind), argv, env, tool="ros" + kind, usages=_usages(kind))
+    return run_command(handlers[command], rest, env)
 
 
 def rosmsg(argv: Sequence[str], env: Environment) -> int:

@@ -5,15 +5,13 @@ import re
 import socket
 import time
 from collections.abc import Sequence
-from typing import Annotated, Any
+from typing import Any
 from urllib.parse import urlparse
-
-import typer
 
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx.transport.errors import CallTimeoutError, ConnectError, FaultError, TransportError
-from rosx_commands.cli import run_app, tool_app, usage_error
+from rosx_commands.cli import ToolParser, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.master import Master
 
@@ -29,14 +27,6 @@ COMMANDS = [
     ("kill", "kill a running node"),
     ("cleanup", "purge registration information of unreachable nodes"),
 ]
-USAGES = {
-    "ping": "rosnode ping [options] <node>",
-    "list": "rosnode list",
-    "info": "rosnode info [options] node1 [node2...]",
-    "machine": "rosnode machine [machine-name]",
-    "kill": "rosnode kill [node]...",
-    "cleanup": "rosnode cleanup",
-}
 
 
 def overview() -> str:
@@ -66,18 +56,23 @@ def node_names(master: Master, namespace: str | None = None) -> list[str]:
     return sorted(nodes)
 
 
-def list_nodes(
-    ctx: typer.Context,
-    namespace: Annotated[list[str] | None, typer.Argument(metavar="[namespace]")] = None,
-    list_uri: Annotated[bool, typer.Option("-u", help="list XML-RPC URIs")] = False,
-    list_all: Annotated[bool, typer.Option("-a", "--all", help="list all information")] = False,
-) -> int:
-    env: Environment = ctx.obj
-    names = list(namespace or [])
+def list_nodes(argv: list[str], env: Environment) -> int:
+    parser = ToolParser(env, "rosnode", "usage: %prog list")
+    parser.add_option(
+        "-u", dest="list_uri", default=False, action="store_true", help="list XML-RPC URIs"
+    )
+    parser.add_option(
+        "-a",
+        "--all",
+        dest="list_all",
+        default=False,
+        action="store_true",
+        help="list all information",
+    )
+    options, names = parser.parse(argv)
+    list_uri, list_all = options.list_uri, options.list_all
     if len(names) > 1:
-        raise usage_error(
-            "rosnode", USAGES["list"], "invalid args: you may only specify one namespace"
-        )
+        parser.error("invalid args: you may only specify one namespace")
     ns = script_resolve_name("rostopic", names[0], ros_namespace(env.environ)) if names else None
     master = Master(env, CALLER_ID)
     nodes = node_names(master, ns)
@@ -167,22 +162,21 @@ def _succeed(reply: Any) -> Any:
     return value
 
 
-def info(
-    ctx: typer.Context,
-    nodes: Annotated[list[str] | None, typer.Argument(metavar="node1 [node2...]")] = None,
-    quiet: Annotated[
-        bool,
-        typer.Option(
-            "-q",
-            "--quiet",
-            help="Prints only basic information such as pubs/subs and does not contact nodes "
-            "for more information",
-        ),
-    ] = False,
-) -> int:
-    env: Environment = ctx.obj
+def info(argv: list[str], env: Environment) -> int:
+    parser = ToolParser(env, "rosnode", "usage: %prog info [options] node1 [node2...]")
+    parser.add_option(
+        "-q",
+        "--quiet",
+        dest="quiet",
+        default=False,
+        action="store_true",
+        help="Prints only basic information such as pubs/subs and does not contact nodes for more"
+        " information",
+    )
+    options, nodes = parser.parse(argv)
+    quiet = options.quiet
     if not nodes:
-        raise usage_error("rosnode", USAGES["info"], "You must specify at least one node name")
+        parser.error("You must specify at least one node name")
     master = Master(env, CALLER_ID)
     for raw in nodes:
         node = _resolve(env, raw)
@@ -247,27 +241,27 @@ def ping_node(
     return True
 
 
-def ping(
-    ctx: typer.Context,
-    nodes: Annotated[list[str] | None, typer.Argument(metavar="<node>")] = None,
-    ping_all: Annotated[bool, typer.Option("--all", "-a", help="ping all nodes")] = False,
-    count: Annotated[
-        int | None,
-        typer.Option(
-            "-c", metavar="COUNT", help="number of pings to send. Not available with --all"
-        ),
-    ] = None,
-) -> int:
-    env: Environment = ctx.obj
-    names = list(nodes or [])
+def ping(argv: list[str], env: Environment) -> int:
+    parser = ToolParser(env, "rosnode", "usage: %prog ping [options] <node>")
+    parser.add_option(
+        "--all", "-a", dest="ping_all", default=False, action="store_true", help="ping all nodes"
+    )
+    parser.add_option(
+        "-c",
+        dest="ping_count",
+        default=None,
+        metavar="COUNT",
+        type="int",
+        help="number of pings to send. Not available with --all",
+    )
+    options, names = parser.parse(argv)
+    ping_all, count = options.ping_all, options.ping_count
     master = Master(env, CALLER_ID)
     if ping_all:
         if names:
-            raise usage_error(
-                "rosnode", USAGES["ping"], f"Invalid arguments '{' '.join(names)}' used with --all"
-            )
+            parser.error(f"Invalid arguments '{' '.join(names)}' used with --all")
         if count:
-            raise usage_error("rosnode", USAGES["ping"], "-c may not be used with --all")
+            parser.error("-c may not be used with --all")
         every = node_names(master)
         env.out("Will ping the following nodes: \n" + "".join(f" * {n}\n" for n in every))
         for node in every:
@@ -275,27 +269,20 @@ def ping(
         return ExitStatus.OK
     if not names:
         listing = "\n".join(node_names(master))
-        raise usage_error(
-            "rosnode",
-            USAGES["ping"],
-            "Please enter a node to ping. Available nodes are:\n" + listing,
-        )
+        parser.error("Please enter a node to ping. Available nodes are:\n" + listing)
     if len(names) > 1:
-        raise usage_error("rosnode", USAGES["ping"], "you may only specify one input node")
+        parser.error("you may only specify one input node")
     node = _resolve(env, names[0])
     env.out(f"rosnode: node is [{node}]")
     ping_node(env, master, node, count, True)
     return ExitStatus.OK
 
 
-def machine(
-    ctx: typer.Context,
-    machines: Annotated[list[str] | None, typer.Argument(metavar="[machine-name]")] = None,
-) -> int:
-    env: Environment = ctx.obj
-    names = list(machines or [])
+def machine(argv: list[str], env: Environment) -> int:
+    parser = ToolParser(env, "rosnode", "usage: %prog machine [machine-name]")
+    _, names = parser.parse(argv)
     if len(names) > 1:
-        raise usage_error("rosnode", USAGES["machine"], "please enter only one machine name")
+        parser.error("please enter only one machine name")
     master = Master(env, CALLER_ID)
     hosts: dict[str, str] = {}
     for node in node_names(master):
@@ -321,19 +308,17 @@ def _addresses(host: str) -> set[str] | None:
         return None
 
 
-def kill(
-    ctx: typer.Context,
-    nodes: Annotated[list[str] | None, typer.Argument(metavar="[node]...")] = None,
-    kill_all: Annotated[bool, typer.Option("-a", "--all", help="kill all nodes")] = False,
-) -> int:
-    env: Environment = ctx.obj
-    names = list(nodes or [])
+def kill(argv: list[str], env: Environment) -> int:
+    parser = ToolParser(env, "rosnode", "usage: %prog kill [node]...")
+    parser.add_option(
+        "-a", "--all", dest="kill_all", default=False, action="store_true", help="kill all nodes"
+    )
+    options, names = parser.parse(argv)
+    kill_all = options.kill_all
     master = Master(env, CALLER_ID)
     if kill_all:
         if names:
-            raise usage_error(
-                "rosnode", USAGES["kill"], "invalid arguments with kill all (-a) option"
-            )
+            parser.error("invalid arguments with kill all (-a) option")
         targets = node_names(master)
     elif not names:
         listing = node_names(master)
@@ -384,8 +369,8 @@ def _read_choice(env: Environment, limit: int) -> int:
         env.out("ERROR: invalid selection. Please enter a number (ctrl-C to cancel)")
 
 
-def cleanup(ctx: typer.Context) -> int:
-    env: Environment = ctx.obj
+def cleanup(argv: list[str], env: Environment) -> int:
+    ToolParser(env, "rosnode", "usage: %prog cleanup").parse(argv)
     master = Master(env, CALLER_ID)
     dead = []
     for node in node_names(master):
@@ -433,17 +418,16 @@ def cleanup(ctx: typer.Context) -> int:
 
 def rosnode(argv: Sequence[str], env: Environment) -> int:
     """Run ``rosnode ARGV…``."""
-    known = {name for name, _ in COMMANDS}
-    if not argv or argv[0] not in known:
+    args = list(argv)
+    handlers = {
+        "ping": ping,
+        "list": list_nodes,
+        "info": info,
+        "machine": machine,
+        "kill": kill,
+        "cleanup": cleanup,
+    }
+    if not args or args[0] not in handlers:
         env.out(overview())
-        return ExitStatus.OK if argv and argv[0] == "--help" else ExitStatus.EX_USAGE
-    app = tool_app("Prints information about ROS nodes.")
-    app.command("ping", help="test connectivity to node")(ping)
-    app.command("list", help="list active nodes")(list_nodes)
-    app.command("info", help="print information about node")(info)
-    app.command("machine", help="list nodes running on a particular machine or list machines")(
-        machine
-    )
-    app.command("kill", help="kill a running node")(kill)
-    app.command("cleanup", help="purge registration information of unreachable nodes")(cleanup)
-    return run_app(app, argv, env, tool="rosnode", usages=USAGES)
+        return ExitStatus.OK if args and args[0] == "--help" else ExitStatus.EX_USAGE
+    return run_command(handlers[args[0]], args[1:], env)

@@ -39,3 +39,12 @@ def test_rosmsg_of_a_user_type_loads_no_tui_and_no_numpy() -> None:
         "run_tool(['rosmsg', 'show', 'turtlesim/Pose'], Environment(stdout=io.StringIO(), environ={}))"
     )
     assert not {m for m in loaded if m.split(".")[0] in HEAVY}
+
+
+def test_ros_tools_do_not_pay_for_typer() -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        "run_tool(['rostopic', 'list'], Environment(stdout=io.StringIO(), stderr=io.StringIO(),"
+        " environ={'ROS_MASTER_URI': 'http://localhost:9'}))"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in ("typer", "pydantic", "rich", *HEAVY)}

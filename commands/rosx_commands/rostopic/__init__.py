@@ -1,9 +1,9 @@
 """``rosx rostopic``: list, info, type, find (and the streaming commands), as ROS 1's rostopic."""
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from rosx.names.remap_args import strip_remap_args
-from rosx_commands.cli import run_app, tool_app
+from rosx_commands.cli import run_command
 from rosx_commands.context import Environment, ExitStatus
 from rosx_commands.rostopic import listing
 
@@ -18,17 +18,6 @@ COMMANDS = [
     ("pub", "publish data to topic"),
     ("type", "print topic or field type"),
 ]
-USAGES = {
-    "list": "rostopic list [/namespace]",
-    "info": "rostopic info /topic",
-    "type": "rostopic type [-h] topic_or_field",
-    "find": "rostopic find msg-type",
-    "echo": "rostopic echo [options] /topic",
-    "pub": "rostopic pub /topic type [args...]",
-    "hz": "rostopic hz [options] /topic_0 [/topic_1 [topic_2 [..]]]",
-    "bw": "rostopic bw [options] /topic",
-    "delay": "rostopic delay [options] /topic",
-}
 
 
 def overview() -> str:
@@ -44,12 +33,14 @@ def overview() -> str:
 
 def rostopic(argv: Sequence[str], env: Environment) -> int:
     """Run ``rostopic ARGV…``."""
-
-    argv = strip_remap_args(list(argv))
-    known = {name for name, _ in COMMANDS}
-    if not argv or (argv[0] not in known and argv[0] not in ("-h", "--help")):
+    args = strip_remap_args(list(argv))
+    handlers: dict[str, Callable[[list[str], Environment], int]] = {
+        "list": listing.list_topics,
+        "info": listing.info,
+        "type": listing.topic_type,
+        "find": listing.find,
+    }
+    if not args or args[0] not in handlers:
         env.out(overview())
         return ExitStatus.EX_USAGE
-    app = tool_app("Prints information about ROS topics.")
-    listing.register(app)
-    return run_app(app, argv, env, tool="rostopic", usages=USAGES)
+    return run_command(handlers[args[0]], args[1:], env)

@@ -1,14 +1,12 @@
 """``rostopic list``, ``info``, ``type`` and ``find``: what the master knows about topics."""
 
-from typing import Annotated, Any
+from typing import Any
 from urllib.parse import urlparse
-
-import typer
 
 from rosx.msg.store import TypeStore, UnknownTypeError
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
-from rosx_commands.cli import usage_error
+from rosx_commands.cli import ToolArgumentParser, ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.master import Master
 
@@ -33,31 +31,33 @@ def topic_rows(master: Master) -> tuple[TopicRows, TopicRows]:
     return rows(publishers), rows(subscribers)
 
 
-def register(app: typer.Typer) -> None:
-    app.command("list", help="list active topics")(list_topics)
-    app.command("info", help="print information about active topic")(info)
-    app.command("type", help="print topic or field type")(topic_type)
-    app.command("find", help="find topics by type")(find)
-
-
-def list_topics(
-    ctx: typer.Context,
-    namespace: Annotated[list[str] | None, typer.Argument(metavar="[/namespace]")] = None,
-    verbose: Annotated[
-        bool, typer.Option("-v", "--verbose", help="list full details about each topic")
-    ] = False,
-    publishers_only: Annotated[bool, typer.Option("-p", help="list only publishers")] = False,
-    subscribers_only: Annotated[bool, typer.Option("-s", help="list only subscribers")] = False,
-    host: Annotated[bool, typer.Option("--host", help="group by host name")] = False,
-    bag: Annotated[
-        str | None, typer.Option("-b", "--bag", metavar="BAGFILE", help="list topics in .bag file")
-    ] = None,
-) -> int:
-    env: Environment = ctx.obj
-    names = list(namespace or [])
-    usage = "rostopic list [/namespace]"
+def list_topics(argv: list[str], env: Environment) -> int:
+    parser = ToolParser(env, "rostopic", "usage: %prog list [/namespace]")
+    parser.add_option(
+        "-b", "--bag", dest="bag", default=None, help="list topics in .bag file", metavar="BAGFILE"
+    )
+    parser.add_option(
+        "-v",
+        "--verbose",
+        dest="verbose",
+        default=False,
+        action="store_true",
+        help="list full details about each topic",
+    )
+    parser.add_option(
+        "-p", dest="publishers", default=False, action="store_true", help="list only publishers"
+    )
+    parser.add_option(
+        "-s", dest="subscribers", default=False, action="store_true", help="list only subscribers"
+    )
+    parser.add_option(
+        "--host", dest="hostname", default=False, action="store_true", help="group by host name"
+    )
+    options, names = parser.parse(argv)
     if len(names) > 1:
-        raise usage_error("rostopic", usage, "you may only specify one input topic")
+        parser.error("you may only specify one input topic")
+    bag, verbose, host = options.bag, options.verbose, options.hostname
+    publishers_only, subscribers_only = options.publishers, options.subscribers
     if bag is not None:
         raise CommandError("ERROR: rosx does not read .bag files")
     if publishers_only and subscribers_only:
@@ -143,16 +143,13 @@ def _print_by_host(
             _print_list(env, hp, hs, publishers_only, subscribers_only, verbose, "  ")
 
 
-def info(
-    ctx: typer.Context,
-    topics: Annotated[list[str] | None, typer.Argument(metavar="/topic")] = None,
-) -> int:
-    env: Environment = ctx.obj
-    names = list(topics or [])
+def info(argv: list[str], env: Environment) -> int:
+    parser = ToolParser(env, "rostopic", "usage: %prog info /topic")
+    _, names = parser.parse(argv)
     if not names:
-        raise usage_error("rostopic", "rostopic info /topic", "you must specify a topic name")
+        parser.error("you must specify a topic name")
     if len(names) > 1:
-        raise usage_error("rostopic", "rostopic info /topic", "you may only specify one topic name")
+        parser.error("you may only specify one topic name")
     topic = resolve(env, names[0])
     master = Master(env, CALLER_ID)
     pubs, subs = topic_rows(master)
@@ -174,12 +171,10 @@ def info(
     return ExitStatus.OK
 
 
-def topic_type(
-    ctx: typer.Context,
-    topic_or_field: Annotated[str, typer.Argument(help="Topic or field name")],
-) -> int:
-    env: Environment = ctx.obj
-    name = resolve(env, topic_or_field)
+def topic_type(argv: list[str], env: Environment) -> int:
+    parser = ToolArgumentParser(env, prog="rostopic type")
+    parser.add_argument("topic_or_field", help="Topic or field name")
+    name = resolve(env, parser.parse_args(argv).topic_or_field)
     types = Master(env, CALLER_ID).topic_types()
     found = find_topic(name, types)
     if found is None:
@@ -223,18 +218,13 @@ def find_topic(name: str, types: dict[str, str]) -> tuple[str, str] | None:
     return None
 
 
-def find(
-    ctx: typer.Context,
-    msg_types: Annotated[list[str] | None, typer.Argument(metavar="msg-type")] = None,
-) -> int:
-    env: Environment = ctx.obj
-    names = list(msg_types or [])
+def find(argv: list[str], env: Environment) -> int:
+    parser = ToolParser(env, "rostopic", "usage: %prog find msg-type")
+    _, names = parser.parse(argv)
     if not names:
-        raise usage_error("rostopic", "rostopic find msg-type", "please specify a message type")
+        parser.error("please specify a message type")
     if len(names) > 1:
-        raise usage_error(
-            "rostopic", "rostopic find msg-type", "you may only specify one message type"
-        )
+        parser.error("you may only specify one message type")
     types = Master(env, CALLER_ID).topic_types()
     env.out("\n".join(t for t, type_name in types.items() if type_name == names[0]))
     return ExitStatus.OK
