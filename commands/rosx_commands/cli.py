@@ -9,10 +9,8 @@ and rosx's own commands use typer (`rosx_commands.main`).
 
 from __future__ import annotations
 
-import argparse
 import optparse
-import sys
-from typing import Any, NoReturn
+from typing import NoReturn
 
 from rosx_commands.context import CommandError, Environment, ExitStatus
 
@@ -44,28 +42,6 @@ class ToolParser(optparse.OptionParser):
         )
 
     def parse(self, argv: list[str]) -> tuple[optparse.Values, list[str]]:
-        return self.parse_args(argv)
-
-
-class ToolArgumentParser(argparse.ArgumentParser):
-    """The argparse counterpart of `ToolParser`, for the sub-commands ROS 1 parses with argparse."""
-
-    def __init__(self, env: Environment, prog: str) -> None:
-        super().__init__(prog=prog)
-        self.env = env
-
-    def _print_message(self, message: str, file: object = None) -> None:
-        if message:
-            (self.env.stderr if file is sys.stderr else self.env.stdout).write(message)
-
-    def exit(self, status: int = 0, message: str | None = None) -> NoReturn:
-        if message:
-            self.env.stderr.write(message)
-        if status == 0:
-            raise HelpShown
-        raise CommandError("", status)
-
-    def parse(self, argv: list[str]) -> Any:
         return self.parse_args(argv)
 
 

@@ -5,7 +5,6 @@ from __future__ import annotations
 import os
 import sys
 from collections.abc import Mapping
-from dataclasses import dataclass, field
 from enum import IntEnum
 from typing import TextIO
 
@@ -20,14 +19,21 @@ class ExitStatus(IntEnum):
     EX_USAGE = 64  # rostopic/rosnode/rosservice/rosmsg: unknown or missing sub-command
 
 
-@dataclass
 class Environment:
-    """Streams and environment variables of one command run."""
+    """Streams and environment variables of one command run (the process's by default)."""
 
-    stdout: TextIO = field(default_factory=lambda: sys.stdout)
-    stderr: TextIO = field(default_factory=lambda: sys.stderr)
-    stdin: TextIO = field(default_factory=lambda: sys.stdin)
-    environ: Mapping[str, str] = field(default_factory=lambda: dict(os.environ))
+    # A plain class: importing dataclasses would cost every command ~15 ms of start-up.
+    def __init__(
+        self,
+        stdout: TextIO | None = None,
+        stderr: TextIO | None = None,
+        stdin: TextIO | None = None,
+        environ: Mapping[str, str] | None = None,
+    ) -> None:
+        self.stdout = sys.stdout if stdout is None else stdout
+        self.stderr = sys.stderr if stderr is None else stderr
+        self.stdin = sys.stdin if stdin is None else stdin
+        self.environ = dict(os.environ) if environ is None else environ
 
     @property
     def stdout_isatty(self) -> bool:

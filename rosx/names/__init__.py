@@ -13,36 +13,79 @@ This layer uses the standard library only and nothing else of rosx.
 
 from __future__ import annotations
 
-from rosx.names.anonymous import anonymous_name, anonymous_node_name
-from rosx.names.remap_args import (
-    REMAP,
-    RemapArgs,
-    is_legal_remap,
-    parse_remap_args,
-    strip_remap_args,
-)
-from rosx.names.resolution import (
-    GLOBAL_NS,
-    PRIVATE_PREFIX,
-    SEP,
-    basename,
-    canonicalize,
-    make_global_ns,
-    namespace_of,
-    ns_join,
-    resolve,
-    resolve_remappings,
-)
-from rosx.names.script import ROS_NAMESPACE, ros_namespace, script_resolve_name
-from rosx.names.validation import (
-    InvalidNameError,
-    check_name,
-    is_global,
-    is_legal_base_name,
-    is_legal_name,
-    is_private,
-    validate,
-)
+import importlib
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from rosx.names.anonymous import anonymous_name, anonymous_node_name
+    from rosx.names.remap_args import (
+        REMAP,
+        RemapArgs,
+        is_legal_remap,
+        parse_remap_args,
+        strip_remap_args,
+    )
+    from rosx.names.resolution import (
+        GLOBAL_NS,
+        PRIVATE_PREFIX,
+        SEP,
+        basename,
+        canonicalize,
+        make_global_ns,
+        namespace_of,
+        ns_join,
+        resolve,
+        resolve_remappings,
+    )
+    from rosx.names.script import ROS_NAMESPACE, ros_namespace, script_resolve_name
+    from rosx.names.validation import (
+        InvalidNameError,
+        check_name,
+        is_global,
+        is_legal_base_name,
+        is_legal_name,
+        is_private,
+        validate,
+    )
+
+_HOMES = {
+    "GLOBAL_NS": "rosx.names.resolution",
+    "InvalidNameError": "rosx.names.validation",
+    "PRIVATE_PREFIX": "rosx.names.resolution",
+    "REMAP": "rosx.names.remap_args",
+    "ROS_NAMESPACE": "rosx.names.script",
+    "RemapArgs": "rosx.names.remap_args",
+    "SEP": "rosx.names.resolution",
+    "anonymous_name": "rosx.names.anonymous",
+    "anonymous_node_name": "rosx.names.anonymous",
+    "basename": "rosx.names.resolution",
+    "canonicalize": "rosx.names.resolution",
+    "check_name": "rosx.names.validation",
+    "is_global": "rosx.names.validation",
+    "is_legal_base_name": "rosx.names.validation",
+    "is_legal_name": "rosx.names.validation",
+    "is_legal_remap": "rosx.names.remap_args",
+    "is_private": "rosx.names.validation",
+    "make_global_ns": "rosx.names.resolution",
+    "namespace_of": "rosx.names.resolution",
+    "ns_join": "rosx.names.resolution",
+    "parse_remap_args": "rosx.names.remap_args",
+    "resolve": "rosx.names.resolution",
+    "resolve_remappings": "rosx.names.resolution",
+    "ros_namespace": "rosx.names.script",
+    "script_resolve_name": "rosx.names.script",
+    "strip_remap_args": "rosx.names.remap_args",
+    "validate": "rosx.names.validation",
+}
+
+
+def __getattr__(name: str) -> object:
+    # Loaded on first use, so a tool needing one helper does not import the whole layer.
+    home = _HOMES.get(name)
+    if home is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return getattr(importlib.import_module(home), name)
+
 
 __all__ = [
     "GLOBAL_NS",

@@ -3,10 +3,9 @@
 from typing import Any
 from urllib.parse import urlparse
 
-from rosx.msg.store import TypeStore, UnknownTypeError
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
-from rosx_commands.cli import ToolArgumentParser, ToolParser
+from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.master import Master
 
@@ -172,6 +171,8 @@ def info(argv: list[str], env: Environment) -> int:
 
 
 def topic_type(argv: list[str], env: Environment) -> int:
+    from rosx_commands.argparser import ToolArgumentParser  # noqa: PLC0415 - only type uses it
+
     parser = ToolArgumentParser(env, prog="rostopic type")
     parser.add_argument("topic_or_field", help="Topic or field name")
     name = resolve(env, parser.parse_args(argv).topic_or_field)
@@ -185,6 +186,7 @@ def topic_type(argv: list[str], env: Environment) -> int:
         return ExitStatus.OK
     field = name[len(topic) + 1 :]
     field_type = type_name
+    from rosx.msg.store import TypeStore  # noqa: PLC0415 - only field paths need types
 
     store = TypeStore.from_environ(env.environ)
     for part in field.split("/"):
@@ -201,6 +203,7 @@ def find_topic(name: str, types: dict[str, str]) -> tuple[str, str] | None:
     """
     if name in types:
         return name, types[name]
+    from rosx.msg.store import TypeStore, UnknownTypeError  # noqa: PLC0415 - field paths only
 
     store = TypeStore([])
     for topic in sorted((t for t in types if name.startswith(t + "/")), reverse=True):

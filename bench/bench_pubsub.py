@@ -1,0 +1,234 @@
+"""Publish/subscribe speed of rosx against rospy, side by side, in one run.
+
+Each case runs a publisher process and a subscriber process on the same master (ROS 1's
+``rosmaster --core`` when installed, else rosx's), first with rospy under ROS 1's Python, then
+with rosx under this Python, and prints:
+
+* small messages (``geometry_msgs/Twist``, 48 bytes) sent as fast as the publisher can: msgs/s
+  delivered and messages lost, with rospy's asynchronous publisher (``queue_size=100``) and with
+  its synchronous one (``queue_size=None``) against rosx's equivalents;
+* latency from ``publish`` to the callback at 1 kHz: p50 and p99;
+* 1 MiB messages (``sensor_msgs/Image``): bytes/s delivered;
+
+and the ratios rosx/rospy. Run: ``python bench/bench_pubsub.py [--quick]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+ROS1_PYTHON = os.environ.get("ROS1_PYTHON", "/usr/bin/python3")
+
+# The worker scripts are the same for both libraries: `api` makes a node, a publisher, a
+# subscriber and the message classes, with rospy or with rosx.node.
+API_ROSPY = """
+import rospy
+def make_node(name):
+    rospy.init_node(name, disable_signals=True)
+def publisher(topic, cls, queue_size):
+    return rospy.Publisher(topic, cls, queue_size=queue_size)
+def subscriber(topic, cls, cb, queue_size):
+    return rospy.Subscriber(topic, cls, cb, queue_size=queue_size)
+def msg_class(name):
+    pkg, _, short = name.partition('/')
+    module = __import__(pkg + '.msg', fromlist=[short])
+    return getattr(module, short)
+"""
+
+API_ROSX = """
+import os
+from rosx.node import Node
+from rosx.msg.classes import get_message_class as msg_class
+_node = []
+def make_node(name):
+    _node.append(Node(name, master_uri=os.environ['ROS_MASTER_URI']).start())
+def publisher(topic, cls, queue_size):
+    return _node[0].advertise(topic, cls, queue_size=queue_size)
+def subscriber(topic, cls, cb, queue_size):
+    return _node[0].subscribe(topic, cls, cb, queue_size=queue_size)
+"""
+
+PUBLISHER = """
+import sys, time, json
+count, queue_size, period, kind = int(sys.argv[1]), json.loads(sys.argv[2]), float(sys.argv[3]), sys.argv[4]
+make_node('bench_pub')
+cls = msg_class('sensor_msgs/Image' if kind == 'image' else 'geometry_msgs/Twist')
+pub = publisher('/bench', cls, queue_size)
+while pub.get_num_connections() == 0:
+    time.sleep(0.01)
+time.sleep(0.5)
+msg = cls()
+if kind == 'image':
+    msg.height, msg.width, msg.encoding, msg.step = 512, 512, 'rgba8', 2048
+    msg.data = bytes(1 << 20)
+clock = time.time
+start = clock()
+for i in range(count):
+    if kind == 'image':
+        msg.header.frame_id = str(i)
+    else:
+        msg.linear.x = clock()
+        msg.linear.y = i
+    pub.publish(msg)
+    if period:
+        time.sleep(period)
+print(json.dumps({'pub_rate': count / (clock() - start)}), flush=True)
+time.sleep(1.0)
+"""
+
+SUBSCRIBER = """
+import sys, time, json, threading
+count, queue_size, kind = int(sys.argv[1]), json.loads(sys.argv[2]), sys.argv[3]
+make_node('bench_sub')
+cls = msg_class('sensor_msgs/Image' if kind == 'image' else 'geometry_msgs/Twist')
+state = {'n': 0, 'first': 0.0, 'last': 0.0, 'bytes': 0}
+lat = []
+done = threading.Event()
+clock = time.time
+def cb(msg):
+    now = clock()
+    if state['n'] == 0:
+        state['first'] = now
+    state['n'] += 1
+    state['last'] = now
+    if kind == 'image':
+        state['bytes'] += len(msg.data)
+        last = int(msg.header.frame_id) == count - 1
+    else:
+        lat.append(now - msg.linear.x)
+        last = msg.linear.y == count - 1
+    if last:
+        done.set()
+sub = subscriber('/bench', cls, cb, queue_size)
+print('ready', flush=True)
+deadline = time.monotonic() + 120
+while not done.is_set() and time.monotonic() < deadline:
+    before = state['n']
+    done.wait(3.0)
+    if state['n'] == before and before:
+        break
+span = max(state['last'] - state['first'], 1e-9)
+lat.sort()
+result = {'received': state['n'], 'rate': state['n'] / span, 'bytes_rate': state['bytes'] / span}
+if lat:
+    result['p50'] = lat[len(lat) // 2] * 1e6
+    result['p99'] = lat[min(len(lat) - 1, int(len(lat) * 0.99))] * 1e6
+print(json.dumps(result), flush=True)
+"""
+
+
+def free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return int(sock.getsockname()[1])
+
+
+def start_master() -> tuple[subprocess.Popen[bytes], str]:
+    port = free_port()
+    uri = f"http://127.0.0.1:{port}/"
+    if shutil.which("rosmaster", path="/usr/bin"):
+        cmd = ["/usr/bin/rosmaster", "--core", "-p", str(port)]
+    else:
+        cmd = [sys.executable, "-m", "rosx_commands.main", "roscore", "-p", str(port)]
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 15
+    while time.monotonic() < deadline:
+        try:
+            with socket.create_connection(("127.0.0.1", port), timeout=0.2):
+                return proc, uri
+        except OSError:
+            time.sleep(0.1)
+    proc.kill()
+    raise SystemExit("the master did not start")
+
+
+def run_case(
+    lib: str, master: str, kind: str, count: int, pub_queue: int | None,
+    sub_queue: int | None, period: float,
+) -> dict[str, float]:
+    python = ROS1_PYTHON if lib == "rospy" else sys.executable
+    api = API_ROSPY if lib == "rospy" else API_ROSX
+    env = dict(os.environ, ROS_MASTER_URI=master, PYTHONPATH=str(ROOT))
+    if lib == "rospy":
+        env["ROS_PACKAGE_PATH"] = "/usr/share"
+    sub = subprocess.Popen(
+        [python, "-c", api + SUBSCRIBER, str(count), json.dumps(sub_queue), kind],
+        stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, env=env, cwd=ROOT, text=True,
+    )
+    assert sub.stdout is not None
+    sub.stdout.readline()  # "ready"
+    pub = subprocess.Popen(
+        [python, "-c", api + PUBLISHER, str(count), json.dumps(pub_queue), str(period), kind],
+        stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, env=env, cwd=ROOT, text=True,
+    )
+    try:
+        out, _ = sub.communicate(timeout=180)
+        pub_out, _ = pub.communicate(timeout=30)
+    finally:
+        for proc in (sub, pub):
+            if proc.poll() is None:
+                proc.kill()
+                proc.wait()
+    result: dict[str, float] = json.loads(out.strip().splitlines()[-1])
+    if pub_out.strip():
+        result.update(json.loads(pub_out.strip().splitlines()[-1]))
+    result["lost"] = count - result["received"]
+    return result
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="fewer messages")
+    args = parser.parse_args()
+    scale = 0.2 if args.quick else 1.0
+    small, latency, images = int(200_000 * scale), int(2000 * scale), int(1000 * scale)
+    proc, master = start_master()
+    rows: list[tuple[str, dict[str, float], dict[str, float], str]] = []
+    try:
+        cases = [
+            ("Twist flood, async publisher (rospy queue_size=100 / rosx 100)",
+             "twist", small, 100, None, 0.0, "rate"),
+            ("Twist flood, sync publisher (queue_size=None both)",
+             "twist", small, None, None, 0.0, "rate"),
+            ("Twist at 1 kHz, latency (queue_size=100)",
+             "twist", latency, 100, None, 0.001, "p50"),
+            ("1 MiB Image flood (queue_size=None)", "image", images // 5, None, None, 0.0,
+             "bytes_rate"),
+        ]
+        for title, kind, count, pq, sq, period, key in cases:
+            ros = run_case("rospy", master, kind, count, pq, sq, period)
+            rx = run_case("rosx", master, kind, count, pq, sq, period)
+            rows.append((title, ros, rx, key))
+    finally:
+        proc.terminate()
+        proc.wait()
+    for title, ros, rx, key in rows:
+        print(title)
+        for lib, res in (("rospy", ros), ("rosx ", rx)):
+            parts = [f"received {int(res['received'])}", f"lost {int(res['lost'])}"]
+            if key == "bytes_rate":
+                parts.append(f"{res['bytes_rate'] / 2**30:.2f} GiB/s")
+            else:
+                parts.append(f"{res['rate']:,.0f} msgs/s")
+            if "p50" in res:
+                parts.append(f"latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us")
+            print(f"  {lib}: " + ", ".join(parts))
+        base, mine = ros[key], rx[key]
+        if key == "p50":
+            print(f"  ratio rosx/rospy latency p50: {mine / base:.2f} (target <= 0.5)")
+        else:
+            print(f"  ratio rosx/rospy: {mine / base:.1f}x")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,35 @@
+"""argparse with the streams and exits of `rosx_commands.cli`, for what ROS 1 parses with argparse.
+
+A module of its own so the tools that do not need argparse do not import it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Any, NoReturn
+
+from rosx_commands.cli import HelpShown
+from rosx_commands.context import CommandError, Environment
+
+
+class ToolArgumentParser(argparse.ArgumentParser):
+    """The argparse counterpart of `ToolParser`, for the sub-commands ROS 1 parses with argparse."""
+
+    def __init__(self, env: Environment, prog: str) -> None:
+        super().__init__(prog=prog)
+        self.env = env
+
+    def _print_message(self, message: str, file: object = None) -> None:
+        if message:
+            (self.env.stderr if file is sys.stderr else self.env.stdout).write(message)
+
+    def exit(self, status: int = 0, message: str | None = None) -> NoReturn:
+        if message:
+            self.env.stderr.write(message)
+        if status == 0:
+            raise HelpShown
+        raise CommandError("", status)
+
+    def parse(self, argv: list[str]) -> Any:
+        return self.parse_args(argv)
