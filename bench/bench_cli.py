@@ -19,8 +19,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
-from tests.support.procs import free_port, port_open, running, wait_for  # noqa: E402
-from tests.support.ros1 import ROS1_PYTHON, ros1_available, ros1_environ  # noqa: E402
+from tests.support.procs import free_port, port_open, running, wait_for
+from tests.support.ros1 import ROS1_PYTHON, ros1_available, ros1_environ
 
 NODE = """
 import rospy

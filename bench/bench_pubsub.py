@@ -22,7 +22,6 @@ import shutil
 import socket
 import subprocess
 import sys
-import textwrap
 import time
 from pathlib import Path
 
@@ -60,7 +59,8 @@ def subscriber(topic, cls, cb, queue_size):
 
 PUBLISHER = """
 import sys, time, json
-count, queue_size, period, kind = int(sys.argv[1]), json.loads(sys.argv[2]), float(sys.argv[3]), sys.argv[4]
+count, queue_size = int(sys.argv[1]), json.loads(sys.argv[2])
+period, kind = float(sys.argv[3]), sys.argv[4]
 make_node('bench_pub')
 cls = msg_class('sensor_msgs/Image' if kind == 'image' else 'geometry_msgs/Twist')
 pub = publisher('/bench', cls, queue_size)
@@ -153,8 +153,13 @@ def start_master() -> tuple[subprocess.Popen[bytes], str]:
 
 
 def run_case(
-    lib: str, master: str, kind: str, count: int, pub_queue: int | None,
-    sub_queue: int | None, period: float,
+    lib: str,
+    master: str,
+    kind: str,
+    count: int,
+    pub_queue: int | None,
+    sub_queue: int | None,
+    period: float,
 ) -> dict[str, float]:
     python = ROS1_PYTHON if lib == "rospy" else sys.executable
     api = API_ROSPY if lib == "rospy" else API_ROSX
@@ -163,13 +168,21 @@ def run_case(
         env["ROS_PACKAGE_PATH"] = "/usr/share"
     sub = subprocess.Popen(
         [python, "-c", api + SUBSCRIBER, str(count), json.dumps(sub_queue), kind],
-        stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, env=env, cwd=ROOT, text=True,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.DEVNULL,
+        env=env,
+        cwd=ROOT,
+        text=True,
     )
     assert sub.stdout is not None
     sub.stdout.readline()  # "ready"
     pub = subprocess.Popen(
         [python, "-c", api + PUBLISHER, str(count), json.dumps(pub_queue), str(period), kind],
-        stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, env=env, cwd=ROOT, text=True,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.DEVNULL,
+        env=env,
+        cwd=ROOT,
+        text=True,
     )
     try:
         out, _ = sub.communicate(timeout=180)
@@ -196,14 +209,34 @@ def main() -> None:
     rows: list[tuple[str, dict[str, float], dict[str, float], str]] = []
     try:
         cases = [
-            ("Twist flood, async publisher (rospy queue_size=100 / rosx 100)",
-             "twist", small, 100, None, 0.0, "rate"),
-            ("Twist flood, sync publisher (queue_size=None both)",
-             "twist", small, None, None, 0.0, "rate"),
-            ("Twist at 1 kHz, latency (queue_size=100)",
-             "twist", latency, 100, None, 0.001, "p50"),
-            ("1 MiB Image flood (queue_size=None)", "image", images // 5, None, None, 0.0,
-             "bytes_rate"),
+            (
+                "Twist flood, async publisher (rospy queue_size=100 / rosx 100)",
+                "twist",
+                small,
+                100,
+                None,
+                0.0,
+                "rate",
+            ),
+            (
+                "Twist flood, sync publisher (queue_size=None both)",
+                "twist",
+                small,
+                None,
+                None,
+                0.0,
+                "rate",
+            ),
+            ("Twist at 1 kHz, latency (queue_size=100)", "twist", latency, 100, None, 0.001, "p50"),
+            (
+                "1 MiB Image flood (queue_size=None)",
+                "image",
+                images // 5,
+                None,
+                None,
+                0.0,
+                "bytes_rate",
+            ),
         ]
         for title, kind, count, pq, sq, period, key in cases:
             ros = run_case("rospy", master, kind, count, pq, sq, period)

@@ -1,0 +1,260 @@
+"""The subscriber end of one TCPROS topic connection (ROS wiki ROS/TCPROS, ROS/Slave_API).
+
+`IncomingStream.start` runs the handshake on the I/O loop: ask the publisher's Slave API for a
+channel (``requestTopic``), connect to the host and port it names, send the subscriber's header
+and check the publisher's. Then ``on_connected`` hands the stream to its subscription's
+`Receiver` thread, which calls `IncomingStream.read` whenever the socket is readable: large
+reads parsed by a `FrameReader`. ``on_close`` is called once, on the loop, when the stream ends.
+
+Retries follow rospy: a publisher whose XML-RPC server refuses the connection, or that refuses
+the topic, is given up at once; other failures to reach it (timeouts, unreachable hosts, a
+broken header exchange) are retried after 0.5 s, doubling up to 30 s, for as long as the
+publisher still lists the topic in ``getPublications``. A header refused by the publisher
+(``error=``) ends the stream, as does the publisher closing it: rospy does not reconnect to a
+publisher that hung up, and a publisher that comes back is announced by ``publisherUpdate``.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import itertools
+import socket
+from typing import TYPE_CHECKING, Any, Protocol
+
+from rosx.node.errors import MasterError
+from rosx.transport.errors import ConnectError, TransportError
+from rosx.wire.errors import ProtocolError
+from rosx.wire.framing import DEFAULT_MAX_FRAME_SIZE, DEFAULT_MAX_HEADER_SIZE, FrameReader
+from rosx.wire.header import Refused, decode_header, encode_header
+from rosx.wire.tcpros import check_publisher_reply
+
+if TYPE_CHECKING:
+    from collections.abc import Awaitable, Callable
+
+    from rosx.node.loop import IoLoop
+
+    class Detacher(Protocol):
+        """The receiver thread that owns a connected stream's socket."""
+
+        def detach(self, stream: IncomingStream) -> None: ...
+
+
+#: Connection ids, unique in the process (rospy numbers its transports the same way).
+connection_ids = itertools.count(1)
+
+_CONNECT_TIMEOUT = 30.0
+_RECV_SIZE = 256 * 1024
+# Bytes read from one socket before the callbacks run: enough to drain a backlog.
+_READ_BOUND = 8 * 1024 * 1024
+_DONTWAIT = getattr(socket, "MSG_DONTWAIT", 0)
+
+
+class GiveUp(Exception):  # noqa: N818 - a signal between helpers, not an error for users
+    """The publisher cannot be reached and should not be retried."""
+
+
+class IncomingStream:
+    """One subscription's connection to one publisher (see the module's contract)."""
+
+    def __init__(
+        self,
+        *,
+        io: IoLoop,
+        topic: str,
+        publisher_uri: str,
+        request_header: dict[str, str],
+        md5sum: str,
+        caller_id: str,
+        xmlrpc: Callable[..., Awaitable[Any]],  # (uri, method, *params) -> reply value
+        on_connected: Callable[[IncomingStream], None],
+        on_close: Callable[[IncomingStream], None],
+        on_error: Callable[[str], None] | None = None,
+    ) -> None:
+        self.id = next(connection_ids)
+        self._io = io
+        self.topic = topic
+        self.publisher_uri = publisher_uri
+        self._request = encode_header(request_header)
+        self._md5sum = md5sum
+        self._caller_id = caller_id
+        self._xmlrpc = xmlrpc
+        self._on_connected = on_connected
+        self._on_close = on_close
+        self._on_error = on_error
+        self.header: dict[str, str] = {}
+        self.latching = False
+        self.latched: bytes | None = None
+        self.sock: socket.socket | None = None
+        self.local: tuple[str, int] = ("", 0)
+        self.remote: tuple[str, int] = ("", 0)
+        self.fileno = -1
+        self.connected = False
+        self.closed = False
+        self.bytes_received = 0
+        self.frames_received = 0
+        self._reader = FrameReader(DEFAULT_MAX_HEADER_SIZE)
+        self._scratch = bytearray(_RECV_SIZE)
+        self._task: asyncio.Task[None] | None = None
+        #: The receiver thread reading this stream once connected (see `Receiver`).
+        self.receiver: Detacher | None = None
+
+    # -- lifecycle (on the loop) -------------------------------------------------------------
+
+    def start(self) -> None:
+        """Begin connecting (on the loop)."""
+        self._task = self._io.loop.create_task(self._run())
+
+    def close(self) -> None:
+        """End the stream (on the loop); idempotent."""
+        if self.closed:
+            return
+        self.closed = True
+        self.connected = False
+        if self._task is not None and not self._task.done():
+            self._task.cancel()
+        if self.receiver is not None:
+            self.receiver.detach(self)  # the receiver's thread closes the socket
+        elif self.sock is not None:
+            self.sock.close()
+        self._on_close(self)
+
+    async def _run(self) -> None:
+        interval = 0.5
+        try:
+            while not self.closed:
+                try:
+                    await self._connect()
+                    return
+                except GiveUp as exc:
+                    self._report(str(exc))
+                    break
+                except (OSError, ProtocolError, TimeoutError, TransportError) as exc:
+                    self._drop_socket()
+                    self._report(f"unable to connect to [{self.publisher_uri}]: {exc}")
+                await asyncio.sleep(interval)
+                interval = min(interval * 2, 30.0)
+                if not await self._still_publisher():
+                    break
+        except asyncio.CancelledError:
+            return
+        if not self.connected:
+            self.close()
+
+    def _report(self, text: str) -> None:
+        if self._on_error is not None and not self.closed:
+            self._on_error(f"[{self.topic}] {text}")
+
+    def _drop_socket(self) -> None:
+        if self.sock is not None:
+            self.sock.close()
+            self.sock = None
+
+    async def _still_publisher(self) -> bool:
+        try:
+            topics = await self._xmlrpc(self.publisher_uri, "getPublications", self._caller_id)
+        except Exception:  # any failure means: no longer reachable as one
+            return False
+        return any(isinstance(t, list) and t and t[0] == self.topic for t in topics)
+
+    async def _connect(self) -> None:
+        loop = self._io.loop
+        try:
+            params = await self._xmlrpc(
+                self.publisher_uri, "requestTopic", self._caller_id, self.topic, [["TCPROS"]]
+            )
+        except ConnectError as exc:
+            raise GiveUp(f"publisher [{self.publisher_uri}] cannot be reached: {exc}") from None
+        except MasterError as exc:
+            raise GiveUp(f"requestTopic to [{self.publisher_uri}] failed: {exc}") from None
+        if not isinstance(params, list) or len(params) != 3 or params[0] != "TCPROS":
+            raise GiveUp(f"publisher returned invalid protocol choice: {params}")
+        host, port = str(params[1]), int(params[2])
+        family = socket.AF_INET6 if ":" in host else socket.AF_INET
+        sock = self.sock = socket.socket(family, socket.SOCK_STREAM)
+        sock.setblocking(False)
+        try:
+            await asyncio.wait_for(loop.sock_connect(sock, (host, port)), _CONNECT_TIMEOUT)
+        except ConnectionRefusedError as exc:
+            raise GiveUp(f"unable to connect to publisher at {host}:{port}: {exc}") from None
+        await loop.sock_sendall(sock, self._request)
+        reply = await asyncio.wait_for(self._read_header(sock), _CONNECT_TIMEOUT)
+        verdict = check_publisher_reply(reply, topic=self.topic, md5sum=self._md5sum)
+        if isinstance(verdict, Refused):
+            raise GiveUp(verdict.reason)
+        self.header = verdict.header
+        self.latching = verdict.latching
+        self.local = sock.getsockname()[:2]
+        self.remote = (host, port)
+        self.fileno = sock.fileno()
+        self.connected = True
+        self._reader.max_frame_size = DEFAULT_MAX_FRAME_SIZE
+        self._on_connected(self)
+
+    async def _read_header(self, sock: socket.socket) -> dict[str, str]:
+        reader = self._reader
+        while True:
+            data = await self._io.loop.sock_recv(sock, 65536)
+            if not data:
+                raise ConnectionResetError("publisher closed the connection during the handshake")
+            reader.feed(data)
+            block = reader.next_frame()
+            if block is not None:
+                return decode_header(block)
+
+    # -- the data path (on the receiver's thread) --------------------------------------------
+
+    def read(self) -> list[bytes] | None:
+        """Wait for data, read what the socket holds (up to a bound), return complete frames.
+
+        The socket is blocking: the first read waits; later ones (after a full buffer) take
+        only what is already there. ``None`` means the stream has ended (closed, failed, or out
+        of sync); the caller then closes the socket and tells the loop.
+        """
+        sock = self.sock
+        if sock is None or self.closed:
+            return None
+        scratch = self._scratch
+        reader = self._reader
+        total = 0
+        flags = 0
+        with memoryview(scratch) as view:
+            while True:
+                try:
+                    size = sock.recv_into(scratch, 0, flags)
+                except (BlockingIOError, InterruptedError):
+                    break
+                except OSError:
+                    return None
+                if size == 0:
+                    if total:
+                        break  # deliver what came; the next read sees the end
+                    return None
+                total += size
+                reader.feed(view[:size])
+                if size < len(scratch) or not _DONTWAIT or total >= _READ_BOUND:
+                    break
+                flags = _DONTWAIT
+        self.bytes_received += total
+        return self.take_frames()
+
+    def take_frames(self) -> list[bytes] | None:
+        """The complete frames buffered so far (``None``: the stream is out of sync)."""
+        try:
+            frames = self._reader.frames()
+        except ProtocolError as exc:
+            self._report(f"dropping connection to [{self.publisher_uri}]: {exc}")
+            return None
+        if frames:
+            self.frames_received += len(frames)
+            if self.latching:
+                self.latched = frames[-1]
+        return frames
+
+    # -- reporting ---------------------------------------------------------------------------
+
+    def transport_info(self) -> str:
+        """rospy's description of the connection (``rosnode info`` parses it)."""
+        return (
+            f"TCPROS connection on port {self.local[1]} to "
+            f"[{self.remote[0]}:{self.remote[1]} on socket {self.fileno}]"
+        )

@@ -1,0 +1,197 @@
+"""One publisher-to-subscriber TCPROS stream: frames written from any thread, never blocking I/O.
+
+The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
+
+* `OutgoingStream.send` takes one complete frame (length prefix included) from any thread. When
+  nothing is queued it is written straight away with one non-blocking ``send`` on the caller's
+  thread, so an idle connection adds no thread hand-off to a message's latency. Whatever the
+  kernel does not take is queued, and the I/O loop flushes the queue when the socket is
+  writable, as many frames as are waiting in one ``sendmsg``.
+* ``queue_size`` bounds the queue: a positive size drops the *oldest* queued frame when a new
+  one would exceed it (ROS 1's semantics), never the frame already partly on the wire; ``0``
+  means unbounded; ``None`` means no frame is dropped and `send` blocks its (non-loop) caller
+  while more than `HIGH_WATER` bytes wait, as rospy's synchronous publish blocks.
+* A peer that closes, resets or sends garbage ends the stream; `on_close` is then called once,
+  on the loop. Bytes a subscriber sends after its header are read and ignored: reading is how
+  a closed peer is noticed before the next publish.
+
+What this module must not know: topics, message types, headers. It moves frames.
+"""
+
+from __future__ import annotations
+
+import socket
+import threading
+from collections import deque
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
+
+    from rosx.node.loop import IoLoop
+
+#: With ``queue_size=None``, `OutgoingStream.send` blocks while more bytes than this wait.
+HIGH_WATER = 4 * 1024 * 1024
+
+# sendmsg takes at most IOV_MAX (1024 on Linux) buffers.
+_MAX_IOV = 512
+
+
+class OutgoingStream:
+    """Frames to one peer over a connected non-blocking socket (see the module's contract)."""
+
+    def __init__(
+        self,
+        sock: socket.socket,
+        io: IoLoop,
+        queue_size: int | None,
+        on_close: Callable[[OutgoingStream], None] | None = None,
+    ) -> None:
+        sock.setblocking(False)
+        self.sock = sock
+        self.fileno = sock.fileno()
+        self._io = io
+        self._limit = queue_size if queue_size else 0
+        self._blocking = queue_size is None
+        self._on_close = on_close
+        self._lock = threading.Lock()
+        self._drained = threading.Condition(self._lock)
+        self._pending: deque[bytes] = deque()
+        self._pending_bytes = 0
+        self._head_sent = 0  # bytes of _pending[0] already written
+        self.closed = False
+        self.bytes_sent = 0
+        self.frames_sent = 0
+        self.dropped = 0
+        io.call_soon(self._watch)
+
+    # -- any thread --------------------------------------------------------------------------
+
+    def send(self, frame: bytes) -> None:
+        """Queue ``frame`` for the peer (written at once when nothing else is waiting)."""
+        with self._lock:
+            if self.closed:
+                return
+            pending = self._pending
+            if not pending:
+                try:
+                    sent = self.sock.send(frame)
+                except (BlockingIOError, InterruptedError):
+                    sent = 0
+                except OSError:
+                    self._fail_locked()
+                    return
+                self.bytes_sent += sent
+                if sent == len(frame):
+                    self.frames_sent += 1
+                    return
+                pending.append(frame)
+                self._head_sent = sent
+                self._pending_bytes = len(frame) - sent
+                self._io.call_soon(self._start_writing)
+                return
+            pending.append(frame)
+            self._pending_bytes += len(frame)
+            limit = self._limit
+            # A head half on the wire is no longer queued, and dropping it would corrupt
+            # the stream: the oldest frame that may go is the one after it.
+            partial = 1 if self._head_sent else 0
+            if limit and len(pending) - partial > limit:
+                victim = pending[partial]
+                del pending[partial]
+                self._pending_bytes -= len(victim)
+                self.dropped += 1
+            elif (
+                self._blocking
+                and self._pending_bytes > HIGH_WATER
+                and not self._io.in_loop_thread()
+            ):
+                while not self.closed and self._pending_bytes > HIGH_WATER:
+                    self._drained.wait(1.0)
+
+    @property
+    def queued(self) -> int:
+        """Frames waiting to be written."""
+        return len(self._pending)
+
+    def close(self) -> None:
+        """End the stream (idempotent); `on_close` runs on the loop."""
+        with self._lock:
+            if self.closed:
+                return
+            self._fail_locked()
+
+    # -- the loop ----------------------------------------------------------------------------
+
+    def _fail_locked(self) -> None:
+        self.closed = True
+        self._pending.clear()
+        self._pending_bytes = 0
+        self._drained.notify_all()
+        self._io.call_soon(self._teardown)
+
+    def _teardown(self) -> None:
+        loop = self._io.loop
+        loop.remove_reader(self.fileno)
+        loop.remove_writer(self.fileno)
+        try:
+            self.sock.close()
+        finally:
+            if self._on_close is not None:
+                callback, self._on_close = self._on_close, None
+                callback(self)
+
+    def _watch(self) -> None:
+        if not self.closed:
+            self._io.loop.add_reader(self.fileno, self._on_readable)
+
+    def _on_readable(self) -> None:
+        try:
+            data = self.sock.recv(4096)
+        except (BlockingIOError, InterruptedError):
+            return
+        except OSError:
+            data = b""
+        if not data:
+            self.close()
+
+    def _start_writing(self) -> None:
+        if not self.closed:
+            self._io.loop.add_writer(self.fileno, self._on_writable)
+
+    def _on_writable(self) -> None:
+        with self._lock:
+            pending = self._pending
+            if self.closed or not pending:
+                self._io.loop.remove_writer(self.fileno)
+                return
+            head = self._head_sent
+            buffers: list[bytes | memoryview] = []
+            for index, frame in enumerate(pending):
+                if index == _MAX_IOV:
+                    break
+                buffers.append(memoryview(frame)[head:] if index == 0 and head else frame)
+            try:
+                sent = self.sock.sendmsg(buffers)
+            except (BlockingIOError, InterruptedError):
+                return
+            except OSError:
+                self._fail_locked()
+                return
+            self.bytes_sent += sent
+            self._pending_bytes -= sent
+            sent += head
+            while pending and sent >= len(pending[0]):
+                sent -= len(pending.popleft())
+                self.frames_sent += 1
+            self._head_sent = sent
+            if not pending:
+                self._io.loop.remove_writer(self.fileno)
+            if self._blocking and self._pending_bytes <= HIGH_WATER:
+                self._drained.notify_all()
+
+
+def configure_nodelay(sock: socket.socket, nodelay: bool) -> None:
+    """Disable Nagle's algorithm on ``sock`` when the subscriber asked for ``tcp_nodelay``."""
+    if nodelay:
+        sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)

@@ -1,0 +1,174 @@
+"""How a subscription's messages reach its callbacks: reader threads and one drop-oldest queue.
+
+As in rospy, a topic's messages are read and handed to its callbacks by threads of the topic's
+own, never by the I/O loop: a slow callback, or one that never returns, delays only its own
+topic, never other topics, other nodes or the Slave API. Each publisher connection gets a
+thread that blocks in ``recv`` on its socket. That is what keeps latency low: a message wakes
+exactly one thread, woken directly by the kernel (a wait in ``epoll`` and a hand-off to another
+thread each cost more than the rest of the path together).
+
+The contract:
+
+* The loop does each connection's handshake, then `Receiver.attach` starts the connection's
+  thread, which reads in large reads (`IncomingStream.read`: what the socket holds, up to a few
+  MiB) and queues the frames.
+* Frames wait in one queue per subscription. With a positive ``queue_size`` only the newest
+  frames are kept when the callbacks fall behind (ROS 1's drop-oldest semantics); ``None`` keeps
+  everything.
+* Whichever reader thread queued frames runs the callbacks, unless another one already is: the
+  callbacks of a topic never run concurrently, and run in the order the frames were queued.
+* A frame is decoded lazily, once per decoder, just before its callbacks run. Callback
+  exceptions go to ``on_error`` (rospy logs ``bad callback``) and reading goes on.
+* A stream that ends (peer closed, error, `Receiver.detach` shutting its socket down) has its
+  socket closed by its thread, which then tells the loop (``IncomingStream.close``).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import socket
+import threading
+from collections import deque
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
+
+    from rosx.node.incoming import IncomingStream
+    from rosx.node.loop import IoLoop
+
+    Decode = Callable[[bytes, dict[str, str]], Any]
+    #: A callback and the decoder of what it receives.
+    Entry = tuple[Callable[[Any], object], Decode]
+    #: A frame, the header of its connection, and the only entry to run it for (or None: all).
+    Item = tuple[bytes, dict[str, str], Entry | None]
+
+
+class Receiver:
+    """A subscription's queue, callbacks and reader threads (see the module's contract)."""
+
+    def __init__(
+        self,
+        io: IoLoop,
+        *,
+        queue_size: int | None,
+        name: str,
+        on_error: Callable[[BaseException, Callable[[Any], object]], None] | None = None,
+    ) -> None:
+        self._io = io
+        self._name = name
+        self._on_error = on_error
+        self._queue: deque[Item] = deque(maxlen=queue_size if queue_size else None)
+        self._dispatching = threading.Lock()
+        self.entries: tuple[Entry, ...] = ()
+        self._streams: set[IncomingStream] = set()
+        self._stopped = False
+        #: Frames queued, and frames whose callbacks have run.
+        self.received = 0
+        self.handled = 0
+
+    @property
+    def dropped(self) -> int:
+        """Frames dropped from the full queue so far."""
+        return max(0, self.received - self.handled - len(self._queue))
+
+    # -- callbacks (any thread) --------------------------------------------------------------
+
+    def add(self, callback: Callable[[Any], object], decode: Decode) -> Entry:
+        """Add a callback; returns its entry (to remove it, or to queue frames for it alone)."""
+        entry = (callback, decode)
+        self.entries = (*self.entries, entry)
+        return entry
+
+    def remove(self, entry: Entry) -> None:
+        """Remove a callback (it may still be running)."""
+        self.entries = tuple(e for e in self.entries if e is not entry)
+
+    def put(self, frame: bytes, header: dict[str, str], only: Entry | None = None) -> None:
+        """Queue one frame for every callback, or only for ``only`` (a latched message).
+
+        The callbacks run on a short-lived thread of their own unless a reader thread is
+        already running them.
+        """
+        if self._stopped:
+            return
+        self.received += 1
+        self._queue.append((frame, header, only))
+        threading.Thread(target=self._dispatch_all, name=self._name, daemon=True).start()
+
+    # -- connections -------------------------------------------------------------------------
+
+    def attach(self, stream: IncomingStream) -> None:
+        """Start the reader thread of a connected stream (called on the loop)."""
+        if self._stopped or stream.sock is None:
+            stream.close()
+            return
+        stream.receiver = self
+        stream.sock.setblocking(True)
+        self._streams.add(stream)
+        threading.Thread(
+            target=self._read_loop, args=(stream,), name=self._name, daemon=True
+        ).start()
+
+    def detach(self, stream: IncomingStream) -> None:
+        """End a stream's reading: its thread wakes, closes the socket and exits."""
+        sock = stream.sock
+        if sock is not None:
+            with contextlib.suppress(OSError):
+                sock.shutdown(socket.SHUT_RDWR)
+
+    def stop(self) -> None:
+        """Stop every reader thread and drop what is queued; a running callback finishes."""
+        self._stopped = True
+        self._queue.clear()
+        for stream in list(self._streams):
+            self.detach(stream)
+
+    # -- the threads -------------------------------------------------------------------------
+
+    def _read_loop(self, stream: IncomingStream) -> None:
+        try:
+            frames = stream.take_frames()  # what came with the header (a latched message)
+            while frames is not None and not self._stopped:
+                if frames:
+                    self.received += len(frames)
+                    header = stream.header
+                    self._queue.extend([(frame, header, None) for frame in frames])
+                    self._dispatch_all()
+                frames = stream.read()
+        finally:
+            self._streams.discard(stream)
+            stream.receiver = None
+            sock, stream.sock = stream.sock, None
+            if sock is not None:
+                sock.close()
+            self._io.call_soon(stream.close)
+
+    def _dispatch_all(self) -> None:
+        # Another thread may queue frames just after this one found the queue empty, then
+        # fail to take the lock this one still holds: so look again after releasing it.
+        queue = self._queue
+        lock = self._dispatching
+        while queue and lock.acquire(blocking=False):
+            try:
+                while queue and not self._stopped:
+                    self._dispatch(queue.popleft())
+            except IndexError:
+                pass
+            finally:
+                lock.release()
+
+    def _dispatch(self, item: Item) -> None:
+        frame, header, only = item
+        decoded: dict[Any, Any] = {}
+        for entry in (only,) if only is not None else self.entries:
+            callback, decode = entry
+            try:
+                msg = decoded.get(decode)
+                if msg is None:
+                    msg = decoded[decode] = decode(frame, header)
+                callback(msg)
+            except Exception as exc:  # a user's callback must not end the thread
+                if self._on_error is not None and not self._stopped:
+                    self._on_error(exc, callback)
+        self.handled += 1

@@ -1,0 +1,224 @@
+"""A node's subscription to one topic: its publisher connections and its subscribers' queues.
+
+The contract (ROS wiki ROS/Slave_API ``publisherUpdate``, ROS/TCPROS):
+
+* `Subscription.set_publishers` (on the loop) makes the connections match the publisher list
+  the master sent: one `IncomingStream` per new publisher URI, vanished ones closed. The list
+  returned by ``registerSubscriber`` is applied with ``additive=True`` when a
+  ``publisherUpdate`` overtook it, so an older list never drops a newer publisher.
+* Once connected, streams are read by the subscription's `Receiver` thread, which also runs
+  the callbacks of every `Subscriber` of the topic in the node (as rospy does), with one
+  drop-oldest queue sized by the first subscriber's ``queue_size``.
+* The last frame of each latching publisher is kept; a callback added later gets it first,
+  as rospy's subscribers do.
+* A typed subscription decodes frames with its message class; a raw one (AnyMsg: type and
+  md5sum ``*``) hands over `RawMessage` objects holding the bytes and what the publisher's
+  header says about their type.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from rosx.node.incoming import IncomingStream
+from rosx.node.receiver import Receiver
+from rosx.wire.tcpros import WILDCARD, subscriber_header
+
+if TYPE_CHECKING:
+    from collections.abc import Awaitable, Callable
+
+    from rosx.msg.message import Message
+    from rosx.node.loop import IoLoop
+    from rosx.node.receiver import Decode, Entry
+
+
+class RawMessage:
+    """A message kept as its serialized bytes (rospy's ``AnyMsg``).
+
+    ``_buff`` holds the bytes; ``_type``, ``_md5sum`` and ``_message_definition`` are what the
+    publisher's connection header said; ``_connection_header`` is that whole header.
+    """
+
+    __slots__ = ("_buff", "_connection_header")
+
+    _type = WILDCARD
+    _md5sum = WILDCARD
+
+    def __init__(self, buff: bytes, connection_header: dict[str, str] | None = None) -> None:
+        self._buff = buff
+        self._connection_header = connection_header or {}
+
+    @property
+    def type(self) -> str:
+        """The publisher's message type, e.g. ``geometry_msgs/Twist``."""
+        return self._connection_header.get("type", WILDCARD)
+
+    @property
+    def md5sum(self) -> str:
+        """The publisher's md5sum of the type."""
+        return self._connection_header.get("md5sum", WILDCARD)
+
+    @property
+    def message_definition(self) -> str:
+        """The publisher's full message definition (empty if it sent none)."""
+        return self._connection_header.get("message_definition", "")
+
+    def serialize(self, buff: Any) -> None:
+        """Write the bytes as they came (so a raw message can be republished)."""
+        buff.write(self._buff)
+
+    def __len__(self) -> int:
+        return len(self._buff)
+
+
+def _raw(frame: bytes, header: dict[str, str]) -> RawMessage:
+    return RawMessage(frame, header)
+
+
+def message_decoder(cls: type[Message]) -> Callable[[bytes, dict[str, str]], Message]:
+    """Decode frames of ``cls``: a fresh instance per frame, ``_connection_header`` set."""
+    from rosx.msg.codegen import variant  # noqa: PLC0415 - generated on first use
+
+    fresh = variant(cls, "deserialize_fresh")
+    new = object.__new__
+
+    def decode(frame: bytes, header: dict[str, str]) -> Message:
+        msg: Message = fresh(new(cls), frame)
+        msg._connection_header = header
+        return msg
+
+    return decode
+
+
+class Subscription:
+    """Everything a node does to receive one topic (see the module's contract)."""
+
+    def __init__(
+        self,
+        *,
+        io: IoLoop,
+        topic: str,
+        msg_class: type[Message] | None,
+        caller_id: str,
+        xmlrpc: Callable[..., Awaitable[Any]],
+        queue_size: int | None = None,
+        tcp_nodelay: bool = False,
+        on_error: Callable[[str], None] | None = None,
+    ) -> None:
+        self.io = io
+        self.topic = topic
+        self.msg_class = msg_class
+        self.type = msg_class._type if msg_class is not None else WILDCARD
+        self.md5sum = msg_class._md5sum if msg_class is not None else WILDCARD
+        self._caller_id = caller_id
+        self._xmlrpc = xmlrpc
+        self._on_error = on_error
+        self._header = subscriber_header(
+            callerid=caller_id,
+            topic=topic,
+            md5sum=self.md5sum,
+            msg_type=self.type,
+            message_definition=msg_class._full_text if msg_class is not None else "",
+            tcp_nodelay=tcp_nodelay,
+        )
+        self.streams: dict[str, IncomingStream] = {}
+        self.receiver = Receiver(
+            io, queue_size=queue_size, name=f"rosx-sub{topic}", on_error=self._callback_failed
+        )
+        self.updates = 0
+        self.closed = False
+
+    @staticmethod
+    def decoder(msg_class: type[Message] | None) -> Callable[[bytes, dict[str, str]], Any]:
+        """How frames become what a callback receives: ``msg_class`` messages, or (``None``)
+        `RawMessage` objects."""
+        return _raw if msg_class is None else message_decoder(msg_class)
+
+    # -- callbacks --------------------------------------------------------------------------
+
+    def add(self, callback: Callable[[Any], object], decode: Decode) -> Entry:
+        """Add a callback; it first gets the latched message of each latching publisher."""
+        entry = self.receiver.add(callback, decode)
+        self.io.call_soon(self._send_latched, entry)
+        return entry
+
+    def _send_latched(self, entry: Entry) -> None:
+        for stream in self.streams.values():
+            if stream.latched is not None:
+                self.receiver.put(stream.latched, stream.header, entry)
+
+    def remove(self, entry: Entry) -> None:
+        """Remove a callback."""
+        self.receiver.remove(entry)
+
+    @property
+    def callback_count(self) -> int:
+        """Callbacks still subscribed."""
+        return len(self.receiver.entries)
+
+    def _callback_failed(self, exc: BaseException, callback: Callable[[Any], object]) -> None:
+        if self._on_error is not None:
+            self._on_error(f"bad callback: {callback}\n{type(exc).__name__}: {exc}")
+
+    # -- publishers (the loop) ---------------------------------------------------------------
+
+    def set_publishers(self, uris: list[str], *, additive: bool = False) -> None:
+        """Connect to new publishers and, unless ``additive``, drop those no longer listed."""
+        if self.closed:
+            return
+        wanted = list(dict.fromkeys(uris))
+        if not additive:
+            for uri in list(self.streams):
+                if uri not in wanted:
+                    self.streams[uri].close()
+        for uri in wanted:
+            if uri not in self.streams:
+                stream = IncomingStream(
+                    io=self.io,
+                    topic=self.topic,
+                    publisher_uri=uri,
+                    request_header=self._header,
+                    md5sum=self.md5sum,
+                    caller_id=self._caller_id,
+                    xmlrpc=self._xmlrpc,
+                    on_connected=self.receiver.attach,
+                    on_close=self._on_stream_closed,
+                    on_error=self._on_error,
+                )
+                self.streams[uri] = stream
+                stream.start()
+
+    def _on_stream_closed(self, stream: IncomingStream) -> None:
+        if self.streams.get(stream.publisher_uri) is stream:
+            del self.streams[stream.publisher_uri]
+
+    def close(self) -> None:
+        """Close every connection and stop every subscriber's thread."""
+        self.closed = True
+        for stream in list(self.streams.values()):
+            stream.close()
+        self.receiver.stop()
+
+    # -- statistics --------------------------------------------------------------------------
+
+    def connection_count(self) -> int:
+        """Publishers currently connected."""
+        return sum(1 for s in self.streams.values() if s.connected)
+
+    def bus_stats(self) -> list[object]:
+        """``[topic, [[connId, bytesReceived, numMessages, dropEstimate, connected]...]]``."""
+        return [
+            self.topic,
+            [
+                [s.id, s.bytes_received, s.frames_received, -1, s.connected]
+                for s in self.streams.values()
+            ],
+        ]
+
+    def bus_info(self) -> list[list[object]]:
+        """``getBusInfo`` rows: ``[connId, publisherUri, 'i', 'TCPROS', topic, True, info]``."""
+        return [
+            [s.id, s.publisher_uri, "i", "TCPROS", self.topic, True, s.transport_info()]
+            for s in self.streams.values()
+            if s.connected
+        ]

@@ -1,0 +1,16 @@
+"""The network shell over `rosx.wire`'s XML-RPC codec: servers, clients, addresses.
+
+Import the module you need; this package imports none of them eagerly, so a command-line tool
+that only calls the master pays for the blocking client alone (no asyncio).
+
+- `errors`: `TransportError` (`ConnectError`, `CallTimeoutError`, `BadReplyError`) and
+  `FaultError`.
+- `client`: `XmlRpcClient`, `ServerProxy` and `call`, blocking, with kept-alive connections.
+- `aclient`: `AsyncXmlRpcClient`, the same for asyncio code, with short default timeouts.
+- `server`: `XmlRpcServer`, an asyncio HTTP/1.1 XML-RPC server, and `EncodedResponse`.
+- `loop_thread`: `LoopThread` (an event loop in a background thread) and `ServerThread`.
+- `address`: the host to bind and to advertise, from ROS_IP / ROS_HOSTNAME (ROS 1's rules).
+- `exchange`: what both clients share: request bytes, reply interpretation.
+
+Layering: this package uses `rosx.wire`, `rosx.names` and the standard library only.
+"""

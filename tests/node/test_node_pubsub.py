@@ -1,0 +1,239 @@
+"""Topics between rosx nodes in one process: delivery, latching, queues, raw subscriptions,
+publisher updates, unregistration and the Slave API's view of the connections."""
+
+from __future__ import annotations
+
+import re
+import threading
+from collections.abc import Callable
+from typing import Any
+
+from conftest import wait_until
+
+from rosx.msg.classes import get_message_class
+from rosx.node import Node, RawMessage
+from rosx.transport.client import call
+
+Twist = get_message_class("geometry_msgs/Twist")
+Vector3 = get_message_class("geometry_msgs/Vector3")
+String = get_message_class("std_msgs/String")
+
+# rosnode's pattern for the connection text of getBusInfo (tools/rosnode).
+CONNECTION_PATTERN = re.compile(r"\w+ connection on port (\d+) to \[(.*) on socket (\d+)\]")
+
+
+def twist(x: float) -> Any:
+    return Twist(linear=Vector3(x=x))
+
+
+def connected(pub: Any, sub: Any) -> Callable[[], bool]:
+    return lambda: pub.get_num_connections() > 0 and sub.get_num_connections() > 0
+
+
+def test_twist_flows_between_two_nodes(make_node: Callable[..., Node]) -> None:
+    talker, listener = make_node("talker"), make_node("listener")
+    got: list[Any] = []
+    sub = listener.subscribe("/cmd_vel", Twist, got.append)
+    pub = talker.advertise("/cmd_vel", Twist, queue_size=10)
+    wait_until(connected(pub, sub))
+    for i in range(100):
+        pub.publish(twist(i))
+    wait_until(lambda: len(got) == 100)
+    assert [m.linear.x for m in got] == [float(i) for i in range(100)]
+    assert got[0]._connection_header["callerid"] == "/talker"
+    assert got[0]._connection_header["type"] == "geometry_msgs/Twist"
+
+
+def test_callbacks_run_on_a_thread_of_their_own(make_node: Callable[..., Node]) -> None:
+    a, b = make_node("a"), make_node("b")
+    threads: list[str] = []
+    sub = b.subscribe("/t", Twist, lambda m: threads.append(threading.current_thread().name))
+    pub = a.advertise("/t", Twist)
+    wait_until(connected(pub, sub))
+    pub.publish(twist(1))
+    wait_until(lambda: threads)
+    assert threads[0].startswith("rosx-sub/t")
+    assert threads[0] != threading.current_thread().name
+
+
+def test_latched_message_reaches_late_subscribers(make_node: Callable[..., Node]) -> None:
+    a, b = make_node("latcher"), make_node("late")
+    pub = a.advertise("/latched", String, latch=True)
+    pub.publish(String(data="first"))
+    pub.publish(String(data="last"))
+    got: list[str] = []
+    b.subscribe("/latched", String, lambda m: got.append(m.data))
+    wait_until(lambda: got)
+    assert got == ["last"]
+    # A second subscriber of the same topic in the same node gets the latch too.
+    again: list[str] = []
+    b.subscribe("/latched", String, lambda m: again.append(m.data))
+    wait_until(lambda: again)
+    assert again == ["last"]
+    assert got == ["last"]
+
+
+def test_subscriber_queue_drops_the_oldest(make_node: Callable[..., Node]) -> None:
+    a, b = make_node("fast"), make_node("slow")
+    release = threading.Event()
+    got: list[float] = []
+
+    def slow(msg: Any) -> None:
+        got.append(msg.linear.x)
+        release.wait(10)
+
+    sub = b.subscribe("/flood", Twist, slow, queue_size=2)
+    pub = a.advertise("/flood", Twist, queue_size=100)
+    wait_until(connected(pub, sub))
+    pub.publish(twist(0))
+    wait_until(lambda: got)
+    for i in range(1, 10):
+        pub.publish(twist(i))
+    wait_until(lambda: sub.subscription.connection_count() == 1)
+    release.set()
+    wait_until(lambda: len(got) == 3)
+    assert got == [0.0, 8.0, 9.0]
+
+
+def test_raw_subscription_learns_the_type(make_node: Callable[..., Node]) -> None:
+    a, b = make_node("typed"), make_node("any")
+    got: list[RawMessage] = []
+    sub = b.subscribe("/raw", None, got.append)
+    assert sub.type == "*"
+    pub = a.advertise("/raw", Twist)
+    wait_until(connected(pub, sub))
+    pub.publish(twist(2.5))
+    wait_until(lambda: got)
+    raw = got[0]
+    assert isinstance(raw, RawMessage)
+    assert raw.type == "geometry_msgs/Twist"
+    assert raw.md5sum == Twist._md5sum
+    assert "MSG: geometry_msgs/Vector3" in raw.message_definition
+    assert Twist().deserialize(raw._buff).linear.x == 2.5
+    assert b.subscriptions["/raw"].type == "*"
+
+
+def test_publisher_update_connects_a_new_publisher(make_node: Callable[..., Node]) -> None:
+    listener = make_node("waiting")
+    got: list[str] = []
+    sub = listener.subscribe("/news", String, lambda m: got.append(m.data))
+    first = make_node("first").advertise("/news", String)
+    wait_until(lambda: first.get_num_connections() == 1)
+    second_node = make_node("second")
+    second = second_node.advertise("/news", String)
+    wait_until(lambda: second.get_num_connections() == 1 and sub.get_num_connections() == 2)
+    first.publish(String(data="one"))
+    second.publish(String(data="two"))
+    wait_until(lambda: len(got) == 2)
+    assert sorted(got) == ["one", "two"]
+    # A publisher that goes away is dropped when the master says so.
+    second_node.shutdown("gone")
+    wait_until(lambda: sub.get_num_connections() == 1)
+
+
+def test_several_subscribers_share_a_topic(make_node: Callable[..., Node]) -> None:
+    a, b = make_node("one_pub"), make_node("two_subs")
+    first: list[float] = []
+    second: list[float] = []
+    b.subscribe("/shared", Twist, lambda m: first.append(m.linear.x))
+    sub = b.subscribe("/shared", Twist, lambda m: second.append(m.linear.x))
+    pub = a.advertise("/shared", Twist)
+    wait_until(connected(pub, sub))
+    pub.publish(twist(7))
+    wait_until(lambda: first and second)
+    assert first == second == [7.0]
+    assert pub.get_num_connections() == 1
+
+
+def test_unregister_and_shutdown_leave_the_master(
+    make_node: Callable[..., Node], master: str
+) -> None:
+    node = make_node("leaver")
+    pub = node.advertise("/gone_pub", Twist)
+    sub = node.subscribe("/gone_sub", Twist, lambda m: None)
+    node.advertise_service(
+        "/gone_srv", _srv("std_srvs/Empty"), lambda req: _srv("std_srvs/Empty")._response_class()
+    )
+
+    def state() -> list[Any]:
+        return call(master, "getSystemState", "/test")[2]  # type: ignore[no-any-return]
+
+    pubs, subs, srvs = state()
+    assert ["/gone_pub", ["/leaver"]] in pubs
+    assert ["/gone_sub", ["/leaver"]] in subs
+    assert ["/gone_srv", ["/leaver"]] in srvs
+    pub.unregister()
+    sub.unregister()
+    pubs, subs, _ = state()
+    assert not any(name == "/gone_pub" for name, _ in pubs)
+    assert not any(name == "/gone_sub" for name, _ in subs)
+    node.shutdown("done")
+    pubs, subs, srvs = state()
+    assert not any("/leaver" in nodes for _, nodes in pubs + subs + srvs)
+    assert node.is_shutdown()
+
+
+def test_bus_info_describes_connections(make_node: Callable[..., Node]) -> None:
+    a, b = make_node("info_pub"), make_node("info_sub")
+    sub = b.subscribe("/info", Twist, lambda m: None)
+    pub = a.advertise("/info", Twist)
+    wait_until(connected(pub, sub))
+    code, status, rows = call(a.uri, "getBusInfo", "/test")
+    assert (code, status) == (1, "bus info")
+    (row,) = [r for r in rows if r[4] == "/info"]
+    assert row[1:6] == ["/info_sub", "o", "TCPROS", "/info", True]
+    assert CONNECTION_PATTERN.match(row[6])
+    code, _, rows = call(b.uri, "getBusInfo", "/test")
+    (row,) = [r for r in rows if r[4] == "/info"]
+    assert row[1:6] == [a.uri, "i", "TCPROS", "/info", True]
+    match = CONNECTION_PATTERN.match(row[6])
+    assert match is not None
+    assert match.group(2).endswith(f":{a.tcpros_address()[1]}")
+    code, _, stats = call(a.uri, "getBusStats", "/test")
+    assert code == 1
+    assert any(entry[0] == "/info" for entry in stats[0])
+
+
+def test_slave_api_answers_as_rospy(make_node: Callable[..., Node]) -> None:
+    node = make_node("slave")
+    node.advertise("/pubd", Twist)
+    node.subscribe("/subd", String, lambda m: None)
+    uri = node.uri
+    assert call(uri, "getPid", "/x")[0] == 1
+    assert call(uri, "getName", "/x") == [1, "", "/slave"]
+    assert call(uri, "getUri", "/x") == [1, "", uri]
+    assert call(uri, "getMasterUri", "/x")[2] == node.master_uri
+    assert ["/pubd", "geometry_msgs/Twist"] in call(uri, "getPublications", "/x")[2]
+    assert call(uri, "getSubscriptions", "/x")[2] == [["/subd", "std_msgs/String"]]
+    assert call(uri, "requestTopic", "/x", "/nope", [["TCPROS"]]) == [
+        -1,
+        "Not a publisher of [/nope]",
+        [],
+    ]
+    code, _, params = call(uri, "requestTopic", "/x", "/pubd", [["TCPROS"]])
+    assert code == 1
+    assert params == ["TCPROS", node.host, node.tcpros_address()[1]]
+    assert call(uri, "requestTopic", "/x", "/pubd", [["UDPROS"]])[0] == 0
+    assert call(uri, "getPid") == [-1, "missing required caller_id parameter", -1]
+    assert call(uri, "getPid", "/x", 1) == [-1, "Error: bad call arity", -1]
+    assert call(uri, "getPid", 5)[1] == "caller_id must be a string"
+    assert call(uri, "publisherUpdate", "/x", "", [])[1] == (
+        "ERROR: parameter [topic] must be a non-empty string"
+    )
+    assert call(uri, "paramUpdate", "/x", "/not/subscribed", 1) == [-1, "not subscribed", 0]
+
+
+def test_slave_shutdown_stops_the_node(make_node: Callable[..., Node]) -> None:
+    node = make_node("victim")
+    reasons: list[str] = []
+    node.on_shutdown(reasons.append)
+    assert call(node.uri, "shutdown", "/master", "bye") == [1, "shutdown", 0]
+    assert node.wait_for_shutdown(10)
+    wait_until(lambda: reasons)
+    assert reasons == ["external shutdown request from [/master]: [bye]"]
+
+
+def _srv(name: str) -> Any:
+    from rosx.msg.classes import get_service_class
+
+    return get_service_class(name)
