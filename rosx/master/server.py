@@ -1,0 +1,155 @@
+"""The ROS master as an XML-RPC server: `MasterApi` behind `XmlRpcServer`, with a `Notifier`
+for the calls it makes to nodes (ROS wiki Master_API, Parameter Server API).
+
+`Master` runs in an asyncio event loop; `MasterThread` hosts one in a background thread for
+synchronous code (tests, benchmarks, embedding). All master state lives on the loop's thread;
+other threads reach it through the loop (`MasterThread.run`), never directly.
+
+A ``shutdown`` call from a client sets `Master.shutdown_requested` (with the caller's message in
+`shutdown_message`); whoever runs the master decides when to `close` it, as roscore does.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import os
+from typing import TYPE_CHECKING, Any
+
+from rosx.master.api import MasterApi
+from rosx.master.notifier import DEFAULT_TIMEOUT, Notifier
+from rosx.transport.address import http_uri
+from rosx.transport.loop_thread import LoopThread
+from rosx.transport.server import XmlRpcServer
+
+if TYPE_CHECKING:
+    from collections.abc import Coroutine
+    from types import TracebackType
+    from typing import TypeVar
+
+    T = TypeVar("T")
+
+#: The port roscore listens on unless told otherwise.
+DEFAULT_MASTER_PORT = 11311
+
+
+class Master:
+    """The master: `start` in a running loop, then `close`.
+
+    Args:
+        host: The address to listen on.
+        port: The port (0 picks a free one).
+        advertised_host: The host named in the master's URI (``getUri``).
+        notify_timeout: Seconds a node has to answer each notification.
+        pid: The process id ``getPid`` reports (this process by default).
+    """
+
+    def __init__(
+        self,
+        *,
+        host: str = "127.0.0.1",
+        port: int = DEFAULT_MASTER_PORT,
+        advertised_host: str = "localhost",
+        notify_timeout: float = DEFAULT_TIMEOUT,
+        pid: int | None = None,
+    ) -> None:
+        self._host = host
+        self._port = port
+        self._advertised_host = advertised_host
+        self._notify_timeout = notify_timeout
+        self.api = MasterApi(
+            "", os.getpid() if pid is None else pid, on_shutdown=self._shutdown_called
+        )
+        self.notifier: Notifier | None = None
+        self.server: XmlRpcServer | None = None
+        self.shutdown_requested: asyncio.Event | None = None
+        self.shutdown_message = ""
+
+    @property
+    def uri(self) -> str:
+        """``http://<advertised host>:<port>/`` (after `start`)."""
+        return self.api.uri
+
+    @property
+    def port(self) -> int:
+        """The port listened on (after `start`)."""
+        if self.server is None:
+            raise RuntimeError("the master has not been started")
+        return self.server.port
+
+    async def start(self) -> None:
+        """Start serving.
+
+        Raises:
+            OSError: the address cannot be bound (``errno.EADDRINUSE``: the port is taken).
+        """
+        self.shutdown_requested = asyncio.Event()
+        self.notifier = Notifier(timeout=self._notify_timeout)
+        self.api.notify = self.notifier.submit
+        server = XmlRpcServer(
+            self.api.handlers(),
+            host=self._host,
+            port=self._port,
+            advertised_host=self._advertised_host,
+            multicall=True,
+        )
+        await server.start()
+        self.server = server
+        self.api.uri = http_uri(self._advertised_host, server.port)
+
+    async def close(self) -> None:
+        """Stop serving and drop pending notifications."""
+        server, self.server = self.server, None
+        if server is not None:
+            await server.close()
+        if self.notifier is not None:
+            await self.notifier.close()
+
+    def _shutdown_called(self, caller_id: str, message: str) -> None:
+        self.shutdown_message = message
+        if self.shutdown_requested is not None:
+            self.shutdown_requested.set()
+
+
+class MasterThread:
+    """A `Master` in a background event loop; arguments as `Master`'s, but port 0 by default."""
+
+    def __init__(self, *, port: int = 0, **options: Any) -> None:
+        self.master = Master(port=port, **options)
+        self._loop_thread = LoopThread("rosx-master")
+
+    @property
+    def uri(self) -> str:
+        """The master's URI (after `start`)."""
+        return self.master.uri
+
+    def start(self) -> str:
+        """Start the loop thread and the master; returns the master's URI."""
+        self._loop_thread.start()
+        try:
+            self._loop_thread.run(self.master.start())
+        except BaseException:
+            self._loop_thread.stop()
+            raise
+        return self.master.uri
+
+    def run(self, coro: Coroutine[Any, Any, T], timeout: float | None = 10.0) -> T:
+        """Run `coro` on the master's loop (to read or change its state safely)."""
+        return self._loop_thread.run(coro, timeout)
+
+    def close(self) -> None:
+        """Close the master and stop its thread."""
+        if self._loop_thread.running:
+            self._loop_thread.run(self.master.close(), timeout=10.0)
+        self._loop_thread.stop()
+
+    def __enter__(self) -> MasterThread:
+        self.start()
+        return self
+
+    def __exit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
+        self.close()
