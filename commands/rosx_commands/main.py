@@ -16,6 +16,7 @@ Tool = Callable[[Sequence[str], Environment], int]
 
 #: Tool name → (module:function, one-line help).
 TOOLS: dict[str, tuple[str, str]] = {
+    "roscore": ("rosx_commands.roscore:roscore", "Start a master, parameter server and /rosout."),
     "rosmsg": ("rosx_commands.rosmsg:rosmsg", "Show information about ROS message types."),
     "rossrv": ("rosx_commands.rosmsg:rossrv", "Show information about ROS service types."),
     "rostopic": ("rosx_commands.rostopic:rostopic", "Print information about ROS topics."),

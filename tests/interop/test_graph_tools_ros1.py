@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+import sys
 from collections.abc import Iterator
 
 import pytest
@@ -36,13 +37,17 @@ rospy.spin()
 """
 
 
-@pytest.fixture(scope="module")
-def graph() -> Iterator[str]:
-    """A ROS 1 roscore with a rospy talker and listener; yields the master URI."""
+@pytest.fixture(scope="module", params=["ros1-roscore", "rosx-roscore"])
+def graph(request: pytest.FixtureRequest) -> Iterator[str]:
+    """A roscore (ROS 1's or rosx's) with a rospy talker and listener; yields the master URI."""
     port = free_port()
     uri = f"http://localhost:{port}"
     env = ros1_environ(ROS_MASTER_URI=uri)
-    with running(["/usr/bin/roscore", "-p", str(port)], env):
+    if request.param == "ros1-roscore":
+        core = ["/usr/bin/roscore", "-p", str(port)]
+    else:
+        core = [sys.executable, "-m", "rosx_commands", "roscore", "-p", str(port)]
+    with running(core, {**clean_environ(), "ROS_MASTER_URI": uri}):
         wait_for(lambda: port_open(port), what="roscore")
         with running([ROS1_PYTHON, "-c", TALKER], env), running([ROS1_PYTHON, "-c", LISTENER], env):
             wait_for(

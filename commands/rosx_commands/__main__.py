@@ -1,0 +1,5 @@
+"""``python -m rosx_commands …`` is ``rosx …``."""
+
+from rosx_commands.main import run
+
+run()
