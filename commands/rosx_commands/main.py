@@ -21,6 +21,8 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rossrv": ("rosx_commands.rosmsg:rossrv", "Show information about ROS service types."),
     "rostopic": ("rosx_commands.rostopic:rostopic", "Print information about ROS topics."),
     "rosnode": ("rosx_commands.rosnode:rosnode", "Print information about ROS nodes."),
+    "rosservice": ("rosx_commands.rosservice:rosservice", "List, inspect and call ROS services."),
+    "rosparam": ("rosx_commands.rosparam:rosparam", "Get and set ROS parameters."),
 }
 
 

@@ -6,6 +6,9 @@ characters are escaped and how, when a scalar may stay plain or needs quotes (YA
 types: ``yes``, ``1.5``, ``~``…), and where long scalars are folded at 80 columns. This module
 reproduces those choices for ``str`` scalars with PyYAML's default settings (width 80, indent 2,
 ``allow_unicode=False``), without depending on PyYAML.
+
+`analyze`, `resolves_as_non_str` and `Writer` are the pieces `rosx.msg.yamldump` builds whole
+documents from (``rosparam get``/``dump``).
 """
 
 from __future__ import annotations
@@ -13,6 +16,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 from functools import cache
+from typing import NamedTuple
 
 _WIDTH = 80
 _INDENT = 2
@@ -68,9 +72,25 @@ def _implicit_non_str() -> re.Pattern[str]:
     return re.compile(_IMPLICIT_NON_STR, re.VERBOSE)
 
 
+def resolves_as_non_str(text: str) -> bool:
+    """Whether a YAML 1.1 reader would take ``text``, written plain, for something else than a
+    string (a bool, number, null…), so that it must be quoted."""
+    return _implicit_non_str().match(text) is not None
+
+
+class Analysis(NamedTuple):
+    """Which styles PyYAML's emitter allows for a scalar (its ``ScalarAnalysis``, block context)."""
+
+    empty: bool
+    multiline: bool
+    plain: bool
+    single_quoted: bool
+    block: bool
+
+
 def quoted(text: str) -> str:
     """``text`` as ``yaml.dump(text, default_style='"')`` gives it, without the final newline."""
-    writer = _Writer()
+    writer = Writer()
     writer.indent = _INDENT
     writer.double_quoted(text)
     return "".join(writer.out)
@@ -78,7 +98,7 @@ def quoted(text: str) -> str:
 
 def string_list(items: Sequence[str]) -> str:
     """A non-empty list of strings as ``yaml.dump(items)`` gives it (a block list), unterminated."""
-    writer = _Writer()
+    writer = Writer()
     for number, item in enumerate(items):
         writer.indent = 0
         if number:
@@ -95,10 +115,10 @@ def string_list(items: Sequence[str]) -> str:
     return "".join(writer.out)
 
 
-def _analyze(text: str) -> tuple[bool, bool]:
-    """Whether a block-context scalar may be plain, and single-quoted (PyYAML's analysis)."""
+def analyze(text: str) -> Analysis:
+    """The styles a block-context scalar may take (PyYAML's analysis, ``allow_unicode=False``)."""
     if not text:
-        return True, True
+        return Analysis(empty=True, multiline=False, plain=True, single_quoted=True, block=False)
     block_indicators = text.startswith(("---", "..."))
     line_breaks = special = False
     leading_space = leading_break = trailing_space = trailing_break = False
@@ -141,20 +161,27 @@ def _analyze(text: str) -> tuple[bool, bool]:
         or block_indicators
     )
     single = not (break_space or space_break or special)
-    return plain, single
+    block = not (trailing_space or space_break or special)
+    return Analysis(
+        empty=False, multiline=line_breaks, plain=plain, single_quoted=single, block=block
+    )
 
 
 def _style(text: str) -> str:
-    plain, single = _analyze(text)
-    if plain and not _implicit_non_str().match(text):
+    analysis = analyze(text)
+    if analysis.plain and not resolves_as_non_str(text):
         return "plain"
-    if single:
+    if analysis.single_quoted:
         return "single"
     return "double"
 
 
-class _Writer:
-    """The parts of PyYAML's emitter state that decide spaces, breaks and folding."""
+class Writer:
+    """The parts of PyYAML's emitter state that decide spaces, breaks and folding.
+
+    ``split=False`` (a mapping key) never folds a long scalar. ``open_ended`` is set by a
+    plain scalar at the document's root: PyYAML then ends the document with ``...``.
+    """
 
     def __init__(self) -> None:
         self.out: list[str] = []
@@ -162,6 +189,7 @@ class _Writer:
         self.whitespace = True
         self.indention = True
         self.indent = 0
+        self.open_ended = False
 
     def write(self, data: str) -> None:
         self.out.append(data)
@@ -172,10 +200,13 @@ class _Writer:
         self.whitespace = self.indention = True
         self.column = 0
 
-    def indicator(self, text: str, *, need_space: bool, indention: bool = False) -> None:
+    def indicator(
+        self, text: str, *, need_space: bool, whitespace: bool = False, indention: bool = False
+    ) -> None:
         self.write(text if self.whitespace or not need_space else " " + text)
-        self.whitespace = False
+        self.whitespace = whitespace
         self.indention = self.indention and indention
+        self.open_ended = False
 
     def write_indent(self) -> None:
         if (
@@ -189,7 +220,7 @@ class _Writer:
             self.out.append(" " * (self.indent - self.column))
             self.column = self.indent
 
-    def double_quoted(self, text: str) -> None:
+    def double_quoted(self, text: str, split: bool = True) -> None:
         self.indicator('"', need_space=True)
         start = end = 0
         while end <= len(text):
@@ -202,7 +233,7 @@ class _Writer:
                     self.write("\\" + _escape(ch))
                     start = end + 1
             fold = 0 < end < len(text) - 1 and (ch == " " or start >= end)
-            if fold and self.column + (end - start) > _WIDTH:
+            if fold and split and self.column + (end - start) > _WIDTH:
                 self.write(text[start:end] + "\\")
                 start = max(start, end)
                 self.write_indent()
@@ -213,7 +244,7 @@ class _Writer:
             end += 1
         self.indicator('"', need_space=False)
 
-    def single_quoted(self, text: str) -> None:
+    def single_quoted(self, text: str, split: bool = True) -> None:
         self.indicator("'", need_space=True)
         spaces = breaks = False
         start = end = 0
@@ -222,7 +253,7 @@ class _Writer:
             if spaces:
                 if ch != " ":
                     lone = start + 1 == end and start != 0 and end != len(text)
-                    if lone and self.column > _WIDTH:
+                    if lone and split and self.column > _WIDTH:
                         self.write_indent()
                     else:
                         self.write(text[start:end])
@@ -243,7 +274,9 @@ class _Writer:
             end += 1
         self.indicator("'", need_space=False)
 
-    def plain(self, text: str) -> None:
+    def plain(self, text: str, split: bool = True, *, root: bool = False) -> None:
+        if root:
+            self.open_ended = True
         if not text:
             return
         if not self.whitespace:
@@ -256,7 +289,7 @@ class _Writer:
             ch = text[end] if end < len(text) else None
             if spaces:
                 if ch != " ":
-                    if start + 1 == end and self.column > _WIDTH:
+                    if start + 1 == end and split and self.column > _WIDTH:
                         self.write_indent()
                         self.whitespace = self.indention = False
                     else:
@@ -267,6 +300,39 @@ class _Writer:
                 start = end
             if ch is not None:
                 spaces = ch == " "
+            end += 1
+
+    def literal(self, text: str) -> None:
+        """A literal block scalar (``|``), as PyYAML writes one, line break included."""
+        hints = ""
+        if text[:1] in (" ", *_BREAKS):
+            hints += str(_INDENT)
+        if text[-1:] not in _BREAKS:
+            hints += "-"
+        elif len(text) == 1 or text[-2] in _BREAKS:
+            hints += "+"
+        self.indicator("|" + hints, need_space=True)
+        if hints.endswith("+"):
+            self.open_ended = True
+        self.line_break()
+        breaks = True
+        start = end = 0
+        while end <= len(text):
+            ch = text[end] if end < len(text) else None
+            if breaks:
+                if ch is None or ch not in _BREAKS:
+                    for br in text[start:end]:
+                        self.line_break(br)
+                    if ch is not None:
+                        self.write_indent()
+                    start = end
+            elif ch is None or ch in _BREAKS:
+                self.out.append(text[start:end])
+                if ch is None:
+                    self.line_break()
+                start = end
+            if ch is not None:
+                breaks = ch in _BREAKS
             end += 1
 
     def _breaks(self, run: str) -> None:
@@ -289,4 +355,4 @@ def _escape(ch: str) -> str:
     return f"U{code:08X}"
 
 
-__all__ = ["quoted", "string_list"]
+__all__ = ["Analysis", "Writer", "analyze", "quoted", "resolves_as_non_str", "string_list"]

@@ -32,6 +32,7 @@ from rosx.node.publication import Publication
 from rosx.node.service import ServiceServer
 from rosx.node.service_client import ServiceClient, probe_service
 from rosx.node.slave_api import SlaveApi
+from rosx.node.startup import set_private_params
 from rosx.node.subscription import Subscription
 from rosx.node.tcpros_server import TcprosServer
 from rosx.transport.aclient import AsyncXmlRpcClient
@@ -73,6 +74,7 @@ class Node:
         log_level: int = rosout.INFO,
         console: Callable[[int, str], None] | None = None,
         io: IoLoop | None = None,
+        private_params: Mapping[str, str] | None = None,
     ) -> None:
         env = os.environ if environ is None else environ
         self.environ = env
@@ -105,15 +107,19 @@ class Node:
         self._rosout_enabled = rosout_enabled
         self.log_sink = rosout.NodeLog(self.name, level=log_level, console=console, environ=env)
         self.shutdown_reason = ""
+        #: ``_name:=value`` arguments (name without ``_`` → YAML text), set as ``~name`` on start.
+        self.private_params = dict(private_params or {})
 
     # -- lifecycle ---------------------------------------------------------------------------
 
     def start(self) -> Node:
-        """Start the servers, advertise ``/rosout`` and the logger services; returns self.
+        """Set the private parameters, start the servers, advertise ``/rosout`` and the logger
+        services; returns self.
 
         Raises:
             TransportError: the master cannot be reached.
             MasterError: the master refused a registration.
+            ParamArgsError: a private parameter's value cannot be set.
         """
         try:
             self._start()
@@ -123,6 +129,14 @@ class Node:
         return self
 
     def _start(self) -> None:
+        if self.private_params:
+            set_private_params(
+                self.master,
+                self.private_params,
+                node_name=self.name,
+                namespace=self.namespace,
+                remappings=self.remappings,
+            )
         self.io.run(self._start_servers())
         if self._rosout_enabled:
             self.log_sink.publish = RosoutPublisher(self)

@@ -48,3 +48,17 @@ def test_ros_tools_do_not_pay_for_typer() -> None:
         " environ={'ROS_MASTER_URI': 'http://localhost:9'}))"
     )
     assert not {m for m in loaded if m.split(".")[0] in ("typer", "pydantic", "rich", *HEAVY)}
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [["rosservice", "list"], ["rosservice", "call", "/x", "{a: 1}"], ["rosparam", "get", "/x"]],
+)
+def test_service_and_param_tools_do_not_pay_for_typer(argv: list[str]) -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        f"run_tool({argv!r}, Environment(stdout=io.StringIO(), stderr=io.StringIO(),"
+        " environ={'ROS_MASTER_URI': 'http://localhost:9'}))"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in ("typer", "pydantic", "rich", *HEAVY)}
+    assert "dataclasses" not in loaded and "textual" not in loaded

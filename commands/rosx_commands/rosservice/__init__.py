@@ -1,0 +1,50 @@
+"""``rosx rosservice``: list, call, type, info, args, find, uri, node, as ROS 1's rosservice."""
+
+from collections.abc import Callable, Sequence
+
+from rosx.names.remap_args import strip_remap_args
+from rosx_commands.cli import run_command
+from rosx_commands.context import Environment, ExitStatus
+from rosx_commands.rosservice import query
+from rosx_commands.rosservice.call import call_command
+
+COMMANDS = [
+    ("args", "print service arguments"),
+    ("call", "call the service with the provided args"),
+    ("find", "find services by service type"),
+    ("info", "print information about service"),
+    ("list", "list active services"),
+    ("type", "print service type"),
+    ("uri", "print service ROSRPC uri"),
+]
+
+
+def overview() -> str:
+    """What ROS 1's rosservice prints without a (known) sub-command."""
+    lines = ["Commands:"]
+    lines += [f"\trosservice {name}\t{text}" for name, text in COMMANDS]
+    lines += [
+        "",
+        "Type rosservice <command> -h for more detailed usage, e.g. 'rosservice call -h'",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def rosservice(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosservice ARGV…``."""
+    args = strip_remap_args(list(argv))
+    handlers: dict[str, Callable[[list[str], Environment], int]] = {
+        "list": query.list_services,
+        "info": query.info,
+        "type": query.service_type,
+        "uri": query.service_uri,
+        "node": query.service_node,
+        "call": call_command,
+        "args": query.service_args,
+        "find": query.find,
+    }
+    if not args or args[0] not in handlers:
+        env.out(overview())
+        return ExitStatus.EX_USAGE
+    return run_command(handlers[args[0]], args[1:], env)

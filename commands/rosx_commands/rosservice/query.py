@@ -1,0 +1,127 @@
+"""``rosservice list``, ``type``, ``uri``, ``node``, ``info``, ``args`` and ``find``."""
+
+from __future__ import annotations
+
+from rosx_commands.cli import ToolParser
+from rosx_commands.context import CommandError, Environment, ExitStatus
+from rosx_commands.rosservice.rpc import ServiceIOError, probe
+from rosx_commands.rosservice.services import Services, request_args
+
+
+def _service_only(env: Environment, command: str, argv: list[str]) -> str:
+    """The one service name of ``rosservice COMMAND /service``, resolved."""
+    parser = ToolParser(env, "rosservice", f"usage: %prog {command} /service")
+    _, args = parser.parse(argv)
+    if not args:
+        parser.error("service must be specified")
+    if len(args) > 1:
+        parser.error("you may only specify one input service")
+    return Services(env).resolve(args[0])
+
+
+def list_services(argv: list[str], env: Environment) -> int:
+    parser = ToolParser(env, "rosservice", "usage: %prog list [/namespace]")
+    parser.add_option(
+        "-n",
+        "--nodes",
+        dest="print_nodes",
+        default=False,
+        action="store_true",
+        help="print nodes that provide service(s)",
+    )
+    options, args = parser.parse(argv)
+    if len(args) > 1:
+        parser.error("you may only specify one input namespace")
+    services = Services(env)
+    namespace = services.resolve(args[0]) if args else None
+    rows = services.services(namespace)
+    if options.print_nodes:
+        for name, nodes in sorted(rows, key=lambda row: row[0]):
+            env.out(name + " " + ",".join(nodes))
+    else:
+        for name in sorted(name for name, _ in rows):
+            env.out(name)
+    return ExitStatus.OK
+
+
+def service_type(argv: list[str], env: Environment) -> int:
+    name = _service_only(env, "type", argv)
+    found = Services(env).type_of(name)
+    if found is None:
+        raise CommandError(f"Unknown service [{name}]")
+    env.out(found)
+    return ExitStatus.OK
+
+
+def service_uri(argv: list[str], env: Environment) -> int:
+    name = _service_only(env, "uri", argv)
+    uri = Services(env).uri_of(name)
+    if not uri:
+        raise CommandError(f"Unknown service: {name}")
+    env.out(uri)
+    return ExitStatus.OK
+
+
+def service_node(argv: list[str], env: Environment) -> int:
+    name = _service_only(env, "node", argv)
+    node = Services(env).node_of(name)
+    if not node:
+        raise CommandError(f"Unknown service: {name}")
+    env.out(node)
+    return ExitStatus.OK
+
+
+def service_args(argv: list[str], env: Environment) -> int:
+    name = _service_only(env, "args", argv)
+    env.out(request_args(Services(env).service_class(name)))
+    return ExitStatus.OK
+
+
+def info(argv: list[str], env: Environment) -> int:
+    parser = ToolParser(env, "rosservice", "usage: %prog info /service")
+    _, args = parser.parse(argv)
+    if len(args) > 1:
+        parser.error("you may only specify one service")
+    if not args:
+        parser.error("you must specify a service name")
+    services = Services(env)
+    name = services.resolve(args[0])
+    node = services.node_of(name)
+    if not node:
+        raise CommandError("ERROR: unknown service")
+    env.out(f"Node: {node}")
+    uri = services.uri_of(name)
+    if not uri:
+        env.err("ERROR: service is no longer available")
+        return ExitStatus.OK
+    env.out(f"URI: {uri}")
+    found = services.type_of(name)
+    if not found:
+        env.err("ERROR: service is no longer available")
+        return ExitStatus.OK
+    env.out(f"Type: {found}")
+    env.out(f"Args: {request_args(services.service_class(name))}")
+    return ExitStatus.OK
+
+
+def find(argv: list[str], env: Environment) -> int:
+    parser = ToolParser(env, "rosservice", "usage: %prog find msg-type")
+    _, args = parser.parse(argv)
+    if not args:
+        parser.error("please specify a message type")
+    if len(args) > 1:
+        parser.error("you may only specify one message type")
+    services = Services(env)
+    matches = []
+    for name, _ in services.services():
+        uri = services.uri_of(name)
+        if uri is None:
+            continue
+        try:
+            found = probe(name, uri).get("type")
+        except ServiceIOError:
+            continue
+        if found == args[0]:
+            matches.append(name)
+    env.out("\n".join(matches))
+    return ExitStatus.OK
