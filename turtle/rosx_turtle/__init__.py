@@ -1,1 +1,13 @@
-"""turtlesim for rosx; ``msg/`` and ``srv/`` hold the ``turtlesim`` package's types."""
+"""turtlesim for rosx: the simulator, its node, the keyboard teleop and the tutorial nodes.
+
+``msg/`` and ``srv/`` hold the ``turtlesim`` package's types. Subpackages and modules:
+
+- `engine`: the simulation as pure numpy code (no I/O, no clock, no ROS).
+- `node`: turtlesim_node around the engine (`TurtlesimNode`, `run_turtlesim`).
+- `teleop`: turtle_teleop_key (`run_teleop`); `keyboard`: the terminal in raw mode.
+- `tutorials`: draw_square and mimic.
+- `roscpp`, `console`, `program`, `env`: what these programs share as roscpp-like nodes.
+- `executables`: the programs by name (``python -m rosx_turtle NAME``).
+
+Importing this package imports nothing else; numpy loads with the engine only.
+"""

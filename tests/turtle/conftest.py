@@ -1,0 +1,60 @@
+"""Fixtures for turtlesim's node tests: a rosx master in this process, simulators and client
+nodes that always shut down, and the simulator's console captured."""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Callable, Iterator
+
+import pytest
+
+from rosx.master.server import MasterThread
+from rosx.node import Node
+from rosx_turtle.console import Console
+from rosx_turtle.node import TurtlesimNode
+from rosx_turtle.roscpp import NodeArgs
+from tests.turtle.simulators import Sim
+
+
+@pytest.fixture(scope="module")
+def master() -> Iterator[str]:
+    """A rosx master on a free port; yields its URI."""
+    with MasterThread(port=0, host="127.0.0.1", advertised_host="127.0.0.1") as thread:
+        yield thread.uri
+
+
+@pytest.fixture
+def make_sim(master: str) -> Iterator[Callable[..., Sim]]:
+    """Start simulators (``argv`` as on a command line) on the test's master."""
+    sims: list[TurtlesimNode] = []
+
+    def make(*argv: str) -> Sim:
+        out, err = io.StringIO(), io.StringIO()
+        sim = TurtlesimNode(
+            NodeArgs.parse(argv, "turtlesim"),
+            environ={"ROS_MASTER_URI": master},
+            console=Console(out, err, {}),
+            seed=1,
+        )
+        sims.append(sim)
+        sim.start()
+        return Sim(sim, out, err)
+
+    yield make
+    for sim in sims:
+        sim.shutdown("test over")
+
+
+@pytest.fixture
+def make_node(master: str) -> Iterator[Callable[[str], Node]]:
+    """Start client nodes on the test's master; every one is shut down after the test."""
+    nodes: list[Node] = []
+
+    def make(name: str) -> Node:
+        node = Node(name, master_uri=master, environ={}).start()
+        nodes.append(node)
+        return node
+
+    yield make
+    for node in nodes:
+        node.shutdown("test over")

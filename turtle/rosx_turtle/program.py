@@ -1,0 +1,112 @@
+"""Running one of turtlesim's programs as a process: wait for the master, run until a signal.
+
+As a roscpp node does, a program started before the master is up logs
+``[registerPublisher] Failed to contact master at [host:port].  Retrying...`` once at ERROR,
+keeps trying, and logs ``Connected to master at [host:port]`` when it gets through. SIGINT and
+SIGTERM (handled when the program runs on the main thread) end it cleanly, as does a node
+shutdown from outside (``rosnode kill``); the exit status is then 0.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import signal
+import threading
+from typing import TYPE_CHECKING, Protocol, TypeVar
+from urllib.parse import urlsplit
+
+from rosx.node import ERROR, INFO
+from rosx.transport.client import XmlRpcClient
+from rosx.transport.errors import TransportError
+
+if TYPE_CHECKING:
+    from collections.abc import Callable, Iterator, Mapping
+
+    from rosx_turtle.console import Console
+
+DEFAULT_MASTER_URI = "http://localhost:11311/"
+_RETRY_PERIOD = 0.5
+
+
+class Running(Protocol):
+    """A started program's node, as far as running it goes."""
+
+    def shutdown(self, reason: str = "") -> None:
+        """Leave the ROS graph."""
+
+    def wait_for_shutdown(self, timeout: float | None = None) -> bool:
+        """Block until shut down; False when ``timeout`` passed first."""
+
+
+T = TypeVar("T", bound=Running)
+
+
+def master_address(override: str | None, environ: Mapping[str, str]) -> str:
+    """``host:port`` of the master (``__master:=``, else ``ROS_MASTER_URI``, else the default),
+    as roscpp names it in its messages."""
+    uri = override or environ.get("ROS_MASTER_URI") or DEFAULT_MASTER_URI
+    return urlsplit(uri).netloc or uri
+
+
+def master_is_up(address: str) -> bool:
+    """Whether the master at ``address`` (``host:port``) answers a call."""
+    try:
+        with XmlRpcClient(timeout=_RETRY_PERIOD * 4) as client:
+            client.call(f"http://{address}/", "getPid", "/rosx_turtle")
+    except TransportError:
+        return False
+    return True
+
+
+@contextlib.contextmanager
+def stop_on_signals() -> Iterator[threading.Event]:
+    """An event set by SIGINT or SIGTERM while the block runs (on the main thread only)."""
+    stop = threading.Event()
+    if threading.current_thread() is not threading.main_thread():
+        yield stop
+        return
+    previous = {sig: signal.getsignal(sig) for sig in (signal.SIGINT, signal.SIGTERM)}
+    for sig in previous:
+        signal.signal(sig, lambda *_: stop.set())
+    try:
+        yield stop
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+
+
+def start_when_master_is_up(
+    start: Callable[[], T], console: Console, address: str, stop: threading.Event
+) -> T | None:
+    """``start()`` once the master at ``address`` answers (None if ``stop`` is set first)."""
+    failed = False
+    while not stop.is_set():
+        if master_is_up(address):
+            if failed:
+                console.print(INFO, f"Connected to master at [{address}]")
+            try:
+                return start()
+            except TransportError:  # the master went away meanwhile
+                pass
+        if not failed:
+            console.print(
+                ERROR, f"[registerPublisher] Failed to contact master at [{address}].  Retrying..."
+            )
+            failed = True
+        stop.wait(_RETRY_PERIOD)
+    return None
+
+
+def run_until_stopped(start: Callable[[], T], console: Console, address: str) -> int:
+    """Start the program's node, run it until a signal or a shutdown, stop it; exit status."""
+    with stop_on_signals() as stop:
+        running = start_when_master_is_up(start, console, address, stop)
+        if running is None:
+            return 0
+        try:
+            while not stop.is_set():
+                if running.wait_for_shutdown(0.1):
+                    break
+        finally:
+            running.shutdown("signal" if stop.is_set() else "")
+    return 0

@@ -1,0 +1,1 @@
+"""turtlesim's tutorial nodes: `draw_square` and `mimic`."""
