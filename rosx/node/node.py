@@ -54,6 +54,8 @@ if TYPE_CHECKING:
 
 DEFAULT_MASTER_URI = "http://localhost:11311/"
 _UNREGISTER_TIMEOUT = 2.0
+#: How long a second `Node.shutdown` caller waits for the first to finish.
+_FINISH_TIMEOUT = 15.0
 
 
 class Node:
@@ -99,6 +101,8 @@ class Node:
         self._pub_handles: dict[str, int] = {}
         self._lock = threading.RLock()
         self._shutdown = threading.Event()
+        self._closed = threading.Event()
+        self._closer: int | None = None
         self._hooks: list[Callable[[str], object]] = []
         self._aclient: AsyncXmlRpcClient | None = None
         self._xmlrpc: XmlRpcServer | None = None
@@ -176,24 +180,36 @@ class Node:
         return self._shutdown.wait(timeout)
 
     def shutdown(self, reason: str = "") -> None:
-        """Unregister everything from the master, close every connection, run the hooks."""
+        """Unregister everything from the master, close every connection, run the hooks.
+
+        A second caller (a ``rosnode kill`` shuts down on a thread of its own) waits until the
+        shutdown in progress is complete, so a process never exits still registered.
+        """
         with self._lock:
-            if self._shutdown.is_set():
-                return
-            self.shutdown_reason = reason
-            self._shutdown.set()
-        for hook in self._hooks:
-            try:
-                hook(reason)
-            except Exception as exc:  # every hook runs
-                print(f"error in shutdown hook: {exc}", file=sys.stderr)
-        self._unregister_all()
-        if self.io.in_loop_thread():
-            self.io.spawn(self._close_all())
-        else:
-            self.io.run(self._close_all(), timeout=10.0)
-        self._executor.shutdown(wait=False, cancel_futures=True)
-        self.client.close()
+            closer = self._closer
+            if closer is None:
+                self._closer = threading.get_ident()
+                self.shutdown_reason = reason
+                self._shutdown.set()
+        if closer is not None:
+            if closer != threading.get_ident() and not self.io.in_loop_thread():
+                self._closed.wait(_FINISH_TIMEOUT)
+            return
+        try:
+            for hook in self._hooks:
+                try:
+                    hook(reason)
+                except Exception as exc:  # every hook runs
+                    print(f"error in shutdown hook: {exc}", file=sys.stderr)
+            self._unregister_all()
+            if self.io.in_loop_thread():
+                self.io.spawn(self._close_all())
+            else:
+                self.io.run(self._close_all(), timeout=10.0)
+            self._executor.shutdown(wait=False, cancel_futures=True)
+            self.client.close()
+        finally:
+            self._closed.set()
 
     def _unregister_all(self) -> None:
         calls: list[tuple[str, tuple[object, ...]]] = []
@@ -275,6 +291,8 @@ class Node:
             self._pub_handles[name] = self._pub_handles.get(name, 0) + 1
         if new:
             self.master.call("registerPublisher", name, data_class._type, self.uri)
+            if self._shutdown.is_set():  # shut down meanwhile: do not leave it registered
+                self._call_quietly("unregisterPublisher", name, self.uri)
         return Publisher(self, publication, data_class)
 
     def _release_publication(self, publication: Publication) -> None:
@@ -331,6 +349,9 @@ class Node:
         if new:
             mark = subscription.updates
             uris = self.master.call("registerSubscriber", name, subscription.type, self.uri)
+            if self._shutdown.is_set():  # shut down meanwhile: do not leave it registered
+                self._call_quietly("unregisterSubscriber", name, self.uri)
+                return handle
             self.io.call_soon(self._apply_registration, subscription, list(uris), mark)
         return handle
 
@@ -368,14 +389,19 @@ class Node:
         name: str,
         service_class: type[ServiceDefinition],
         handler: Callable[[Any], object],
+        *,
+        server_class: type[ServiceServer] = ServiceServer,
     ) -> ServiceHandle:
-        """Serve ``name``: ``handler(request)`` runs on a pool thread for each call."""
+        """Serve ``name``: ``handler(request)`` runs on a pool thread for each call.
+
+        ``server_class`` decides how failures are answered (rospy's way by default).
+        """
         self._check_alive()
         resolved = self.resolve(name)
         with self._lock:
             if resolved in self.services:
                 raise ServiceError(f"service [{resolved}] already registered")
-            server = ServiceServer(
+            server = server_class(
                 io=self.io,
                 name=resolved,
                 service_class=service_class,
@@ -386,6 +412,8 @@ class Node:
             server.uri = format_rosrpc_uri(self.host, self._tcpros.port)
             self.services[resolved] = server
         self.master.call("registerService", resolved, server.uri, self.uri)
+        if self._shutdown.is_set():  # shut down meanwhile: do not leave it registered
+            self._call_quietly("unregisterService", resolved, server.uri)
         return ServiceHandle(self, server)
 
     def _release_service(self, server: ServiceServer) -> None:

@@ -3,7 +3,6 @@ shut down, and a way to wait for what happens on other threads."""
 
 from __future__ import annotations
 
-import time
 from collections.abc import Callable, Iterator
 
 import pytest
@@ -33,12 +32,3 @@ def make_node(master: str) -> Iterator[Callable[..., Node]]:
     yield make
     for node in nodes:
         node.shutdown("test over")
-
-
-def wait_until(predicate: Callable[[], object], timeout: float = 10.0) -> None:
-    """Poll ``predicate`` until it is true; fail the test after ``timeout`` seconds."""
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        if time.monotonic() > deadline:
-            raise AssertionError("timed out waiting for a condition")
-        time.sleep(0.01)

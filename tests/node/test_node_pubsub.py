@@ -8,11 +8,10 @@ import threading
 from collections.abc import Callable
 from typing import Any
 
-from conftest import wait_until
-
 from rosx.msg.classes import get_message_class
 from rosx.node import Node, RawMessage
 from rosx.transport.client import call
+from tests.support.procs import wait_for
 
 Twist = get_message_class("geometry_msgs/Twist")
 Vector3 = get_message_class("geometry_msgs/Vector3")
@@ -35,10 +34,10 @@ def test_twist_flows_between_two_nodes(make_node: Callable[..., Node]) -> None:
     got: list[Any] = []
     sub = listener.subscribe("/cmd_vel", Twist, got.append)
     pub = talker.advertise("/cmd_vel", Twist, queue_size=10)
-    wait_until(connected(pub, sub))
+    wait_for(connected(pub, sub))
     for i in range(100):
         pub.publish(twist(i))
-    wait_until(lambda: len(got) == 100)
+    wait_for(lambda: len(got) == 100)
     assert [m.linear.x for m in got] == [float(i) for i in range(100)]
     assert got[0]._connection_header["callerid"] == "/talker"
     assert got[0]._connection_header["type"] == "geometry_msgs/Twist"
@@ -49,9 +48,9 @@ def test_callbacks_run_on_a_thread_of_their_own(make_node: Callable[..., Node]) 
     threads: list[str] = []
     sub = b.subscribe("/t", Twist, lambda m: threads.append(threading.current_thread().name))
     pub = a.advertise("/t", Twist)
-    wait_until(connected(pub, sub))
+    wait_for(connected(pub, sub))
     pub.publish(twist(1))
-    wait_until(lambda: threads)
+    wait_for(lambda: threads)
     assert threads[0].startswith("rosx-sub/t")
     assert threads[0] != threading.current_thread().name
 
@@ -63,12 +62,12 @@ def test_latched_message_reaches_late_subscribers(make_node: Callable[..., Node]
     pub.publish(String(data="last"))
     got: list[str] = []
     b.subscribe("/latched", String, lambda m: got.append(m.data))
-    wait_until(lambda: got)
+    wait_for(lambda: got)
     assert got == ["last"]
     # A second subscriber of the same topic in the same node gets the latch too.
     again: list[str] = []
     b.subscribe("/latched", String, lambda m: again.append(m.data))
-    wait_until(lambda: again)
+    wait_for(lambda: again)
     assert again == ["last"]
     assert got == ["last"]
 
@@ -84,14 +83,14 @@ def test_subscriber_queue_drops_the_oldest(make_node: Callable[..., Node]) -> No
 
     sub = b.subscribe("/flood", Twist, slow, queue_size=2)
     pub = a.advertise("/flood", Twist, queue_size=100)
-    wait_until(connected(pub, sub))
+    wait_for(connected(pub, sub))
     pub.publish(twist(0))
-    wait_until(lambda: got)
+    wait_for(lambda: got)
     for i in range(1, 10):
         pub.publish(twist(i))
-    wait_until(lambda: sub.subscription.connection_count() == 1)
+    wait_for(lambda: sub.subscription.connection_count() == 1)
     release.set()
-    wait_until(lambda: len(got) == 3)
+    wait_for(lambda: len(got) == 3)
     assert got == [0.0, 8.0, 9.0]
 
 
@@ -101,9 +100,9 @@ def test_raw_subscription_learns_the_type(make_node: Callable[..., Node]) -> Non
     sub = b.subscribe("/raw", None, got.append)
     assert sub.type == "*"
     pub = a.advertise("/raw", Twist)
-    wait_until(connected(pub, sub))
+    wait_for(connected(pub, sub))
     pub.publish(twist(2.5))
-    wait_until(lambda: got)
+    wait_for(lambda: got)
     raw = got[0]
     assert isinstance(raw, RawMessage)
     assert raw.type == "geometry_msgs/Twist"
@@ -118,17 +117,17 @@ def test_publisher_update_connects_a_new_publisher(make_node: Callable[..., Node
     got: list[str] = []
     sub = listener.subscribe("/news", String, lambda m: got.append(m.data))
     first = make_node("first").advertise("/news", String)
-    wait_until(lambda: first.get_num_connections() == 1)
+    wait_for(lambda: first.get_num_connections() == 1)
     second_node = make_node("second")
     second = second_node.advertise("/news", String)
-    wait_until(lambda: second.get_num_connections() == 1 and sub.get_num_connections() == 2)
+    wait_for(lambda: second.get_num_connections() == 1 and sub.get_num_connections() == 2)
     first.publish(String(data="one"))
     second.publish(String(data="two"))
-    wait_until(lambda: len(got) == 2)
+    wait_for(lambda: len(got) == 2)
     assert sorted(got) == ["one", "two"]
     # A publisher that goes away is dropped when the master says so.
     second_node.shutdown("gone")
-    wait_until(lambda: sub.get_num_connections() == 1)
+    wait_for(lambda: sub.get_num_connections() == 1)
 
 
 def test_several_subscribers_share_a_topic(make_node: Callable[..., Node]) -> None:
@@ -138,9 +137,9 @@ def test_several_subscribers_share_a_topic(make_node: Callable[..., Node]) -> No
     b.subscribe("/shared", Twist, lambda m: first.append(m.linear.x))
     sub = b.subscribe("/shared", Twist, lambda m: second.append(m.linear.x))
     pub = a.advertise("/shared", Twist)
-    wait_until(connected(pub, sub))
+    wait_for(connected(pub, sub))
     pub.publish(twist(7))
-    wait_until(lambda: first and second)
+    wait_for(lambda: first and second)
     assert first == second == [7.0]
     assert pub.get_num_connections() == 1
 
@@ -177,7 +176,7 @@ def test_bus_info_describes_connections(make_node: Callable[..., Node]) -> None:
     a, b = make_node("info_pub"), make_node("info_sub")
     sub = b.subscribe("/info", Twist, lambda m: None)
     pub = a.advertise("/info", Twist)
-    wait_until(connected(pub, sub))
+    wait_for(connected(pub, sub))
     code, status, rows = call(a.uri, "getBusInfo", "/test")
     assert (code, status) == (1, "bus info")
     (row,) = [r for r in rows if r[4] == "/info"]
@@ -229,7 +228,7 @@ def test_slave_shutdown_stops_the_node(make_node: Callable[..., Node]) -> None:
     node.on_shutdown(reasons.append)
     assert call(node.uri, "shutdown", "/master", "bye") == [1, "shutdown", 0]
     assert node.wait_for_shutdown(10)
-    wait_until(lambda: reasons)
+    wait_for(lambda: reasons)
     assert reasons == ["external shutdown request from [/master]: [bye]"]
 
 

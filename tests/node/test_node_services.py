@@ -9,7 +9,6 @@ from collections.abc import Callable
 from typing import Any
 
 import pytest
-from conftest import wait_until
 
 from rosx.msg.classes import get_message_class, get_service_class
 from rosx.node import Node, ServiceError, rosout
@@ -18,6 +17,7 @@ from rosx.transport.client import call
 from rosx.wire.framing import FrameReader, frame
 from rosx.wire.header import decode_header, encode_header
 from rosx.wire.tcpros import subscriber_header
+from tests.support.procs import wait_for
 
 SetBool = get_service_class("std_srvs/SetBool")
 Trigger = get_service_class("std_srvs/Trigger")
@@ -113,8 +113,8 @@ def test_bad_connection_headers_are_refused(make_node: Callable[..., Node]) -> N
     listener = make_node("after")
     got: list[Any] = []
     sub = listener.subscribe("/guarded", Twist, got.append)
-    wait_until(lambda: sub.get_num_connections() == 1)
-    wait_until(lambda: node.publications["/guarded"].connection_count() == 1)
+    wait_for(lambda: sub.get_num_connections() == 1)
+    wait_for(lambda: node.publications["/guarded"].connection_count() == 1)
 
 
 def test_publisher_queue_drops_the_oldest_frames() -> None:
@@ -161,7 +161,7 @@ def test_parameters(make_node: Callable[..., Node], master: str) -> None:
     assert params.get_cached("relative/a") == 1
     other = make_node("setter")
     other.params.set("/ns/relative/a", 42)
-    wait_until(lambda: params.get_cached("relative/a") == 42)
+    wait_for(lambda: params.get_cached("relative/a") == 42)
     params.delete("relative")
     with pytest.raises(KeyError):
         params.delete("relative")
@@ -173,10 +173,10 @@ def test_rosout_and_logger_services(make_node: Callable[..., Node]) -> None:
     watcher = make_node("watcher")
     got: list[Any] = []
     sub = watcher.subscribe("/rosout", Log, got.append)
-    wait_until(lambda: sub.get_num_connections() >= 1)
+    wait_for(lambda: sub.get_num_connections() >= 1)
     node.log(rosout.INFO, "hello", file="f.py", function="fn", line=7)
     node.log(rosout.DEBUG, "hidden")
-    wait_until(lambda: any(m.name == "/logger" and m.msg == "hello" for m in got))
+    wait_for(lambda: any(m.name == "/logger" and m.msg == "hello" for m in got))
     record = next(m for m in got if m.msg == "hello")
     assert (record.level, record.file, record.function, record.line) == (2, "f.py", "fn", 7)
     assert "/rosout" in record.topics
@@ -193,7 +193,7 @@ def test_rosout_and_logger_services(make_node: Callable[..., Node]) -> None:
     )
     setter.call(setter.request_class(logger="rosout", level="debug"))
     node.log(rosout.DEBUG, "now visible")
-    wait_until(lambda: any(m.msg == "now visible" for m in got))
+    wait_for(lambda: any(m.msg == "now visible" for m in got))
 
 
 def test_console_line_follows_rosconsole_format() -> None:

@@ -11,17 +11,13 @@ turtlesim and its tutorials are C++ programs; where roscpp differs from rospy (w
   ``None`` (false in C++) answers ``ok=0`` with an **empty** error text, so ROS 1's rosservice
   prints ``responded with an error: b''``; one that raises answers with the exception's text,
   after logging ``Exception thrown while processing service call: <text>`` at ERROR;
-* `param_int`: ``NodeHandle::param<int>``'s reading of a parameter value;
-* `RoscppNode`: a `Node` whose `shutdown` returns only once the node has left the master,
-  whoever started it (a ``rosnode kill`` shuts a node down on a thread of its own, and the
-  process must not exit before that thread has unregistered everything).
+* `param_int`: ``NodeHandle::param<int>``'s reading of a parameter value.
 """
 
 from __future__ import annotations
 
 import math
 import re
-import threading
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 from rosx.names import ns_join, parse_remap_args
@@ -79,7 +75,7 @@ class NodeArgs(NamedTuple):
 
     def make_node(self, environ: Mapping[str, str]) -> Node:
         """A `Node` (not started) as these arguments describe it, quiet on the console."""
-        return RoscppNode(
+        return Node(
             self.name,
             namespace=self.namespace,
             master_uri=self.master_uri,
@@ -93,33 +89,6 @@ class NodeArgs(NamedTuple):
         """Set the ``_param:=value`` parameters, as ``ros::init`` does before anything else."""
         for key, value in self.params.items():
             node.params.set("~" + key, value)
-
-
-class RoscppNode(Node):
-    """A `Node` whose `shutdown` waits until the shutdown in progress, if any, is complete."""
-
-    _FINISH_TIMEOUT = 15.0
-
-    def __init__(self, name: str, **options: Any) -> None:
-        super().__init__(name, **options)
-        self._claim = threading.Lock()
-        self._closer: threading.Thread | None = None
-        self._finished = threading.Event()
-
-    def shutdown(self, reason: str = "") -> None:
-        """Shut down (or wait for the shutdown another thread is doing) and return when done."""
-        with self._claim:
-            closer = self._closer
-            if closer is None:
-                self._closer = threading.current_thread()
-        if closer is not None:
-            if closer is not threading.current_thread():  # not from a shutdown hook
-                self._finished.wait(self._FINISH_TIMEOUT)
-            return
-        try:
-            super().shutdown(reason)
-        finally:
-            self._finished.set()
 
 
 def sub_name(node: Node, namespace: str, name: str) -> str:
@@ -179,8 +148,4 @@ def advertise_service(
             log(ERROR, f"Exception thrown while processing service call: {exc}")
             raise
 
-    handle = node.advertise_service(name, service_class, handler)
-    # rosx.node builds rospy's server; only the way failures are answered differs, so the
-    # server is given roscpp's answering method (same state, one method overridden).
-    handle.server.__class__ = _RoscppServer
-    return handle
+    return node.advertise_service(name, service_class, handler, server_class=_RoscppServer)
