@@ -23,6 +23,7 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rosnode": ("rosx_commands.rosnode:rosnode", "Print information about ROS nodes."),
     "rosservice": ("rosx_commands.rosservice:rosservice", "List, inspect and call ROS services."),
     "rosparam": ("rosx_commands.rosparam:rosparam", "Get and set ROS parameters."),
+    "sim": ("rosx_commands.sim:sim", "Run a master, turtlesim and teleop in one terminal UI."),
 }
 
 

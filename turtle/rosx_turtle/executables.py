@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     Program = Callable[[Sequence[str], Env | None], int]
 
 EXECUTABLES: dict[str, str] = {
-    "turtlesim_node": "rosx_turtle.node.run:run_turtlesim",
+    "turtlesim_node": "rosx_turtle.tui.pond_run:run_turtlesim_node",
     "turtle_teleop_key": "rosx_turtle.teleop:run_teleop",
     "draw_square": "rosx_turtle.tutorials.draw_square:run_draw_square",
     "mimic": "rosx_turtle.tutorials.mimic:run_mimic",

@@ -1,0 +1,129 @@
+"""Fixtures for the terminal UI: a live ``rosx sim`` world, scripted ponds and a fixed link.
+
+Snapshots must not depend on timing, so they are taken of ponds built by stepping the engine
+by hand (seeded sprites, fixed clock) and of a `StaticLink` whose graph never changes; the
+live world is for pilot tests that assert on poses and messages, never on pictures.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import Callable, Coroutine, Iterator
+from typing import Any, TypeVar
+
+import pytest
+
+from rosx.node import WARN, Node
+from rosx_turtle.engine import Simulation, wall_warning
+from rosx_turtle.engine.constants import DEFAULT_BACKGROUND, TICK_PERIOD
+from rosx_turtle.sim.host import SimHost
+from rosx_turtle.tui.feed import Feed
+from rosx_turtle.tui.graph import Graph, Topic
+from rosx_turtle.tui.log import LogRecord
+from rosx_turtle.view.adapt import SceneMaker
+from rosx_turtle.view.scene import Scene
+from tests.support.procs import free_port
+
+T = TypeVar("T")
+
+#: The terminal size of every snapshot (columns, rows).
+SNAPSHOT_SIZE = (100, 32)
+
+
+def run(coro: Coroutine[Any, Any, T]) -> T:
+    """Run a pilot coroutine to completion (the suite has no asyncio plugin)."""
+    return asyncio.run(coro)
+
+
+class Pond:
+    """A simulation stepped by hand: a fixed clock, seeded sprites, exact ticks."""
+
+    def __init__(self) -> None:
+        self.sim = Simulation(seed=4)
+        self.sim.reset(DEFAULT_BACKGROUND)
+        self.now = 100.0
+        self._maker = SceneMaker()
+
+    def drive(self, name: str, linear: float, angular: float, ticks: int = 63) -> None:
+        """One cmd_vel for ``name``, then ``ticks`` ticks (63 ≈ the 1 s the command lasts)."""
+        self.sim.command(name, linear, 0.0, angular, self.now)
+        for _ in range(ticks):
+            self.now += TICK_PERIOD
+            self.sim.tick(self.now)
+
+    def scene(self) -> Scene:
+        return self._maker.make(self.sim)
+
+
+def scripted_pond() -> Pond:
+    """turtle1 draws a square corner with the default pen, then a thick red stroke with pen
+    changes in between; turtle2 is spawned and drives an arc with its pen off, then on."""
+    pond = Pond()
+    pond.drive("turtle1", 2.0, 0.0)
+    pond.drive("turtle1", 0.0, 1.5708 / 1.008)
+    pond.sim.set_pen("turtle1", 255, 40, 40, 6, 0)
+    pond.drive("turtle1", 2.0, 0.0)
+    pond.sim.set_pen("turtle1", 0, 0, 0, 0, 1)
+    pond.drive("turtle1", 1.0, 2.0)
+    pond.sim.spawn(2.0, 2.0, 0.5, "turtle2")
+    pond.sim.set_pen("turtle2", 0, 0, 0, 0, 1)
+    pond.drive("turtle2", 1.5, 0.0)
+    pond.sim.set_pen("turtle2", 255, 255, 0, 2, 0)
+    pond.drive("turtle2", 2.5, -1.2)
+    return pond
+
+
+LAB1_GRAPH = Graph(
+    topics=(
+        Topic("/rosout", "rosgraph_msgs/Log", ("/teleop_turtle", "/turtlesim"), ("/rosout",)),
+        Topic("/rosout_agg", "rosgraph_msgs/Log", ("/rosout",), ()),
+        Topic("/turtle1/cmd_vel", "geometry_msgs/Twist", ("/teleop_turtle",), ("/turtlesim",)),
+        Topic("/turtle1/color_sensor", "turtlesim/Color", ("/turtlesim",), ()),
+        Topic("/turtle1/pose", "turtlesim/Pose", ("/turtlesim",), ()),
+    ),
+    nodes=("/rosout", "/teleop_turtle", "/turtlesim"),
+)
+
+
+class StaticLink:
+    """A `SimLink` with a fixed pond, Lab 1's graph and a wall warning; records what the
+    teleop sends."""
+
+    master_uri = "http://localhost:11311/"
+    scales = (2.0, 2.0)
+
+    def __init__(self, scene: Scene) -> None:
+        self.scenes: Feed[Scene] = Feed(scene)
+        self.graph: Feed[Graph] = Feed(LAB1_GRAPH)
+        self.logs: Feed[LogRecord] = Feed(
+            LogRecord(WARN, " WARN", wall_warning(11.120889, 5.544445))
+        )
+        self.sent: list[tuple[float, float]] = []
+
+    def drive(self, linear: float, angular: float) -> None:
+        self.sent.append((linear, angular))
+
+
+@pytest.fixture
+def host() -> Iterator[SimHost]:
+    """``rosx sim``'s world on a free port, stopped after the test."""
+    world = SimHost(free_port(), {}, seed=4).start()
+    try:
+        yield world
+    finally:
+        world.stop()
+
+
+@pytest.fixture
+def make_node(host: SimHost) -> Iterator[Callable[[str], Node]]:
+    """Client nodes on the host's master, shut down after the test."""
+    nodes: list[Node] = []
+
+    def make(name: str) -> Node:
+        node = Node(name, master_uri=host.master_uri, environ={}).start()
+        nodes.append(node)
+        return node
+
+    yield make
+    for node in nodes:
+        node.shutdown("test over")

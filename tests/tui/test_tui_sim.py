@@ -1,0 +1,205 @@
+"""``rosx sim``'s screen driven with the keyboard over the live world (textual's pilot).
+
+Distances are asserted loosely: a command lasts one second of wall time, and a busy machine
+runs fewer 16 ms ticks in it (as turtlesim does), so the turtle goes a little less far.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from typing import Any
+
+from textual.message import Message
+from textual.pilot import Pilot
+
+from rosx.msg.classes import get_message_class
+from rosx.node import Node
+from rosx_turtle.sim.host import SimHost
+from rosx_turtle.tui.factory import make_sim_app
+from rosx_turtle.tui.nodes import NodesPanel
+from rosx_turtle.tui.pose import PosePanel
+from rosx_turtle.tui.teleop import TeleopPad
+from rosx_turtle.tui.topics import TopicsPanel
+from rosx_turtle.view.scene import TurtlePose
+from tests.support.procs import wait_for
+from tests.tui.conftest import Pond, StaticLink, run
+
+Twist = get_message_class("geometry_msgs/Twist")
+SIZE = (120, 36)
+
+
+def turtle1(host: SimHost) -> TurtlePose:
+    scene = host.scenes.value
+    assert scene is not None
+    return next(t for t in scene.turtles if t.name == "turtle1")
+
+
+async def settle(pilot: Pilot[Any], host: SimHost, timeout: float = 5.0) -> TurtlePose:
+    """Wait (letting the app run) until turtle1 has stopped moving; its pose."""
+    deadline = time.monotonic() + timeout
+    await pilot.pause(0.2)
+    while time.monotonic() < deadline:
+        pose = turtle1(host)
+        if pose.linear_velocity == 0.0 and pose.angular_velocity == 0.0:
+            return pose
+        await pilot.pause(0.05)
+    raise AssertionError("turtle1 kept moving")
+
+
+def spy(node: Node, host: SimHost) -> list[Any]:
+    """Record every Twist on /turtle1/cmd_vel once connected to the teleop."""
+    received: list[Any] = []
+    node.subscribe("/turtle1/cmd_vel", Twist, received.append)
+    publisher = host.cmd_vel
+    assert publisher is not None
+    wait_for(lambda: publisher.get_num_connections() >= 2, what="the spy's connection")
+    return received
+
+
+def test_up_arrow_drives_turtle1_two_metres_forward(
+    host: SimHost, make_node: Callable[[str], Node]
+) -> None:
+    twists = spy(make_node("/twist_spy"), host)
+    sent: list[Message] = []
+    app = make_sim_app(host)
+
+    async def drive() -> tuple[TurtlePose, TurtlePose, str]:
+        async with app.run_test(size=SIZE, message_hook=sent.append) as pilot:
+            before = await settle(pilot, host)
+            await pilot.press("up")  # the pilot waits for the screen: about the 1 s of motion
+            after = await settle(pilot, host)
+            await pilot.pause(0.1)
+            return before, after, app.query_one(PosePanel).text
+
+    before, after, panel = run(drive())
+    assert 1.5 < after.x - before.x < 2.1  # one Twist lasts 1 s: about 2 m (less if ticks lag)
+    assert after.y == before.y and after.theta == before.theta == 0.0
+    assert f"x: {after.x}" in panel.splitlines()
+    wait_for(lambda: len(twists) >= 1, what="the Twist")
+    (twist,) = twists
+    assert (twist.linear.x, twist.linear.y, twist.linear.z) == (2.0, 0.0, 0.0)
+    assert (twist.angular.x, twist.angular.y, twist.angular.z) == (0.0, 0.0, 0.0)
+    # The hook sees a message at each widget it bubbles through: count each message once.
+    pad_sent = {id(m): m for m in sent if isinstance(m, TeleopPad.Sent)}.values()
+    assert [(m.linear, m.angular) for m in pad_sent] == [(2.0, 0.0)]
+
+
+def test_left_and_right_turn_in_place(host: SimHost, make_node: Callable[[str], Node]) -> None:
+    twists = spy(make_node("/twist_spy"), host)
+    app = make_sim_app(host)
+
+    async def turn() -> tuple[TurtlePose, TurtlePose, TurtlePose]:
+        async with app.run_test(size=SIZE) as pilot:
+            start = await settle(pilot, host)
+            await pilot.press("left")
+            left = await settle(pilot, host)
+            await pilot.press("right")
+            right = await settle(pilot, host)
+            return start, left, right
+
+    start, left, right = run(turn())
+    assert 1.5 < left.theta - start.theta < 2.1  # about 2 rad counter-clockwise
+    assert 1.5 < left.theta - right.theta < 2.1  # and about as much back
+    assert (left.x, left.y) == (start.x, start.y) == (right.x, right.y)
+    wait_for(lambda: len(twists) >= 2, what="two Twists")
+    assert [(t.linear.x, t.angular.z) for t in twists] == [(0.0, 2.0), (0.0, -2.0)]
+
+
+def test_down_arrow_backs_up(host: SimHost) -> None:
+    app = make_sim_app(host)
+
+    async def back() -> tuple[TurtlePose, TurtlePose]:
+        async with app.run_test(size=SIZE) as pilot:
+            start = await settle(pilot, host)
+            await pilot.press("down")
+            return start, await settle(pilot, host)
+
+    start, end = run(back())
+    assert 1.5 < start.x - end.x < 2.1
+    assert math.isclose(end.y, start.y)
+
+
+def test_panels_show_lab1_graph(host: SimHost) -> None:
+    app = make_sim_app(host)
+
+    async def look() -> tuple[dict[str, list[str]], list[str]]:
+        async with app.run_test(size=SIZE) as pilot:
+            topics, nodes = app.query_one(TopicsPanel), app.query_one(NodesPanel)
+            deadline = time.monotonic() + 10
+            while time.monotonic() < deadline:
+                if topics.row_count >= 5 and nodes.row_count >= 3:
+                    break
+                await pilot.pause(0.1)
+            rows = {str(k.value): [str(c) for c in topics.get_row(k)] for k in topics.rows}
+            return rows, [str(key.value) for key in nodes.rows]
+
+    topics, nodes = run(look())
+    assert topics["/turtle1/cmd_vel"][:4] == ["/turtle1/cmd_vel", "geometry_msgs/Twist", "1", "1"]
+    assert topics["/turtle1/pose"][:2] == ["/turtle1/pose", "turtlesim/Pose"]
+    assert {"/rosout", "/rosout_agg", "/turtle1/color_sensor"} <= topics.keys()
+    assert nodes == ["/rosout", "/teleop_turtle", "/turtlesim"]
+
+
+def test_focused_pane_owns_the_arrow_keys(host: SimHost) -> None:
+    app = make_sim_app(host)
+
+    async def switch() -> list[tuple[str | None, int, bool]]:
+        seen = []
+        async with app.run_test(size=SIZE) as pilot:
+            pad = app.query_one(TeleopPad)
+
+            def state() -> tuple[str | None, int, bool]:
+                bindings = app.screen.active_bindings
+                return (
+                    app.focused.id if app.focused else None,
+                    pad.sent,
+                    bindings["up"].binding.description == "Forward",
+                )
+
+            await pilot.pause()
+            seen.append(state())
+            await pilot.press("tab")
+            await pilot.press("up", "down")  # the topic table's cursor, not the turtle
+            seen.append(state())
+            await pilot.press("tab")
+            seen.append(state())
+            await pilot.press("shift+tab", "shift+tab")
+            await pilot.press("up")
+            seen.append(state())
+            assert pad.border_subtitle == "arrow keys drive the turtle"
+        return seen
+
+    assert run(switch()) == [
+        ("teleop", 0, True),
+        ("topics", 0, False),
+        ("nodes", 0, False),
+        ("teleop", 1, True),
+    ]
+
+
+def test_q_quits(host: SimHost) -> None:
+    app = make_sim_app(host)
+
+    async def quit_app() -> bool:
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.press("q")
+            await pilot.pause()
+            return app.is_running
+
+    assert run(quit_app()) is False
+
+
+def test_keys_send_what_turtle_teleop_key_sends() -> None:
+    link = StaticLink(Pond().scene())
+    app = make_sim_app(link)
+
+    async def type_keys() -> None:
+        async with app.run_test(size=SIZE) as pilot:
+            # Arrows, then the bytes that end their escape sequences; other keys send nothing.
+            await pilot.press("up", "down", "left", "right", "A", "B", "D", "C", "x", "a")
+
+    run(type_keys())
+    arrows = [(2.0, 0.0), (-2.0, 0.0), (0.0, 2.0), (0.0, -2.0)]
+    assert link.sent == arrows + arrows

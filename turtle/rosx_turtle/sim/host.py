@@ -1,0 +1,162 @@
+"""`SimHost`: Lab 1's whole ROS graph in one process, and the `SimLink` its screen shows.
+
+It starts what Lab 1 starts in four terminals: the master with ``/rosout`` (`SimCore`), then
+``/turtlesim`` (`TurtlesimNode`, the same node ``rosrun turtlesim turtlesim_node`` runs) and
+``/teleop_turtle``, which publishes ``geometry_msgs/Twist`` on ``/turtle1/cmd_vel`` with queue 1
+and reads ``scale_linear``/``scale_angular`` once, in its public namespace, as
+``turtle_teleop_key`` does. The graph therefore looks the same to ``rostopic``, ``rosnode`` and
+rqt_graph in other terminals. On top it runs the feeds the screen follows: a scene after each
+tick that changes the pond, the graph whenever the master's lists change, and turtlesim's log.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from rosx.msg.classes import get_message_class
+from rosx_turtle.roscpp import NodeArgs
+from rosx_turtle.sim.core import SimCore
+from rosx_turtle.teleop import DEFAULT_NAME as TELEOP_NAME
+from rosx_turtle.teleop import param_double
+
+if TYPE_CHECKING:
+    from collections.abc import Callable, Mapping
+
+    from rosx.node import Node, Publisher
+    from rosx_turtle.console import Console
+    from rosx_turtle.node.turtlesim import TurtlesimNode
+    from rosx_turtle.tui.feed import Feed
+    from rosx_turtle.tui.graph import Graph
+    from rosx_turtle.tui.log import LogRecord
+    from rosx_turtle.view.scene import Scene
+
+#: Where the teleop publishes, relative to its namespace (turtle_teleop_key's name).
+CMD_VEL = "turtle1/cmd_vel"
+
+
+class SimHost:
+    """Master, ``/rosout``, ``/turtlesim`` and ``/teleop_turtle``; `start`, use, `stop`.
+
+    Args:
+        port: The master's port.
+        environ: The environment (``ROS_IP``, ``ROS_HOSTNAME``, ``ROSCONSOLE_FORMAT``...).
+        console: Where turtlesim's log lines go besides ``/rosout`` (None: to `logs` when
+            watching, else nowhere).
+        seed: Seeds turtlesim's choice of sprites (None: unpredictable).
+        watch: Whether to run the feeds for a screen (`scenes`, `graph` and `logs`).
+    """
+
+    def __init__(
+        self,
+        port: int,
+        environ: Mapping[str, str],
+        *,
+        console: Console | None = None,
+        seed: int | None = None,
+        watch: bool = True,
+    ) -> None:
+        self.core = SimCore(port, environ)
+        self.environ = environ
+        self.console = console
+        self.seed = seed
+        self.watch = watch
+        self.turtlesim: TurtlesimNode | None = None
+        self.teleop: Node | None = None
+        self.scales = (2.0, 2.0)
+        self._scenes: Feed[Scene] | None = None
+        self._graph: Feed[Graph] | None = None
+        self._logs: Feed[LogRecord] | None = None
+        #: The teleop's publisher of /turtle1/cmd_vel (after `start`).
+        self.cmd_vel: Publisher | None = None
+        self._twist: type[Any] = get_message_class("geometry_msgs/Twist")
+        self._stops: list[Callable[[], object]] = []
+
+    @property
+    def master_uri(self) -> str:
+        """The master's URI (what other terminals set ``ROS_MASTER_URI`` to)."""
+        return self.core.uri
+
+    @property
+    def scenes(self) -> Feed[Scene]:
+        """The pond after each tick that changed it."""
+        assert self._scenes is not None, "the host was started with watch=False"
+        return self._scenes
+
+    @property
+    def graph(self) -> Feed[Graph]:
+        """The ROS graph, when it changes."""
+        assert self._graph is not None, "the host was started with watch=False"
+        return self._graph
+
+    @property
+    def logs(self) -> Feed[LogRecord]:
+        """turtlesim's log lines (unless a console was given)."""
+        assert self._logs is not None, "the host was started with watch=False"
+        return self._logs
+
+    def start(self) -> SimHost:
+        """Start everything; returns self.
+
+        Raises:
+            PortBusyError: the master's port is taken.
+        """
+        self.core.start()
+        self._stops.append(self.core.stop)
+        try:
+            self._start_nodes()
+        except BaseException:
+            self.stop()
+            raise
+        return self
+
+    def _start_nodes(self) -> None:
+        from rosx_turtle.node.turtlesim import TurtlesimNode  # noqa: PLC0415 - loads numpy
+
+        uri = self.core.uri
+        environ = {**self.environ, "ROS_MASTER_URI": uri}
+        console = self._open_feeds() if self.watch else self.console
+        turtlesim = TurtlesimNode(
+            NodeArgs.parse([], "turtlesim"), environ=environ, console=console, seed=self.seed
+        )
+        self.turtlesim = turtlesim.start()
+        self._stops.append(lambda: turtlesim.shutdown("rosx sim is done"))
+        teleop = NodeArgs.parse([], TELEOP_NAME).make_node(environ).start()
+        self.teleop = teleop
+        self._stops.append(lambda: teleop.shutdown("rosx sim is done"))
+        self.scales = (
+            param_double(teleop, "scale_linear", 2.0),
+            param_double(teleop, "scale_angular", 2.0),
+        )
+        self.cmd_vel = teleop.advertise(CMD_VEL, self._twist, queue_size=1)
+        if self.watch:
+            self._start_watching(turtlesim, uri)
+
+    def _open_feeds(self) -> Console:
+        # The feeds post to textual widgets: imported only when there is a screen to feed.
+        from rosx_turtle.tui.feed import Feed  # noqa: PLC0415
+        from rosx_turtle.tui.log import ScreenConsole  # noqa: PLC0415
+
+        self._scenes, self._graph, self._logs = Feed(), Feed(), Feed()
+        return self.console or ScreenConsole(self._logs.offer, self.environ)
+
+    def _start_watching(self, turtlesim: TurtlesimNode, uri: str) -> None:
+        from rosx_turtle.tui.graph import GraphWatcher  # noqa: PLC0415
+        from rosx_turtle.view.adapt import follow  # noqa: PLC0415
+
+        self._stops.append(follow(turtlesim, self.scenes.offer))
+        watcher = GraphWatcher(uri, self.graph).start()
+        self._stops.append(watcher.stop)
+
+    def drive(self, linear: float, angular: float) -> None:
+        """Publish one Twist on ``/turtle1/cmd_vel``: ``linear.x`` and ``angular.z``, all else 0."""
+        if self.cmd_vel is None:
+            return
+        twist = self._twist()
+        twist.linear.x = linear
+        twist.angular.z = angular
+        self.cmd_vel.publish(twist)
+
+    def stop(self) -> None:
+        """Stop everything started, in reverse order (nodes unregister from the master first)."""
+        while self._stops:
+            self._stops.pop()()

@@ -1,0 +1,27 @@
+"""The apps as the commands run them and the tests drive them: one factory each."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from rosx_turtle.tui.feed import Feed
+    from rosx_turtle.tui.link import SimLink
+    from rosx_turtle.tui.log import LogRecord
+    from rosx_turtle.tui.pond_app import PondApp
+    from rosx_turtle.tui.sim_app import SimApp
+    from rosx_turtle.view.scene import Scene
+
+
+def make_pond_app(scenes: Feed[Scene], logs: Feed[LogRecord] | None = None) -> PondApp:
+    """turtlesim_node's terminal window: the scenes offered to ``scenes``, the latest log line."""
+    from rosx_turtle.tui.pond_app import PondApp  # noqa: PLC0415 - textual only when drawn
+
+    return PondApp(scenes, logs)
+
+
+def make_sim_app(link: SimLink) -> SimApp:
+    """``rosx sim``'s terminal UI over ``link``, the teleop pane focused."""
+    from rosx_turtle.tui.sim_app import SimApp  # noqa: PLC0415 - textual only when drawn
+
+    return SimApp(link)

@@ -1,0 +1,42 @@
+"""`PondApp`: turtlesim_node's window in a terminal: the pond, the poses and the keys."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, ClassVar
+
+from textual.app import App  # noqa: TID253 - TUI code
+from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
+from textual.widgets import Footer  # noqa: TID253 - TUI code
+
+from rosx_turtle.tui.log_line import LogLine
+from rosx_turtle.tui.pond import PondView
+from rosx_turtle.tui.status import PoseLine
+
+if TYPE_CHECKING:
+    from textual.app import ComposeResult
+
+    from rosx_turtle.tui.feed import Feed
+    from rosx_turtle.tui.log import LogRecord
+    from rosx_turtle.view.scene import Scene
+
+
+class PondApp(App[None]):
+    """The pond full-screen, with the poses and the latest log line; ``q`` or Ctrl-C quits."""
+
+    TITLE = "TurtleSim"
+    ENABLE_COMMAND_PALETTE = False
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("q", "quit", "Quit"),
+        Binding("ctrl+c", "quit", "Quit", show=False, priority=True),
+    ]
+
+    def __init__(self, scenes: Feed[Scene], logs: Feed[LogRecord] | None = None) -> None:
+        super().__init__()
+        self.scenes = scenes
+        self.logs = logs
+
+    def compose(self) -> ComposeResult:
+        yield PondView(self.scenes, id="pond")
+        yield PoseLine(self.scenes, id="poses")
+        yield LogLine(self.logs, id="log")
+        yield Footer()

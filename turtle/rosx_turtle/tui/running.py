@@ -1,0 +1,71 @@
+"""Running an app in the terminal until the user quits, the node goes, or a signal says so.
+
+``q`` and Ctrl-C are the apps' own bindings (a terminal in raw mode delivers Ctrl-C as a key).
+SIGTERM, and a node shut down from outside (``rosnode kill``), end the app too: a watcher
+thread asks it to exit through ``call_from_thread``, the only way other threads reach it.
+This module imports no textual: the caller builds the app.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import signal
+import threading
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from collections.abc import Callable, Iterator
+    from types import FrameType
+
+    from textual.app import App
+
+
+def is_terminal(stream: object) -> bool:
+    """Whether ``stream`` is a terminal (a closed stream is not)."""
+    isatty = getattr(stream, "isatty", None)
+    try:
+        return bool(isatty and isatty())
+    except ValueError:
+        return False
+
+
+def run_app(app: App[None], *, gone: Callable[[float], bool] | None = None) -> None:
+    """Run ``app`` (blocking) until it exits; ``gone(timeout)`` True ends it as well."""
+    done = threading.Event()
+
+    def exit_app() -> None:
+        with contextlib.suppress(RuntimeError):  # the app has already stopped
+            app.call_from_thread(app.exit)
+
+    def watch(gone: Callable[[float], bool]) -> None:
+        while not done.is_set():
+            if gone(0.1):
+                exit_app()
+                return
+
+    watcher = threading.Thread(target=watch, args=(gone,), name="rosx-tui-watch", daemon=True)
+    with _on_sigterm(lambda: threading.Thread(target=exit_app, daemon=True).start()):
+        if gone is not None:
+            watcher.start()
+        try:
+            app.run()
+        finally:
+            done.set()
+            if watcher.is_alive():
+                watcher.join(timeout=1.0)
+
+
+@contextlib.contextmanager
+def _on_sigterm(handler: Callable[[], None]) -> Iterator[None]:
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def on_signal(signum: int, frame: FrameType | None) -> None:
+        handler()
+
+    previous = signal.signal(signal.SIGTERM, on_signal)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)

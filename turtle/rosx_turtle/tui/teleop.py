@@ -1,0 +1,112 @@
+"""`TeleopPad`: keyboard teleop in a pane; while it has the focus, the arrow keys drive a turtle.
+
+Each key press sends one command, as ``turtle_teleop_key`` sends one Twist per arrow byte: Up and
+Down set ``linear.x`` to ±``scale_linear``, Left and Right set ``angular.z`` to ±``scale_angular``
+(2.0 by default), every other field 0. Capital A, B, C and D do the same, as they do in
+turtle_teleop_key (they end the arrows' escape sequences). The pad does not publish itself: it
+calls ``drive(linear, angular)``, which the host wires to its ``/teleop_turtle`` node, and posts
+`TeleopPad.Sent` for whoever wants to know. Its border says whether it owns the keys.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, ClassVar
+
+from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
+from textual.message import Message  # noqa: TID253 - TUI code
+from textual.widgets import Static  # noqa: TID253 - TUI code
+
+from rosx_turtle.teleop import KEYS
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
+
+_FOCUSED = "arrow keys drive the turtle"
+_BLURRED = "press Tab until this is lit to drive"
+
+
+class TeleopPad(Static, can_focus=True):
+    """Arrow keys to commands for ``drive(linear, angular)``; see the module docstring."""
+
+    # Each key stands for the byte turtle_teleop_key reads (the arrows' escape sequences end
+    # in A, B, C or D), and that byte's meaning comes from turtle_teleop_key's own table.
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("up", "drive('A')", "Forward"),
+        Binding("down", "drive('B')", "Back"),
+        Binding("left", "drive('D')", "Turn left"),
+        Binding("right", "drive('C')", "Turn right"),
+        *(Binding(byte, f"drive('{byte}')", show=False) for byte in "ABCD"),
+    ]
+
+    DEFAULT_CSS = """
+    TeleopPad {
+        height: 5;
+        padding: 0 1;
+        border: round $panel-lighten-2;
+        border-title-color: $text-muted;
+        border-subtitle-color: $text-muted;
+        &:focus {
+            border: heavy $accent;
+            border-title-color: $accent;
+            border-subtitle-color: $accent;
+        }
+    }
+    """
+
+    class Sent(Message):
+        """A command was sent: ``linear`` (linear.x) and ``angular`` (angular.z)."""
+
+        def __init__(self, linear: float, angular: float) -> None:
+            super().__init__()
+            self.linear = linear
+            self.angular = angular
+
+    def __init__(
+        self,
+        drive: Callable[[float, float], None],
+        *,
+        scale_linear: float = 2.0,
+        scale_angular: float = 2.0,
+        node: str = "/teleop_turtle",
+        topic: str = "/turtle1/cmd_vel",
+        id: str | None = None,
+    ) -> None:
+        super().__init__("", id=id, markup=False)
+        self.drive = drive
+        self.scale_linear = scale_linear
+        self.scale_angular = scale_angular
+        self.sent = 0
+        self.last: tuple[float, float] | None = None
+        self.border_title = f"Teleop {node} → {topic}"
+        self.border_subtitle = _BLURRED
+
+    def on_mount(self) -> None:
+        self._describe()
+
+    def on_focus(self) -> None:
+        self.border_subtitle = _FOCUSED
+
+    def on_blur(self) -> None:
+        self.border_subtitle = _BLURRED
+
+    def action_drive(self, byte: str) -> None:
+        """Send the command turtle_teleop_key sends for key byte ``byte``."""
+        forward, turn = KEYS[byte.encode()]
+        linear, angular = forward * self.scale_linear, turn * self.scale_angular
+        self.drive(linear, angular)
+        self.sent += 1
+        self.last = (linear, angular)
+        self._describe()
+        self.post_message(self.Sent(linear, angular))
+
+    def _describe(self) -> None:
+        lines = [
+            f"↑ ↓  forward / back     linear.x  ±{self.scale_linear}",
+            f"← →  turn left / right  angular.z ±{self.scale_angular}",
+        ]
+        if self.last is None:
+            lines.append("nothing sent yet")
+        else:
+            linear, angular = self.last
+            lines.append(f"sent {self.sent}, last: linear.x={linear} angular.z={angular}")
+        self.update("\n".join(lines))
