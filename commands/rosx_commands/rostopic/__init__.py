@@ -1,5 +1,10 @@
-"""``rosx rostopic``: list, info, type, find (and the streaming commands), as ROS 1's rostopic."""
+"""``rosx rostopic``: ROS 1's rostopic, sub-command by sub-command.
 
+``list``, ``info``, ``type`` and ``find`` ask the master (`listing`); ``echo``, ``pub``, ``hz``,
+``bw`` and ``delay`` run a node (`echo`, `pub`, `rates`) and are imported only when used.
+"""
+
+import importlib
 from collections.abc import Callable, Sequence
 
 from rosx.names.remap_args import strip_remap_args
@@ -31,6 +36,24 @@ def overview() -> str:
     return "\n".join(lines)
 
 
+#: The streaming sub-commands, imported only when used (they load the node runtime).
+STREAMING = {
+    "echo": "rosx_commands.rostopic.echo:echo",
+    "pub": "rosx_commands.rostopic.pub:pub",
+    "hz": "rosx_commands.rostopic.rates:hz",
+    "bw": "rosx_commands.rostopic.rates:bw",
+    "delay": "rosx_commands.rostopic.rates:delay",
+}
+
+
+def _streaming(name: str) -> Callable[[list[str], Environment], int]:
+    module, _, function = STREAMING[name].partition(":")
+    handler: Callable[[list[str], Environment], int] = getattr(
+        importlib.import_module(module), function
+    )
+    return handler
+
+
 def rostopic(argv: Sequence[str], env: Environment) -> int:
     """Run ``rostopic ARGV…``."""
     args = strip_remap_args(list(argv))
@@ -40,6 +63,8 @@ def rostopic(argv: Sequence[str], env: Environment) -> int:
         "type": listing.topic_type,
         "find": listing.find,
     }
+    if args and args[0] in STREAMING:
+        return run_command(_streaming(args[0]), args[1:], env)
     if not args or args[0] not in handlers:
         env.out(overview())
         return ExitStatus.EX_USAGE

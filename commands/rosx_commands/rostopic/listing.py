@@ -1,6 +1,8 @@
 """``rostopic list``, ``info``, ``type`` and ``find``: what the master knows about topics."""
 
-from typing import Any
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
 from urllib.parse import urlparse
 
 from rosx.names.resolution import make_global_ns
@@ -8,6 +10,9 @@ from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.master import Master
+
+if TYPE_CHECKING:
+    from rosx.msg.store import TypeStore
 
 CALLER_ID = "/rostopic"
 
@@ -196,16 +201,19 @@ def topic_type(argv: list[str], env: Environment) -> int:
     return ExitStatus.OK
 
 
-def find_topic(name: str, types: dict[str, str]) -> tuple[str, str] | None:
+def find_topic(
+    name: str, types: dict[str, str], store: TypeStore | None = None
+) -> tuple[str, str] | None:
     """The topic ``name`` denotes, itself or the longest topic it is a field path of.
 
-    A topic whose type has no such field is skipped, as ROS 1 does.
+    A topic whose type has no such field (in ``store``: the standard types by default) is
+    skipped, as ROS 1 does.
     """
     if name in types:
         return name, types[name]
     from rosx.msg.store import TypeStore, UnknownTypeError  # noqa: PLC0415 - field paths only
 
-    store = TypeStore([])
+    store = TypeStore([]) if store is None else store
     for topic in sorted((t for t in types if name.startswith(t + "/")), reverse=True):
         path = name[len(topic) + 1 :].rstrip("/").split("[")[0]
         if not path:

@@ -1,0 +1,525 @@
+"""rosx rostopic echo / pub / hz / bw / delay on a rosx master and rosx nodes in this process."""
+
+from __future__ import annotations
+
+import re
+import signal
+import subprocess
+import sys
+import threading
+import time
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from rosx.master.server import MasterThread
+from rosx.msg.classes import get_message_class
+from rosx.node import Node
+from rosx.transport.client import XmlRpcClient
+from tests.support.cli import Result, clean_environ, rosx
+from tests.support.procs import free_port, wait_for
+
+String = get_message_class("std_msgs/String")
+Int32 = get_message_class("std_msgs/Int32")
+Twist = get_message_class("geometry_msgs/Twist")
+PointStamped = get_message_class("geometry_msgs/PointStamped")
+FloatArray = get_message_class("std_msgs/Float32MultiArray")
+Time = type(PointStamped().header.stamp)
+
+
+@pytest.fixture(scope="module")
+def master() -> Iterator[str]:
+    """A rosx master on a free port; yields its URI."""
+    with MasterThread(port=0, host="127.0.0.1", advertised_host="127.0.0.1") as thread:
+        yield thread.uri
+
+
+@pytest.fixture
+def env(master: str) -> dict[str, str]:
+    return clean_environ(ROS_MASTER_URI=master)
+
+
+@pytest.fixture
+def make_node(master: str) -> Iterator[Callable[[str], Node]]:
+    """Nodes on the test's master, all shut down after the test."""
+    nodes: list[Node] = []
+
+    def make(name: str) -> Node:
+        node = Node(name, master_uri=master, environ={}).start()
+        nodes.append(node)
+        return node
+
+    yield make
+    for node in nodes:
+        node.shutdown("test over")
+
+
+@pytest.fixture
+def stream(make_node: Callable[[str], Node]) -> Iterator[Callable[..., None]]:
+    """``stream(topic, msg, hz)``: publish ``msg`` on ``topic`` ``hz`` times a second."""
+    stop = threading.Event()
+    threads: list[threading.Thread] = []
+
+    def start(topic: str, msg: Any, hz: float = 20.0) -> None:
+        node = make_node(f"/streamer{len(threads)}")
+        publisher = node.advertise(topic, type(msg), queue_size=10)
+
+        def run() -> None:
+            while not stop.wait(1.0 / hz):
+                publisher.publish(msg)
+
+        thread = threading.Thread(target=run, daemon=True)
+        threads.append(thread)
+        thread.start()
+
+    yield start
+    stop.set()
+    for thread in threads:
+        thread.join()
+
+
+def tool_nodes(master: str) -> set[str]:
+    """The rostopic nodes the master knows of."""
+    pubs, subs, _ = XmlRpcClient(timeout=2).call(master, "getSystemState", "/test")[2]
+    names = {n for _, nodes in pubs + subs for n in nodes}
+    return {n for n in names if n.rpartition("/")[2].startswith("rostopic_")}
+
+
+def run_for(master: str, seconds: float, *argv: str, environ: dict[str, str]) -> Result:
+    """Run a tool that never ends by itself; shut its node down (``rosnode kill``) later."""
+    before = tool_nodes(master)
+
+    def kill() -> None:
+        client = XmlRpcClient(timeout=2)
+        wait_for(lambda: bool(tool_nodes(master) - before), what="the tool's node")
+        (name,) = tool_nodes(master) - before
+        uri = client.call(master, "lookupNode", "/test", name)[2]
+        time.sleep(seconds)
+        client.call(uri, "shutdown", "/test", "test over")
+
+    killer = threading.Thread(target=kill, daemon=True)
+    killer.start()
+    result = rosx(*argv, environ=environ)
+    killer.join()
+    return result
+
+
+def in_thread(*argv: str, environ: dict[str, str]) -> Callable[[], Result]:
+    """Start ``rosx ARGV`` on a thread; the returned function waits for its result."""
+    results: list[Result] = []
+    thread = threading.Thread(
+        target=lambda: results.append(rosx(*argv, environ=environ)), daemon=True
+    )
+    thread.start()
+
+    def result() -> Result:
+        thread.join(30)
+        return results[0]
+
+    return result
+
+
+TWIST_TEXT = (
+    "linear: \n  x: 1.5\n  y: 0.0\n  z: 0.0\nangular: \n  x: 0.0\n  y: 0.0\n  z: -0.5\n---\n"
+)
+STAMPED_TEXT = (
+    "header: \n  seq: 1\n  stamp: \n    secs: 1700000000\n    nsecs:      5000\n"
+    '  frame_id: "map"\npoint: \n  x: 0.1\n  y: 0.0\n  z: 0.0\n---\n'
+)
+
+
+def twist() -> Any:
+    msg = Twist()
+    msg.linear.x, msg.angular.z = 1.5, -0.5
+    return msg
+
+
+def stamped() -> Any:
+    msg = PointStamped()
+    msg.header.stamp = Time(1700000000, 5000)
+    msg.header.frame_id = "map"
+    msg.point.x = 0.1
+    return msg
+
+
+def latch(node: Node, topic: str, msg: Any) -> None:
+    node.advertise(topic, type(msg), queue_size=1, latch=True).publish(msg)
+
+
+# -- echo ----------------------------------------------------------------------------------
+
+
+def test_echo_prints_messages_as_ros1(
+    make_node: Callable[[str], Node], env: dict[str, str]
+) -> None:
+    node = make_node("/latcher")
+    latch(node, "/e/string", String('say "hi"'))
+    latch(node, "/e/twist", twist())
+    latch(node, "/e/stamped", stamped())
+    latch(node, "/e/array", FloatArray(data=[0.1, 2.5]))
+    cases = {
+        ("/e/string",): 'data: "say \\"hi\\""\n---\n',
+        ("/e/twist",): TWIST_TEXT,
+        ("/e/stamped",): STAMPED_TEXT,
+        ("/e/twist/linear",): "x: 1.5\ny: 0.0\nz: 0.0\n---\n",
+        ("/e/twist/angular/z",): "-0.5\n---\n",
+        ("/e/stamped/header/stamp",): "\nsecs: 1700000000\nnsecs:      5000\n---\n",
+        (
+            "/e/array",
+        ): "layout: \n  dim: []\n  data_offset: 0\ndata: [0.10000000149011612, 2.5]\n---\n",
+        ("/e/array/data[1:]",): "[2.5]\n---\n",
+        ("--noarr", "/e/array"): (
+            'layout: \n  dim: "<array type: std_msgs/MultiArrayDimension, length: 0>"\n'
+            '  data_offset: 0\ndata: "<array type: float32, length: 2>"\n---\n'
+        ),
+        ("--nostr", "/e/string"): 'data: "<string length: 8>"\n---\n',
+        ("-p", "/e/stamped"): (
+            "%time,field.header.seq,field.header.stamp,field.header.frame_id,"
+            "field.point.x,field.point.y,field.point.z\n"
+            "1700000000000005000,1,1700000000000005000,map,0.1,0.0,0.0\n"
+        ),
+        ("-p", "/e/array/data"): None,  # checked below: the time column is the receipt time
+        ("-c", "/e/string"): '\x1b[2J\x1b[;Hdata: "say \\"hi\\""\n---\n',
+        ("-w", "4", "/e/twist/linear"): "x: 1.50\ny: 0.00\nz: 0.00\n---\n",
+        ("--filter", "m.linear.x > 1", "/e/twist"): TWIST_TEXT,
+    }
+    for args, expected in cases.items():
+        result = rosx("rostopic", "echo", "-n", "1", *args, environ=env)
+        assert (result.status, result.err) == (0, ""), args
+        if expected is None:
+            assert re.fullmatch(
+                r"%time,field0,field1\n\d{19},0\.10000000149011612,2\.5\n", result.out
+            )
+        else:
+            assert result.out == expected, args
+    assert not tool_nodes(env["ROS_MASTER_URI"])  # each echo's node unregistered on exit
+
+
+def test_echo_count_and_stream(
+    stream: Callable[..., None], env: dict[str, str], master: str
+) -> None:
+    stream("/e/stream", twist())
+    result = rosx("rostopic", "echo", "-n", "3", "/e/stream", environ=env)
+    assert (result.status, result.out, result.err) == (0, TWIST_TEXT * 3, "")
+    result = rosx("rostopic", "echo", "-n", "2", "-p", "/e/stream/linear", environ=env)
+    lines = result.out.splitlines()
+    assert lines[0] == "%time,field.x,field.y,field.z"
+    assert all(re.fullmatch(r"\d{19},1\.5,0\.0,0\.0", line) for line in lines[1:])
+    assert len(lines) == 3
+
+
+def test_echo_waits_for_the_topic_and_resolves_relative_names(
+    make_node: Callable[[str], Node], master: str
+) -> None:
+    environ = clean_environ(ROS_MASTER_URI=master, ROS_NAMESPACE="/ns")
+    echo = in_thread("rostopic", "echo", "-n", "1", "chatter", environ=environ)
+    wait_for(lambda: bool(tool_nodes(master)), what="echo's node")
+    latch(make_node("/late_talker"), "/ns/chatter", String("late"))
+    result = echo()
+    assert result.status == 0
+    assert result.err == "WARNING: topic [/ns/chatter] does not appear to be published yet\n"
+    assert result.out == 'data: "late"\n---\n'
+
+
+def test_echo_filter_that_fails_is_reported_once(
+    stream: Callable[..., None], env: dict[str, str], master: str
+) -> None:
+    stream("/e/filtered", String("x"))
+    result = run_for(
+        master, 0.5, "rostopic", "echo", "--filter", "m.nope", "/e/filtered", environ=env
+    )
+    assert (result.status, result.out) == (0, "")
+    assert result.err == (
+        "ERROR: filter expression 'm.nope' failed: "
+        "AttributeError: 'String' object has no attribute 'nope'\n"
+    )
+
+
+def test_echo_bad_index_is_reported_per_message(
+    stream: Callable[..., None], env: dict[str, str], master: str
+) -> None:
+    stream("/e/short", FloatArray(data=[1.0]))
+    result = run_for(master, 0.5, "rostopic", "echo", "/e/short/data[3]", environ=env)
+    assert (result.status, result.out) == (0, "")
+    lines = result.err.splitlines()
+    assert lines and set(lines) == {"tuple index out of range: /data[3]"}
+
+
+# -- pub -----------------------------------------------------------------------------------
+
+
+def test_pub_then_echo_round_trip(env: dict[str, str], master: str) -> None:
+    echo = in_thread("rostopic", "echo", "-n", "1", "/p/round", environ=env)
+    wait_for(lambda: bool(tool_nodes(master)), what="echo's node")
+    result = rosx(
+        "rostopic", "pub", "-1", "/p/round", "geometry_msgs/Twist",
+        "{linear: {x: 1.5}, angular: {z: -0.5}}", environ=env,
+    )  # fmt: skip
+    assert (result.status, result.out, result.err) == (
+        0,
+        "publishing and latching message for 3.0 seconds\n",
+        "",
+    )
+    assert echo().out == TWIST_TEXT
+    assert not tool_nodes(master)
+
+
+def test_pub_once_leaves_when_the_subscriber_has_the_message(
+    make_node: Callable[[str], Node], env: dict[str, str]
+) -> None:
+    got: list[Any] = []
+    make_node("/once_listener").subscribe("/p/once", Int32, got.append)
+    result = rosx("rostopic", "pub", "-1", "/p/once", "std_msgs/Int32", "42", environ=env)
+    assert result.status == 0
+    wait_for(lambda: bool(got), what="the message")
+    assert [m.data for m in got] == [42]
+
+
+def test_pub_positional_dict_and_keywords(
+    make_node: Callable[[str], Node], env: dict[str, str]
+) -> None:
+    got: list[Any] = []
+    make_node("/kw_listener").subscribe("/p/kw", PointStamped, got.append)
+    before = time.time()
+    result = rosx(
+        "rostopic", "pub", "-1", "/p/kw", "geometry_msgs/PointStamped", "auto", "[1, 2, 3]",
+        environ=env,
+    )  # fmt: skip
+    assert result.status == 0, result.err
+    wait_for(lambda: bool(got), what="the message")
+    msg = got[0]
+    assert (msg.point.x, msg.point.y, msg.point.z) == (1.0, 2.0, 3.0)
+    assert msg.header.stamp.to_sec() >= int(before)
+
+
+def test_pub_from_stdin_and_file(
+    make_node: Callable[[str], Node], env: dict[str, str], tmp_path: Path
+) -> None:
+    got: list[str] = []
+    make_node("/doc_listener").subscribe("/p/docs", String, lambda m: got.append(m.data))
+    result = rosx(
+        "rostopic", "pub", "-r", "50", "/p/docs", "std_msgs/String",
+        stdin="data: one\n---\ndata: two\n---\ndata: dropped\n", environ=env,
+    )  # fmt: skip
+    assert result.status == 0, result.err
+    assert result.out == "publishing and latching message for 3.0 seconds\n" * 2
+    wait_for(lambda: got == ["one", "two"], what="both documents")
+    path = tmp_path / "msgs.yaml"
+    path.write_text("data: three\n---\ndata: four\n")
+    result = rosx(
+        "rostopic", "pub", "-r", "50", "-f", str(path), "/p/docs", "std_msgs/String", environ=env
+    )
+    assert result.status == 0, result.err
+    wait_for(lambda: got[2:] == ["three", "four"], what="the file's documents")
+
+
+def test_pub_latched_stays_until_killed(env: dict[str, str], master: str) -> None:
+    result = run_for(
+        master, 0.3, "rostopic", "pub", "/p/latched", "std_msgs/String", "hi", environ=env
+    )
+    assert (result.status, result.out, result.err) == (
+        0,
+        "publishing and latching message. Press ctrl-C to terminate\n",
+        "",
+    )
+
+
+@pytest.mark.parametrize(
+    ("argv", "status", "err"),
+    [
+        (["/p/x"], 2, "Usage: rostopic pub /topic type [args...]\n\nrostopic: error: topic type must be specified\n"),
+        (["-r", "2", "-1", "/p/x", "std_msgs/Int32", "1"], 2, "Usage: rostopic pub /topic type [args...]\n\nrostopic: error: You cannot select both -r and -1 (--once)\n"),
+        (["-r", "x", "/p/x", "std_msgs/Int32", "1"], 2, "Usage: rostopic pub /topic type [args...]\n\nrostopic: error: rate must be a number\n"),
+        (["/p/x", "foo"], 1, "ERROR: invalid topic type: foo\n"),
+        (["/p/x", "std_msgs/Nope"], 1, "ERROR: invalid topic type: std_msgs/Nope\n"),
+        (["/p/x", "nope_msgs/Nope"], 1, "ERROR: invalid message type: nope_msgs/Nope.\nIf this is a valid message type, perhaps you need to type 'rosmake nope_msgs'\n"),
+        (["/p/x", "geometry_msgs/Point", "{x:5}"], 1, "ERROR: No field name [x:5]: YAML needs a space after the colon, write {x: 5}\n\nArgs are: [x y z]\n"),
+        (["/p/x", "std_msgs/Int32", "1", "2"], 1, "ERROR: Too many arguments:\n * Given: [1, 2]\n * Expected: ['data']\n\nArgs are: [data]\n"),
+        (["/p/x", "std_msgs/Int32", "-f", "/nonexistent.yaml"], 1, "ERROR: file does not exist: /nonexistent.yaml\n"),
+    ],
+)  # fmt: skip
+def test_pub_errors(env: dict[str, str], argv: list[str], status: int, err: str) -> None:
+    result = rosx("rostopic", "pub", *argv, environ=env)
+    assert (result.status, result.out, result.err) == (status, "", err)
+
+
+def test_pub_value_of_the_wrong_type(env: dict[str, str]) -> None:
+    result = rosx("rostopic", "pub", "-1", "/p/wrong", "std_msgs/Int32", "hello", environ=env)
+    assert result.status == 1
+    assert result.err == (
+        "ERROR: Unable to publish message. One of the fields has an incorrect type:\n"
+        "  field data must be an integer type\n\nmsg file:\nint32 data\n\n"
+    )
+
+
+def test_pub_bad_yaml_is_a_usage_error(env: dict[str, str]) -> None:
+    result = rosx("rostopic", "pub", "/p/x", "std_msgs/Int32", "{a", environ=env)
+    assert result.status == 2
+    assert result.err.startswith(
+        "Usage: rostopic pub /topic type [args...]\n\nrostopic: error: Argument error: "
+        "while parsing a flow mapping\n"
+    )
+
+
+# -- hz, bw, delay -------------------------------------------------------------------------
+
+
+def test_hz_reports_every_second(
+    stream: Callable[..., None], env: dict[str, str], master: str
+) -> None:
+    stream("/r/hz", Int32(1), hz=20)
+    result = run_for(master, 2.3, "rostopic", "hz", "/r/hz", environ=env)
+    assert result.status == 0, result.err
+    lines = result.out.splitlines()
+    assert lines[0] == "subscribed to [/r/hz]"
+    reports = lines[1:]
+    assert len(reports) >= 2 and len(reports) % 2 == 0
+    for rate_line, detail in zip(reports[::2], reports[1::2], strict=True):
+        match = re.fullmatch(r"average rate: (\d+\.\d{3})", rate_line)
+        assert match and 5 < float(match[1]) < 40
+        assert re.fullmatch(
+            r"\tmin: \d+\.\d{3}s max: \d+\.\d{3}s std dev: \d+\.\d{5}s window: \d+", detail
+        )
+
+
+def test_hz_of_several_topics_prints_a_table(
+    stream: Callable[..., None], env: dict[str, str], master: str
+) -> None:
+    stream("/r/a", Int32(1), hz=20)
+    stream("/r/bb", String("x"), hz=10)
+    result = run_for(master, 2.3, "rostopic", "hz", "/r/a", "/r/bb", environ=env)
+    assert result.status == 0, result.err
+    lines = result.out.splitlines()
+    assert lines[:2] == ["subscribed to [/r/a]", "subscribed to [/r/bb]"]
+    header = lines[2]
+    assert re.fullmatch(r"topic +rate +min_delta +max_delta +std_dev +window", header)
+    assert lines[3] == "=" * len(header)
+    assert re.match(r"/r/a +\d", lines[4]) and re.match(r"/r/bb +\d", lines[5])
+    assert lines[6] == ""
+
+
+def test_hz_with_a_filter_counts_matching_messages(
+    stream: Callable[..., None], env: dict[str, str], master: str
+) -> None:
+    stream("/r/filtered", Int32(7), hz=20)
+    stream("/r/matching", Int32(8), hz=20)
+    for topic, matching in (("/r/filtered", False), ("/r/matching", True)):
+        result = run_for(
+            master, 2.3, "rostopic", "hz", "--filter", "m.data == 8", topic, environ=env
+        )
+        lines = result.out.splitlines()
+        assert (result.status, lines[0]) == (0, f"subscribed to [{topic}]")
+        assert lines[1:]
+        if matching:
+            assert lines[1].startswith("average rate: ")
+        else:
+            assert set(lines[1:]) == {"no new messages"}
+
+
+def test_bw_reports_sizes(stream: Callable[..., None], env: dict[str, str], master: str) -> None:
+    stream("/r/bw", stamped(), hz=20)
+    result = run_for(master, 2.3, "rostopic", "bw", "/r/bw", environ=env)
+    lines = result.out.splitlines()
+    assert result.status == 0 and lines[0] == "subscribed to [/r/bw]"
+    assert len(lines) >= 3
+    for rate_line, detail in zip(lines[1::2], lines[2::2], strict=False):
+        match = re.fullmatch(r"average: (\d+\.\d\d)B/s", rate_line)
+        assert match and 200 < float(match[1]) < 2000  # 43 bytes, about 20 times a second
+        assert re.fullmatch(r"\tmean: 43\.00B min: 43\.00B max: 43\.00B window: \d+", detail)
+
+
+def test_delay_reports_header_delays(
+    stream: Callable[..., None], env: dict[str, str], master: str, make_node: Callable[[str], Node]
+) -> None:
+    node = make_node("/stamper")
+    publisher = node.advertise("/r/delay", PointStamped, queue_size=10)
+    stop = threading.Event()
+
+    def run() -> None:
+        while not stop.wait(0.05):
+            msg = PointStamped()
+            msg.header.stamp = Time.from_sec(time.time() - 0.25)
+            publisher.publish(msg)
+
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    try:
+        result = run_for(master, 2.3, "rostopic", "delay", "/r/delay", environ=env)
+    finally:
+        stop.set()
+        thread.join()
+    lines = result.out.splitlines()
+    assert result.status == 0 and lines[0] == "subscribed to [/r/delay]"
+    match = re.fullmatch(r"average delay: (\d+\.\d{3})", lines[1])
+    assert match and 0.2 <= float(match[1]) < 1.0
+    assert re.fullmatch(
+        r"\tmin: \d+\.\d{3}s max: \d+\.\d{3}s std dev: \d+\.\d{5}s window: \d+", lines[2]
+    )
+
+
+# -- errors and ending ---------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["echo", "/x"],
+        ["pub", "/x", "std_msgs/String", "hi"],
+        ["hz", "/x"],
+        ["bw", "/x"],
+        ["delay", "/x"],
+    ],
+)
+def test_master_down_is_ros1_error(argv: list[str]) -> None:
+    result = rosx(
+        "rostopic", *argv, environ=clean_environ(ROS_MASTER_URI=f"http://localhost:{free_port()}")
+    )
+    assert result.status == 1
+    assert result.err.startswith("ERROR: Unable to communicate with master!\n")
+    assert "Traceback" not in result.err
+
+
+@pytest.mark.parametrize(
+    ("argv", "err"),
+    [
+        (["echo"], "Usage: rostopic echo [options] /topic\n\nrostopic: error: topic must be specified\n"),
+        (["echo", "-w", "1", "/x"], "Usage: rostopic echo [options] /topic\n\nrostopic: error: Fixed width for numeric values must be at least 2\n"),
+        (["echo", "-n", "x", "/x"], "Usage: rostopic echo [options] /topic\n\nrostopic: error: COUNT must be an integer\n"),
+        (["echo", "/x", "/y"], "Usage: rostopic echo [options] /topic\n\nrostopic: error: you may only specify one input topic\n"),
+        (["hz"], "Usage: rostopic hz [options] /topic_0 [/topic_1 [topic_2 [..]]]\n\nrostopic: error: topic must be specified\n"),
+        (["hz", "-w", "x", "/x"], "Usage: rostopic hz [options] /topic_0 [/topic_1 [topic_2 [..]]]\n\nrostopic: error: window size must be an integer\n"),
+        (["bw", "/x", "/y"], "Usage: rostopic bw /topic\n\nrostopic: error: you may only specify one input topic\n"),
+        (["delay"], "usage: rostopic delay [options] /topic\nrostopic: error: the following arguments are required: topic\n"),
+    ],
+)  # fmt: skip
+def test_usage_errors(env: dict[str, str], argv: list[str], err: str) -> None:
+    result = rosx("rostopic", *argv, environ=env)
+    assert (result.status, result.out, result.err) == (2, "", err)
+
+
+def test_echo_from_a_bag_is_not_supported(env: dict[str, str]) -> None:
+    result = rosx("rostopic", "echo", "-b", "x.bag", "/x", environ=env)
+    assert (result.status, result.err) == (1, "ERROR: rosx does not read .bag files\n")
+
+
+def test_ctrl_c_exits_quietly_and_unregisters(master: str) -> None:
+    process = subprocess.Popen(
+        [sys.executable, "-c", "from rosx_commands.main import run; run()", "rostopic", "echo", "/c/never"],
+        env=clean_environ(ROS_MASTER_URI=master),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )  # fmt: skip
+    try:
+        wait_for(lambda: bool(tool_nodes(master)), what="echo's node")
+        process.send_signal(signal.SIGINT)
+        out, err = process.communicate(timeout=15)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert process.returncode == 0
+    assert (out, err) == ("", "WARNING: topic [/c/never] does not appear to be published yet\n")
+    assert not tool_nodes(master)
