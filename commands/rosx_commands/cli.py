@@ -45,6 +45,20 @@ class ToolParser(optparse.OptionParser):
         return self.parse_args(argv)
 
 
+def commands_overview(
+    tool: str,
+    commands: list[tuple[str, str]],
+    *,
+    intro: str | None = None,
+    footer: str | None = None,
+) -> str:
+    """What a ROS 1 tool prints without a (known) sub-command: intro, ``Commands:``, footer."""
+    lines = [intro, ""] if intro else []
+    lines += ["Commands:", *(f"\t{tool} {name}\t{text}" for name, text in commands)]
+    lines += ["", footer, ""] if footer else [""]
+    return "\n".join(lines)
+
+
 def run_command(command: object, argv: list[str], env: Environment) -> int:
     """Run one sub-command function ``command(argv, env) -> status`` with error mapping."""
     try:

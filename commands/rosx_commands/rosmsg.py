@@ -7,7 +7,7 @@ from collections.abc import Callable, Sequence
 from rosx.msg.describe import describe_msg, describe_srv
 from rosx.msg.parser import InvalidMsgSpecError
 from rosx.msg.store import TypeStore, UnknownTypeError
-from rosx_commands.cli import ToolParser, run_command
+from rosx_commands.cli import ToolParser, commands_overview, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
 
 _COMMANDS = {
@@ -33,14 +33,13 @@ _WHAT = {"msg": "Message", "srv": "Service"}
 
 def _overview(kind: str) -> str:
     tool = "ros" + kind
-    lines = [
-        f"{tool} is a command-line tool for displaying information about ROS {_WHAT[kind]} types.",
-        "",
-        "Commands:",
-    ]
-    lines += [f"\t{tool} {name}\t{text}" for name, text in _COMMANDS[kind]]
-    lines += ["", f"Type {tool} <command> -h for more detailed usage", ""]
-    return "\n".join(lines)
+    return commands_overview(
+        tool,
+        _COMMANDS[kind],
+        intro=f"{tool} is a command-line tool for displaying information about ROS"
+        f" {_WHAT[kind]} types.",
+        footer=f"Type {tool} <command> -h for more detailed usage",
+    )
 
 
 class _Tool:

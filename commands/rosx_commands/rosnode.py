@@ -11,7 +11,7 @@ from urllib.parse import urlparse
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx.transport.errors import CallTimeoutError, ConnectError, FaultError, TransportError
-from rosx_commands.cli import ToolParser, run_command
+from rosx_commands.cli import ToolParser, commands_overview, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.master import Master
 
@@ -30,14 +30,12 @@ COMMANDS = [
 
 
 def overview() -> str:
-    lines = [
-        "rosnode is a command-line tool for printing information about ROS Nodes.",
-        "",
-        "Commands:",
-    ]
-    lines += [f"\trosnode {name}\t{text}" for name, text in COMMANDS]
-    lines += ["", "Type rosnode <command> -h for more detailed usage, e.g. 'rosnode ping -h'", ""]
-    return "\n".join(lines)
+    return commands_overview(
+        "rosnode",
+        COMMANDS,
+        intro="rosnode is a command-line tool for printing information about ROS Nodes.",
+        footer="Type rosnode <command> -h for more detailed usage, e.g. 'rosnode ping -h'",
+    )
 
 
 def _resolve(env: Environment, name: str) -> str:

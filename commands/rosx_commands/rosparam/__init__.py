@@ -2,7 +2,7 @@
 
 from collections.abc import Callable, Sequence
 
-from rosx_commands.cli import run_command
+from rosx_commands.cli import commands_overview, run_command
 from rosx_commands.context import Environment, ExitStatus
 from rosx_commands.rosparam import reading, writing
 
@@ -18,15 +18,12 @@ COMMANDS = [
 
 def overview() -> str:
     """What ROS 1's rosparam prints without a (known) sub-command."""
-    lines = [
-        "rosparam is a command-line tool for getting, setting, and deleting parameters from the"
-        " ROS Parameter Server.",
-        "",
-        "Commands:",
-    ]
-    lines += [f"\trosparam {name}\t{text}" for name, text in COMMANDS]
-    lines.append("")
-    return "\n".join(lines)
+    return commands_overview(
+        "rosparam",
+        COMMANDS,
+        intro="rosparam is a command-line tool for getting, setting, and deleting parameters"
+        " from the ROS Parameter Server.",
+    )
 
 
 def rosparam(argv: Sequence[str], env: Environment) -> int:

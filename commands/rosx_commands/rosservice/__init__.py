@@ -3,7 +3,7 @@
 from collections.abc import Callable, Sequence
 
 from rosx.names.remap_args import strip_remap_args
-from rosx_commands.cli import run_command
+from rosx_commands.cli import commands_overview, run_command
 from rosx_commands.context import Environment, ExitStatus
 from rosx_commands.rosservice import query
 from rosx_commands.rosservice.call import call_command
@@ -21,14 +21,11 @@ COMMANDS = [
 
 def overview() -> str:
     """What ROS 1's rosservice prints without a (known) sub-command."""
-    lines = ["Commands:"]
-    lines += [f"\trosservice {name}\t{text}" for name, text in COMMANDS]
-    lines += [
-        "",
-        "Type rosservice <command> -h for more detailed usage, e.g. 'rosservice call -h'",
-        "",
-    ]
-    return "\n".join(lines)
+    return commands_overview(
+        "rosservice",
+        COMMANDS,
+        footer="Type rosservice <command> -h for more detailed usage, e.g. 'rosservice call -h'",
+    )
 
 
 def rosservice(argv: Sequence[str], env: Environment) -> int:

@@ -8,7 +8,7 @@ import importlib
 from collections.abc import Callable, Sequence
 
 from rosx.names.remap_args import strip_remap_args
-from rosx_commands.cli import run_command
+from rosx_commands.cli import commands_overview, run_command
 from rosx_commands.context import Environment, ExitStatus
 from rosx_commands.rostopic import listing
 
@@ -26,14 +26,12 @@ COMMANDS = [
 
 
 def overview() -> str:
-    lines = [
-        "rostopic is a command-line tool for printing information about ROS Topics.",
-        "",
-        "Commands:",
-    ]
-    lines += [f"\trostopic {name}\t{text}" for name, text in COMMANDS]
-    lines += ["", "Type rostopic <command> -h for more detailed usage, e.g. 'rostopic echo -h'", ""]
-    return "\n".join(lines)
+    return commands_overview(
+        "rostopic",
+        COMMANDS,
+        intro="rostopic is a command-line tool for printing information about ROS Topics.",
+        footer="Type rostopic <command> -h for more detailed usage, e.g. 'rostopic echo -h'",
+    )
 
 
 #: The streaming sub-commands, imported only when used (they load the node runtime).
