@@ -42,7 +42,7 @@ def main() -> int:
     parser.add_argument("--runs", type=int, default=15)
     runs = parser.parse_args().runs
     if not ros1_available():
-        print("ROS 1 reference not installed: eval \"$(../shared/tools/ros1-reference)\"")
+        print('ROS 1 reference not installed: eval "$(../shared/tools/ros1-reference)"')
         return 1
     rosx = shutil.which("rosx") or str(Path(sys.executable).parent / "rosx")
     port = free_port()

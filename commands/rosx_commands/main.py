@@ -24,6 +24,23 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rosservice": ("rosx_commands.rosservice:rosservice", "List, inspect and call ROS services."),
     "rosparam": ("rosx_commands.rosparam:rosparam", "Get and set ROS parameters."),
     "sim": ("rosx_commands.sim:sim", "Run a master, turtlesim and teleop in one terminal UI."),
+    "catkin_create_pkg": (
+        "rosx_commands.catkin_create_pkg:catkin_create_pkg",
+        "Create a new catkin package.",
+    ),
+    "catkin_make": ("rosx_commands.catkin_make:catkin_make", "Build a catkin workspace."),
+    "rospack": ("rosx_commands.rospack:rospack", "Find ROS packages and their dependencies."),
+    "rosrun": ("rosx_commands.rosrun:rosrun", "Run an executable of a ROS package."),
+    "roscd": ("rosx_commands.roscd:roscd", "Where roscd goes (roscd itself is a shell function)."),
+    "rosls": ("rosx_commands.roscd:rosls", "List a package's directory."),
+    "shell-init": (
+        "rosx_commands.shell_init:shell_init",
+        "Print shell functions: ROS 1's command names, roscd, rosls.",
+    ),
+    "run-script": (
+        "rosx_commands.run_script:run_script",
+        "Run a Python script with rosx's rospy and message modules.",
+    ),
 }
 
 

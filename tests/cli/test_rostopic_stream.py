@@ -523,5 +523,8 @@ def test_ctrl_c_exits_quietly_and_unregisters(master: str) -> None:
             process.kill()
             process.wait()
     assert process.returncode == 0
-    assert (out, warning + err) == ("", "WARNING: topic [/c/never] does not appear to be published yet\n")
+    assert (out, warning + err) == (
+        "",
+        "WARNING: topic [/c/never] does not appear to be published yet\n",
+    )
     assert not tool_nodes(master)

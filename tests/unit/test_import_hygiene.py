@@ -62,3 +62,32 @@ def test_service_and_param_tools_do_not_pay_for_typer(argv: list[str]) -> None:
     )
     assert not {m for m in loaded if m.split(".")[0] in ("typer", "pydantic", "rich", *HEAVY)}
     assert "dataclasses" not in loaded and "textual" not in loaded
+
+
+def test_client_and_workspace_layers_import_nothing_heavy_or_higher() -> None:
+    loaded = _modules_after(
+        "import rosx.client, rosx.client.script, rosx.client.modules\n"
+        "import rosx.workspace.build, rosx.workspace.index, rosx.workspace.create"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in HEAVY}
+    assert not {m for m in loaded if m.startswith(("rosx_commands", "rosx_turtle"))}
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["rosrun", "nopkg", "x"],
+        ["rospack", "find", "x"],
+        ["catkin_create_pkg", "--help"],
+        ["catkin_make", "-C", "/nonexistent"],
+        ["roscd", "--where", "x"],
+        ["shell-init", "bash"],
+    ],
+)
+def test_workspace_tools_do_not_pay_for_typer(argv: list[str]) -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        f"run_tool({argv!r}, Environment(stdout=io.StringIO(), stderr=io.StringIO(), environ={{}}))"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in ("typer", "pydantic", "rich", *HEAVY)}
+    assert "dataclasses" not in loaded and "textual" not in loaded

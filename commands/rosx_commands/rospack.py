@@ -1,0 +1,134 @@
+"""``rosx rospack``: find packages and their dependencies, with rospack's output and errors.
+
+ROS 1's rospack is a C++ program with its own argument handling; this follows its texts:
+``[rospack] Error: package 'x' not found`` (find), ``[rospack] Error: no such package x``
+(the dependency commands), ``[rospack] Error: no command given.  Try 'rospack help'``, status 1
+for errors. A command given no package uses the package in the current directory. ``-q``
+quiets the error reports.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+from rosx_commands.context import Environment, ExitStatus
+
+if TYPE_CHECKING:
+    from rosx.workspace.index import PackageIndex
+
+USAGE = """\
+USAGE: rospack <command> [options] [package]
+  Allowed commands:
+    help
+    depends           [package] (alias: deps)
+    depends-on        [package]
+    depends-on1       [package]
+    depends1          [package] (alias: deps1)
+    find [package]
+    list
+    list-names
+  Extra options:
+    -q     Quiets error reports.
+
+ If [package] is omitted, the current working directory
+ is used (if it contains a package.xml or manifest.xml).
+"""
+
+_PACKAGE_COMMANDS = {
+    "find",
+    "depends",
+    "deps",
+    "depends1",
+    "deps1",
+    "depends-on",
+    "depends-on1",
+}
+_LIST_COMMANDS = {"list", "list-names", "help"}
+
+
+class _Failed(Exception):  # noqa: N818 - a report, worded by rospack
+    """rospack's error: the text after ``[rospack] Error: ``."""
+
+
+def _package_here(env: Environment) -> str | None:
+    from rosx.workspace.manifest import ManifestError, read_manifest  # noqa: PLC0415
+    from rosx_commands.invocation import working_directory  # noqa: PLC0415
+
+    here = working_directory(env)
+    try:
+        return read_manifest(here).name if (here / "package.xml").is_file() else None
+    except ManifestError:
+        return None
+
+
+def _answer(command: str, package: str, index: PackageIndex) -> list[str]:
+    from rosx.workspace.index import PackageNotFoundError  # noqa: PLC0415
+    from rosx.workspace.manifest import ManifestError  # noqa: PLC0415
+
+    if command == "find":
+        try:
+            return [str(index.find(package))]
+        except PackageNotFoundError:
+            raise _Failed(f"package '{package}' not found") from None
+    if not index.is_known(package):
+        raise _Failed(f"no such package {package}")
+    try:
+        if command in ("depends1", "deps1"):
+            return index.depends1(package)
+        if command in ("depends", "deps"):
+            return index.depends(package)
+        if command == "depends-on1":
+            return index.depends_on1(package)
+        return [name for name in index.packages if package in index.depends(name)]
+    except ManifestError as error:
+        raise _Failed(str(error)) from None
+
+
+def rospack(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rospack ARGV…``."""
+    args = list(argv)
+    quiet = "-q" in args
+    args = [a for a in args if a != "-q"]
+
+    def fail(text: str) -> int:
+        if not quiet:
+            env.err(f"[rospack] Error: {text}")
+        return ExitStatus.ERROR
+
+    if not args or args[0].startswith("-"):
+        fail("no command given.  Try 'rospack help'")
+        return ExitStatus.OK  # as rospack's own status for it
+    command, rest = args[0], args[1:]
+    if command not in _PACKAGE_COMMANDS | _LIST_COMMANDS:
+        return fail(f"command {command} not implemented")
+    if any(a.startswith("-") for a in rest):
+        return fail("invalid option(s) given")
+    if len(rest) > 1:
+        return fail(
+            "failed to parse command-line options: too many positional options have been "
+            "specified on the command line"
+        )
+    if command == "help":
+        env.stdout.write(USAGE)
+        return ExitStatus.OK
+
+    from rosx.workspace.index import PackageIndex  # noqa: PLC0415
+
+    index = PackageIndex.from_environ(env.environ)
+    if command in _LIST_COMMANDS:
+        if rest:
+            return fail("invalid option(s) given")
+        for name, directory in index.packages.items():
+            env.out(name if command == "list-names" else f"{name} {directory}")
+        return ExitStatus.OK
+    package = rest[0] if rest else _package_here(env)
+    if package is None:
+        return fail("no package given")
+    try:
+        lines = _answer(command, package, index)
+    except _Failed as error:
+        return fail(str(error))
+    for line in lines:
+        env.out(line)
+    return ExitStatus.OK

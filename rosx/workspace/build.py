@@ -1,0 +1,296 @@
+"""``catkin_make`` for rosx: find a workspace's packages, build their types, write ``devel/``.
+
+A workspace is a directory with ``src/`` (the source space); ``build/`` and ``devel/`` are
+made next to it. There is nothing to compile: building a package means checking its manifest
+as catkin does and loading each of its ``msg/*.msg`` and ``srv/*.srv`` types the way a node
+will (parsed, embedded types found, md5 sums computed, classes built), so a mistake is reported
+now, naming the file and the line, rather than when a script imports the type. ``devel/``
+receives ``setup.sh``, ``setup.bash`` and ``setup.zsh``, which put the source space on
+``ROS_PACKAGE_PATH`` (where rosx finds packages and their types), rosx's ``rospy`` on
+``PYTHONPATH`` and define ``roscd``/``rosls``, and ``.catkin``, which marks ``devel/`` as a
+workspace (``roscd`` with no argument goes there).
+
+`CatkinMake.run` yields the lines catkin_make prints while it works, in its style
+(``-- +++ processing catkin package: 'lab2'``, ``[100%] Built target …``), and raises
+`BuildError` with the report of what is wrong.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import TYPE_CHECKING, NamedTuple
+
+from rosx.workspace.errors import BuildError
+from rosx.workspace.manifest import Manifest, ManifestError, check_manifest, read_manifest
+from rosx.workspace.shell import setup_for_shell, setup_sh
+
+if TYPE_CHECKING:
+    from collections.abc import Iterator, Mapping
+
+    from rosx.workspace.types import PackageTypes
+
+_RULE = "-- ~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~"
+
+
+class Layout(NamedTuple):
+    """A workspace's spaces."""
+
+    base: Path
+    source: Path
+    build: Path
+    devel: Path
+    install: Path
+
+
+def _space(cwd: Path, base: Path, given: str | None, default: str) -> Path:
+    if given is None:
+        return base / default
+    return Path(os.path.normpath(cwd / given))
+
+
+def workspace_layout(
+    cwd: Path, directory: str = ".", source: str | None = None, build: str | None = None
+) -> Layout:
+    """The spaces of the workspace at ``directory`` (relative to ``cwd``)."""
+    base = Path(os.path.normpath(cwd / directory))
+    return Layout(
+        base,
+        _space(cwd, base, source, "src"),
+        _space(cwd, base, build, "build"),
+        base / "devel",
+        base / "install",
+    )
+
+
+def _crawl(directory: Path, found: list[Path]) -> None:
+    if (directory / "package.xml").is_file():
+        found.append(directory)
+        return
+    try:
+        entries = sorted(os.scandir(directory), key=lambda e: e.name)
+    except OSError:
+        return
+    names = {e.name for e in entries}
+    if "CATKIN_IGNORE" in names:
+        return
+    for entry in entries:
+        if not entry.name.startswith(".") and entry.is_dir():
+            _crawl(Path(entry.path), found)
+
+
+def discover(source: Path) -> tuple[list[Manifest], list[str]]:
+    """The workspace's packages and catkin's warnings about them.
+
+    Raises:
+        BuildError: a manifest is invalid, or two packages have the same name.
+    """
+    directories: list[Path] = []
+    _crawl(source, directories)
+    manifests: list[Manifest] = []
+    warnings: list[str] = []
+    for directory in directories:
+        try:
+            manifest = read_manifest(directory)
+            warnings += [f"WARNING: {w}" for w in check_manifest(manifest)]
+        except ManifestError as error:
+            raise BuildError(str(error)) from None
+        manifests.append(manifest)
+    by_name: dict[str, list[Path]] = {}
+    for manifest in manifests:
+        by_name.setdefault(manifest.name, []).append(manifest.directory)
+    for name, places in by_name.items():
+        if len(places) > 1:
+            listing = "".join(f"\n- {place}" for place in places)
+            raise BuildError(f'Multiple packages found with the same name "{name}":{listing}')
+    return manifests, warnings
+
+
+def _needs(manifest: Manifest, workspace: Mapping[str, Manifest]) -> set[str]:
+    """The packages of ``workspace`` that ``manifest``'s package depends on."""
+    deps = (*manifest.build_depends(), *manifest.run_depends())
+    return {dep for dep in deps if dep in workspace and dep != manifest.name}
+
+
+def topological_order(manifests: list[Manifest]) -> list[Manifest]:
+    """Packages ordered so that each comes after the workspace packages it depends on.
+
+    Raises:
+        BuildError: packages depend on each other in a circle.
+    """
+    by_name = {m.name: m for m in sorted(manifests, key=lambda m: m.name)}
+    needs = {name: _needs(m, by_name) for name, m in by_name.items()}
+    ordered: list[Manifest] = []
+    while needs:
+        ready = sorted(name for name, deps in needs.items() if not deps)
+        if not ready:
+            listing = "".join(f"\n- {name}" for name in sorted(needs))
+            raise BuildError(f"Circular dependency in subset of packages:{listing}")
+        name = ready[0]
+        ordered.append(by_name[name])
+        del needs[name]
+        for deps in needs.values():
+            deps.discard(name)
+    return ordered
+
+
+class CatkinMake:
+    """One ``catkin_make`` run over a workspace (see the module docstring)."""
+
+    def __init__(
+        self,
+        layout: Layout,
+        environ: Mapping[str, str],
+        *,
+        shim_dir: Path,
+        rosx: str,
+        only: list[str] | None = None,
+    ) -> None:
+        self.layout = layout
+        self.environ = environ
+        self.shim_dir = shim_dir
+        self.rosx = rosx
+        self.only = only
+        self.warnings: list[str] = []
+
+    def check_layout(self) -> None:
+        """catkin_make's checks of where it was run.
+
+        Raises:
+            BuildError: not at a workspace's root.
+        """
+        base, source = self.layout.base, self.layout.source
+        if not base.exists():
+            raise BuildError(f'The specified base path "{base}" does not exist')
+        if (base / "package.xml").exists():
+            raise BuildError(
+                f'The specified base path "{base}" contains a package but "catkin_make" must be '
+                "invoked in the root of workspace"
+            )
+        if not source.exists():
+            raise BuildError(f'The specified source space "{source}" does not exist')
+        if base.resolve() != source.resolve() and (base / "CMakeLists.txt").exists():
+            raise BuildError(
+                f'The specified base path "{base}" contains a CMakeLists.txt but "catkin_make" '
+                "must be invoked in the root of workspace"
+            )
+
+    def header(self) -> list[str]:
+        """The lines naming the spaces, printed first."""
+        layout = self.layout
+        return [
+            f"Base path: {layout.base}",
+            f"Source space: {layout.source}",
+            f"Build space: {layout.build}",
+            f"Devel space: {layout.devel}",
+            f"Install space: {layout.install}",
+        ]
+
+    def _package_path(self) -> list[Path]:
+        entries = self.environ.get("ROS_PACKAGE_PATH", "").split(os.pathsep)
+        return [self.layout.source, *[Path(e) for e in entries if e]]
+
+    def run(self) -> Iterator[str]:
+        """Build the workspace, yielding what catkin_make prints as it goes.
+
+        Raises:
+            BuildError: a manifest or a type is wrong (nothing is written to ``devel/`` then).
+        """
+        layout = self.layout
+        manifests, self.warnings = discover(layout.source)
+        if self.only:
+            manifests = _with_dependencies(manifests, self.only)
+            yield f"Whitelisted packages: {', '.join(sorted(m.name for m in manifests))}"
+        ordered = topological_order(manifests)
+        layout.build.mkdir(parents=True, exist_ok=True)
+        yield f"-- Using CATKIN_DEVEL_PREFIX: {layout.devel}"
+        yield _RULE
+        yield f"-- ~~  traversing {len(ordered)} packages in topological order:"
+        for manifest in ordered:
+            yield f"-- ~~  - {manifest.name}"
+        yield _RULE
+        built: list[PackageTypes] = []
+        for manifest in ordered:
+            yield f"-- +++ processing catkin package: '{manifest.name}'"
+            yield f"-- ==> add_subdirectory({manifest.directory.relative_to(layout.source)})"
+            if not any((manifest.directory / kind).is_dir() for kind in ("msg", "srv")):
+                continue
+            # The message system loads only for packages that have types.
+            from rosx.workspace.types import build_types  # noqa: PLC0415
+
+            types = build_types(manifest, self._package_path())
+            yield (
+                f"-- {manifest.name}: {len(types.messages)} messages, "
+                f"{len(types.services)} services"
+            )
+            built.append(types)
+        yield "-- Configuring done"
+        yield "-- Generating done"
+        yield f"-- Build files have been written to: {layout.build}"
+        self._write(built)
+        yield from _progress(built)
+
+    def _write(self, built: list[PackageTypes]) -> None:
+        layout = self.layout
+        (layout.build / "CATKIN_IGNORE").touch()
+        (layout.build / ".built_by").write_text("catkin_make", encoding="utf-8")
+        summary = "".join(f"{name}\n" for types in built for name in types.all_names())
+        (layout.build / "rosx_types.txt").write_text(summary, encoding="utf-8")
+        devel = layout.devel
+        devel.mkdir(parents=True, exist_ok=True)
+        (devel / ".catkin").write_text(str(layout.source), encoding="utf-8")
+        (devel / ".built_by").write_text("catkin_make", encoding="utf-8")
+        (devel / "setup.sh").write_text(
+            setup_sh(
+                source=str(layout.source),
+                devel=str(devel),
+                shim=str(self.shim_dir),
+                rosx=self.rosx,
+            ),
+            encoding="utf-8",
+        )
+        for shell in ("bash", "zsh"):
+            text = setup_for_shell(shell, str(devel), self.rosx)
+            (devel / f"setup.{shell}").write_text(text, encoding="utf-8")
+
+
+def _with_dependencies(manifests: list[Manifest], names: list[str]) -> list[Manifest]:
+    """``names`` and the workspace packages they depend on, recursively.
+
+    Raises:
+        BuildError: none of ``names`` is in the workspace.
+    """
+    by_name = {m.name: m for m in manifests}
+    if not any(name in by_name for name in names):
+        raise BuildError(f'Packages "{", ".join(names)}" not found in the workspace')
+    wanted: set[str] = set()
+    todo = [name for name in names if name in by_name]
+    while todo:
+        name = todo.pop()
+        if name not in wanted:
+            wanted.add(name)
+            todo += _needs(by_name[name], by_name)
+    return [m for m in manifests if m.name in wanted]
+
+
+def _progress(built: list[PackageTypes]) -> Iterator[str]:
+    steps = [(types.package, kind, name) for types in built for kind, name in types.steps()]
+    for index, (_, kind, name) in enumerate(steps, start=1):
+        percent = index * 100 // len(steps)
+        if kind == "msg":
+            yield f"[{percent:3d}%] Generating Python from MSG {name}"
+        else:
+            yield f"[{percent:3d}%] Generating Python code from SRV {name}"
+    for types in built:
+        if types.messages or types.services:
+            yield f"[100%] Built target {types.package}_generate_messages_py"
+
+
+__all__ = [
+    "BuildError",
+    "CatkinMake",
+    "Layout",
+    "discover",
+    "topological_order",
+    "workspace_layout",
+]

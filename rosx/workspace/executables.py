@@ -1,0 +1,81 @@
+"""How ``rosrun`` finds a package's executable, and how it is to be started.
+
+ROS 1's rosrun searches the whole package directory (following symbolic links, skipping
+``build/``) for regular files of the given name with any execute bit set; a name containing
+``/`` is taken as a path inside the package instead. `find_executables` does the same, and
+also lists the same-named files that are not executable, which rosrun reports.
+
+`is_python_script` tells the scripts rosx runs with its own Python and ``rospy``, whatever their
+``#!`` line says: a ``#!`` line naming python, or no ``#!`` line and a ``.py`` name.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import NamedTuple
+
+_EXECUTE_BITS = 0o111
+
+
+class Search(NamedTuple):
+    """What a search found: executables, and same-named files rosrun cannot run."""
+
+    executables: list[Path]
+    not_executable: list[Path]
+
+
+def _walk(root: Path) -> list[Path]:
+    found: list[Path] = []
+    seen: set[tuple[int, int]] = set()
+    for directory, subdirs, files in os.walk(root, followlinks=True):
+        stat = Path(directory).stat()
+        key = (stat.st_dev, stat.st_ino)
+        if key in seen:  # a link loop
+            subdirs[:] = []
+            continue
+        seen.add(key)
+        here = Path(directory)
+        if here == root:
+            subdirs[:] = [d for d in subdirs if d != "build"]
+        subdirs.sort()
+        found += [here / name for name in sorted(files)]
+        found += [here / name for name in subdirs if (here / name).is_symlink()]
+    return found
+
+
+def _runnable(path: Path) -> bool:
+    try:
+        return path.is_file() and bool(path.stat().st_mode & _EXECUTE_BITS)
+    except OSError:
+        return False
+
+
+def find_executables(package_dir: Path, name: str) -> Search:
+    """The files called ``name`` below ``package_dir`` (``name`` may be a relative path)."""
+    if "/" in name:
+        path = package_dir / name
+        runnable = [path] if _runnable(path) else []
+        return Search(runnable, [] if runnable or not path.exists() else [path])
+    executables: list[Path] = []
+    others: list[Path] = []
+    for path in _walk(package_dir):
+        if path.name != name:
+            continue
+        (executables if _runnable(path) else others).append(path)
+    return Search(executables, others)
+
+
+def is_python_script(path: Path) -> bool:
+    """Whether rosx runs ``path`` with its own Python (see the module docstring)."""
+    try:
+        with path.open("rb") as file:
+            first = file.readline(256)
+    except OSError:
+        return False
+    if first.startswith(b"#!"):
+        return b"python" in first
+    return path.suffix == ".py"
+
+
+__all__ = ["Search", "find_executables", "is_python_script"]

@@ -1,0 +1,152 @@
+"""Which ROS packages exist and where, as ``rospack`` answers: find, list, depends.
+
+Packages are the directories holding a ``package.xml`` on ``ROS_PACKAGE_PATH`` (crawled as
+rospack crawls it, `rosx.msg.packages`), then the packages shipped with rosx that have a
+directory (turtlesim). Others rosx provides without a directory (``rospy``, ``roscpp``,
+``std_msgs``, ``geometry_msgs``…) count as known when they are depended on, so that
+``rospack depends`` of a package made by ``catkin_create_pkg lab2 std_msgs rospy roscpp`` lists
+its dependencies, but ``rospack find`` does not name a directory for them. Dependencies that
+are not known at all are skipped silently, as rospack skips system dependencies.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import importlib.util
+from functools import cached_property
+from typing import TYPE_CHECKING
+
+from rosx.msg.packages import find_packages, split_package_path
+from rosx.workspace.manifest import Manifest, ManifestError, read_manifest
+
+if TYPE_CHECKING:
+    from collections.abc import Mapping
+    from pathlib import Path
+
+#: Python modules shipped with rosx that hold a ROS package directory.
+_BUNDLED_MODULES = ("rosx_turtle",)
+
+#: Packages of ROS 1's core that rosx stands in for, without a directory of theirs.
+CORE_PACKAGES = frozenset(
+    {
+        "catkin",
+        "genmsg",
+        "genpy",
+        "message_generation",
+        "message_runtime",
+        "rosbash",
+        "roscpp",
+        "rosgraph",
+        "roslib",
+        "rospack",
+        "rospy",
+        "rostime",
+    }
+)
+
+
+class PackageNotFoundError(LookupError):
+    """No package of that name; ``str()`` is rospack's text."""
+
+    def __init__(self, name: str) -> None:
+        super().__init__(f"[rospack] Error: package '{name}' not found")
+        self.name = name
+
+
+def bundled_packages() -> dict[str, Path]:
+    """The package directories shipped with rosx, by name."""
+    from pathlib import Path  # noqa: PLC0415
+
+    found: dict[str, Path] = {}
+    for module in _BUNDLED_MODULES:
+        spec = importlib.util.find_spec(module)
+        if spec is not None and spec.origin is not None:
+            for name, directory in find_packages([Path(spec.origin).parent]).items():
+                found.setdefault(name, directory)
+    return found
+
+
+class PackageIndex:
+    """The packages visible from one package path."""
+
+    def __init__(self, package_path: list[Path]) -> None:
+        self.package_path = package_path
+        self._manifests: dict[str, Manifest] = {}
+
+    @classmethod
+    def from_environ(cls, environ: Mapping[str, str]) -> PackageIndex:
+        return cls(split_package_path(environ.get("ROS_PACKAGE_PATH")))
+
+    @cached_property
+    def packages(self) -> dict[str, Path]:
+        """Every package with a directory, by name; the package path wins over rosx's own."""
+        found = find_packages(self.package_path)
+        for name, directory in bundled_packages().items():
+            found.setdefault(name, directory)
+        return dict(sorted(found.items()))
+
+    def find(self, name: str) -> Path:
+        """The directory of package ``name``; `PackageNotFoundError` if it has none."""
+        directory = self.packages.get(name)
+        if directory is None:
+            raise PackageNotFoundError(name)
+        return directory
+
+    def is_known(self, name: str) -> bool:
+        """Whether ``name`` is a package: with a directory, or one rosx provides."""
+        if name in self.packages or name in CORE_PACKAGES:
+            return True
+        from rosx.msg.store import default_store  # noqa: PLC0415 - standard types load lazily
+
+        return default_store().has_package(name)
+
+    def manifest(self, name: str) -> Manifest | None:
+        """The manifest of ``name``; None for a package rosx provides without one."""
+        cached = self._manifests.get(name)
+        if cached is None:
+            directory = self.packages.get(name)
+            if directory is None:
+                if self.is_known(name):
+                    return None
+                raise PackageNotFoundError(name)
+            cached = self._manifests[name] = read_manifest(directory)
+        return cached
+
+    def depends1(self, name: str) -> list[str]:
+        """The known run dependencies of ``name``, in manifest order."""
+        manifest = self.manifest(name)
+        if manifest is None:
+            return []
+        return [dep for dep in manifest.run_depends() if self.is_known(dep)]
+
+    def depends(self, name: str) -> list[str]:
+        """Every known run dependency of ``name``, recursively, dependencies first."""
+        order: list[str] = []
+        visiting: set[str] = {name}
+
+        def visit(package: str) -> None:
+            for dep in self.depends1(package):
+                if dep in visiting or dep in order:
+                    continue
+                visiting.add(dep)
+                # A broken manifest further down is rospack's warning, not this answer's.
+                with contextlib.suppress(ManifestError):
+                    visit(dep)
+                order.append(dep)
+
+        visit(name)
+        return order
+
+    def depends_on1(self, name: str) -> list[str]:
+        """The packages with a directory that run-depend on ``name`` directly."""
+        users = []
+        for package in self.packages:
+            try:
+                if name in self.depends1(package):
+                    users.append(package)
+            except ManifestError:
+                continue
+        return users
+
+
+__all__ = ["CORE_PACKAGES", "PackageIndex", "PackageNotFoundError", "bundled_packages"]

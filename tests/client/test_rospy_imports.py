@@ -1,0 +1,242 @@
+"""How scripts get ``rospy`` and ``<package>.msg``: ``rosx run-script`` and the shim directory.
+
+Each script runs in a child process, as ``rosx rosrun`` runs it, so that the import finders and
+``sys.modules`` of this test session stay untouched.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from rosx.client.script import SHIM_DIR
+from tests.support.cli import clean_environ
+from tests.support.ros1 import ROS1_PYTHON, needs_ros1
+
+NUM_PACKAGE = """\
+<?xml version="1.0"?>
+<package format="2">
+  <name>lab2</name>
+  <version>0.0.0</version>
+  <description>The lab2 package</description>
+  <maintainer email="me@todo.todo">me</maintainer>
+  <license>TODO</license>
+</package>
+"""
+
+
+def run_script(
+    tmp_path: Path, source: str, *args: str, **environ: str
+) -> subprocess.CompletedProcess[str]:
+    script = tmp_path / "script.py"
+    script.write_text(source)
+    return subprocess.run(
+        [sys.executable, "-m", "rosx_commands", "run-script", str(script), *args],
+        env=clean_environ(**environ),
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+
+
+def json_of(done: subprocess.CompletedProcess[str]) -> Any:
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout.splitlines()[-1])
+
+
+def test_scripts_import_rospy_and_message_modules_laid_out_as_genpy(tmp_path: Path) -> None:
+    done = run_script(
+        tmp_path,
+        """\
+import json, sys
+from geometry_msgs.msg import *
+from geometry_msgs.msg import Twist
+import rospy
+import std_msgs.msg
+from std_srvs.srv import Empty, EmptyRequest, EmptyResponse
+from turtlesim.msg import Pose
+import geometry_msgs.msg._Vector3 as vector_module
+from rosx.msg.classes import get_message_class
+print(json.dumps({
+    "rospy": rospy.__file__,
+    "same_class": Twist is get_message_class("geometry_msgs/Twist"),
+    "string": std_msgs.msg.String._type,
+    "empty": [Empty._type, EmptyRequest._type, EmptyResponse._type],
+    "pose": Pose._md5sum,
+    "star": "Vector3" in dir(),
+    "module": vector_module.Vector3._type,
+    "main": __name__, "argv": sys.argv[1:], "myargv": rospy.myargv()[1:],
+}))
+""",
+        "a",
+        "b:=c",
+        "_p:=1",
+    )
+    found = json_of(done)
+    assert found["rospy"] == str(SHIM_DIR / "rospy" / "__init__.py")
+    assert found["same_class"] and found["star"]
+    assert found["string"] == "std_msgs/String"
+    assert found["empty"] == ["std_srvs/Empty", "std_srvs/EmptyRequest", "std_srvs/EmptyResponse"]
+    assert found["pose"] == "863b248d5016ca62ea2e895ae5265cf9"
+    assert found["module"] == "geometry_msgs/Vector3"
+    assert found["main"] == "__main__"
+    assert found["argv"] == ["a", "b:=c", "_p:=1"] and found["myargv"] == ["a"]
+
+
+def test_the_types_of_packages_on_the_package_path_import_too(tmp_path: Path) -> None:
+    package = tmp_path / "src" / "lab2"
+    (package / "msg").mkdir(parents=True)
+    (package / "srv").mkdir()
+    (package / "package.xml").write_text(NUM_PACKAGE)
+    (package / "msg" / "Num.msg").write_text("int64 num\n")
+    (package / "srv" / "AddTwoInts.srv").write_text("int64 a\nint64 b\n---\nint64 sum\n")
+    done = run_script(
+        tmp_path,
+        """\
+import json
+import rospy
+from lab2.msg import Num
+from lab2.srv import AddTwoInts, AddTwoIntsRequest, AddTwoIntsResponse
+print(json.dumps([Num._md5sum, AddTwoInts._md5sum, AddTwoIntsRequest(a=1, b=2).b]))
+""",
+        ROS_PACKAGE_PATH=str(tmp_path / "src"),
+    )
+    # The md5 sums of ROS 1's beginner_tutorials types of the same definitions.
+    assert json_of(done) == [
+        "57d3c40ec3ac3754af76a83e6e73127a",
+        "6a2e34150c00229791cc89ff309fff21",
+        2,
+    ]
+
+
+def test_a_syntax_error_names_the_file_and_the_line(tmp_path: Path) -> None:
+    done = run_script(tmp_path, "import rospy\ndef main//.\n    pass\n")
+    assert done.returncode == 1
+    assert f'File "{tmp_path / "script.py"}", line 2' in done.stderr
+    assert "\nSyntaxError: " in done.stderr  # the wording is Python's own
+    assert "Traceback" not in done.stderr and done.stdout == ""
+
+
+def test_an_exception_shows_the_scripts_frames_only(tmp_path: Path) -> None:
+    done = run_script(tmp_path, "import rospy\n\ndef main():\n    rospy.init_nod('x')\n\nmain()\n")
+    assert done.returncode == 1
+    lines = done.stderr.splitlines()
+    assert lines[0] == "Traceback (most recent call last):"
+    assert "rosx" not in "".join(line for line in lines if line.startswith("  File"))
+    assert f'  File "{tmp_path / "script.py"}", line 4, in main' in lines
+    assert lines[-1].startswith("AttributeError:") and "init_nod" in lines[-1]
+
+
+def test_a_missing_script_is_reported_as_python_does(tmp_path: Path) -> None:
+    done = subprocess.run(
+        [sys.executable, "-m", "rosx_commands", "run-script", str(tmp_path / "none.py")],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 2
+    assert done.stderr == (
+        f"rosx run-script: can't open file '{tmp_path / 'none.py'}': "
+        "[Errno 2] No such file or directory\n"
+    )
+
+
+def test_ctrl_c_before_init_node_ends_quietly(tmp_path: Path) -> None:
+    script = tmp_path / "wait.py"
+    script.write_text("import time, rospy\nprint('ready', flush=True)\ntime.sleep(60)\n")
+    process = subprocess.Popen(
+        [sys.executable, "-m", "rosx_commands", "run-script", str(script)],
+        env=clean_environ(),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        assert process.stdout is not None and process.stdout.readline() == "ready\n"
+        process.send_signal(signal.SIGINT)
+        _, err = process.communicate(timeout=10)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert process.returncode == 130
+    assert err == ""
+
+
+def test_init_node_waits_for_the_master_as_rospy_does(tmp_path: Path) -> None:
+    script = tmp_path / "node.py"
+    script.write_text("import rospy\nrospy.init_node('early')\n")
+    uri = "http://127.0.0.1:9/"
+    process = subprocess.Popen(
+        [sys.executable, "-m", "rosx_commands", "run-script", str(script)],
+        env=clean_environ(ROS_MASTER_URI=uri),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        assert process.stderr is not None
+        line = process.stderr.readline()
+        time.sleep(0.3)
+        process.send_signal(signal.SIGINT)
+        _, rest = process.communicate(timeout=10)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert rest == ""  # stopping a script that waits for the master is not an error
+    assert line.startswith("[ERROR] [")
+    assert line.endswith(
+        f"]: Unable to immediately register with master node [{uri}]: "
+        "master may not be running yet. Will keep trying.\n"
+    )
+    assert process.returncode == 0
+
+
+def test_a_python_without_rosx_is_told_what_to_do(tmp_path: Path) -> None:
+    done = subprocess.run(
+        [sys.executable, "-S", "-c", "import rospy"],
+        env={**clean_environ(), "PYTHONPATH": str(SHIM_DIR)},
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 1
+    assert "this rospy is rosx's, and this Python cannot import rosx" in done.stderr
+    assert "rosx rosrun PACKAGE SCRIPT" in done.stderr
+
+
+@needs_ros1
+def test_ros1s_python_keeps_ros1s_rospy_with_the_shim_on_its_path(tmp_path: Path) -> None:
+    env = {k: v for k, v in os.environ.items() if not k.startswith("ROS_")}
+    env["PYTHONPATH"] = str(SHIM_DIR)
+    done = subprocess.run(
+        [ROS1_PYTHON, "-c", "import rospy, rospy.exceptions; print(rospy.__file__)"],
+        env=env,
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "/usr/lib/python3/dist-packages/rospy/__init__.py"
+
+
+@pytest.mark.parametrize("module", ["rospy.exceptions"])
+def test_rospy_submodules_scripts_import(tmp_path: Path, module: str) -> None:
+    done = run_script(
+        tmp_path,
+        f"import json, {module} as m\nprint(json.dumps(m.ROSInterruptException.__name__))\n",
+    )
+    assert json_of(done) == "ROSInterruptException"
