@@ -8,10 +8,37 @@ depend on them.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable, Iterator
 
 import pytest
+
+from rosx.master.server import MasterThread
+from rosx.node import Node
 
 
 def pytest_configure(config: pytest.Config) -> None:
     for name in [n for n in os.environ if n.startswith("ROS_")]:
         del os.environ[name]
+
+
+@pytest.fixture(scope="module")
+def master() -> Iterator[str]:
+    """A rosx master on a free port, shared by a test module; yields its URI."""
+    with MasterThread(port=0, host="127.0.0.1", advertised_host="127.0.0.1") as thread:
+        yield thread.uri
+
+
+@pytest.fixture
+def make_node(master: str) -> Iterator[Callable[..., Node]]:
+    """Start nodes on the test's master; every one is shut down after the test."""
+    nodes: list[Node] = []
+
+    def make(name: str, **options: object) -> Node:
+        options.setdefault("environ", {})
+        node = Node(name, master_uri=master, **options).start()  # type: ignore[arg-type]
+        nodes.append(node)
+        return node
+
+    yield make
+    for node in nodes:
+        node.shutdown("test over")

@@ -14,7 +14,6 @@ from typing import Any
 
 import pytest
 
-from rosx.master.server import MasterThread
 from rosx.msg.classes import get_message_class
 from rosx.node import Node
 from rosx.transport.client import XmlRpcClient
@@ -29,31 +28,9 @@ FloatArray = get_message_class("std_msgs/Float32MultiArray")
 Time = type(PointStamped().header.stamp)
 
 
-@pytest.fixture(scope="module")
-def master() -> Iterator[str]:
-    """A rosx master on a free port; yields its URI."""
-    with MasterThread(port=0, host="127.0.0.1", advertised_host="127.0.0.1") as thread:
-        yield thread.uri
-
-
 @pytest.fixture
 def env(master: str) -> dict[str, str]:
     return clean_environ(ROS_MASTER_URI=master)
-
-
-@pytest.fixture
-def make_node(master: str) -> Iterator[Callable[[str], Node]]:
-    """Nodes on the test's master, all shut down after the test."""
-    nodes: list[Node] = []
-
-    def make(name: str) -> Node:
-        node = Node(name, master_uri=master, environ={}).start()
-        nodes.append(node)
-        return node
-
-    yield make
-    for node in nodes:
-        node.shutdown("test over")
 
 
 @pytest.fixture

@@ -65,10 +65,10 @@ def test_before_init_node_only_warnings_and_worse_print(
 
 
 def test_logs_reach_rosout_with_the_callers_place(
-    rospy: ModuleType, peer: Callable[[str], Node]
+    rospy: ModuleType, make_node: Callable[[str], Node]
 ) -> None:
     records: list[Any] = []
-    peer("reader").subscribe("/rosout", Log, records.append)
+    make_node("reader").subscribe("/rosout", Log, records.append)
     rospy.init_node("reporter", disable_signals=True)
     wait_for(lambda: rospy.get_master().call("getSystemState")[1], what="subscriptions")
 
@@ -135,7 +135,9 @@ def test_wait_for_service_times_out_with_rospys_texts(rospy: ModuleType) -> None
         rospy.wait_for_service("/none", timeout=0.5)
 
 
-def test_a_proxy_works_before_init_node(rospy: ModuleType, peer: Callable[[str], Node]) -> None:
-    peer("provider").advertise_service("/yes", SetBool, lambda req: (True, "ok"))
+def test_a_proxy_works_before_init_node(
+    rospy: ModuleType, make_node: Callable[[str], Node]
+) -> None:
+    make_node("provider").advertise_service("/yes", SetBool, lambda req: (True, "ok"))
     rospy.wait_for_service("/yes", timeout=5)
     assert rospy.ServiceProxy("/yes", SetBool)(data=True).message == "ok"

@@ -108,9 +108,11 @@ def test_interrupt_exception_is_also_a_keyboard_interrupt(rospy: ModuleType) -> 
     assert issubclass(rospy.ROSInterruptException, rospy.ROSException)
 
 
-def test_rosnode_kill_shuts_the_node_down(rospy: ModuleType, peer: Callable[[str], Node]) -> None:
+def test_rosnode_kill_shuts_the_node_down(
+    rospy: ModuleType, make_node: Callable[[str], Node]
+) -> None:
     rospy.init_node("victim", disable_signals=True)
-    killer = peer("killer")
+    killer = make_node("killer")
     uri = killer.master.call("lookupNode", "/victim")
     from rosx.transport.client import XmlRpcClient
 

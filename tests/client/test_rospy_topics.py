@@ -35,7 +35,7 @@ def test_messages_reach_callbacks_with_their_arguments(rospy: ModuleType) -> Non
 
 
 def test_topics_made_before_init_node_register_when_it_runs(
-    rospy: ModuleType, peer: Callable[[str], Node]
+    rospy: ModuleType, make_node: Callable[[str], Node]
 ) -> None:
     got: list[Any] = []
     pub = rospy.Publisher("/cmd_vel", Twist, queue_size=10)
@@ -46,7 +46,7 @@ def test_topics_made_before_init_node_register_when_it_runs(
     with pytest.raises(ValueError, match="~name topics cannot be created before init_node"):
         rospy.Publisher("~private", Twist, queue_size=1)
     rospy.init_node("late", disable_signals=True)
-    other = peer("other")
+    other = make_node("other")
     seen: list[Any] = []
     other.subscribe("/cmd_vel", Twist, seen.append)
     echo = other.advertise("/echo", String, queue_size=1)

@@ -8,19 +8,10 @@ from collections.abc import Callable, Iterator
 
 import pytest
 
-from rosx.master.server import MasterThread
-from rosx.node import Node
 from rosx_turtle.console import Console
 from rosx_turtle.node import TurtlesimNode
 from rosx_turtle.roscpp import NodeArgs
 from tests.turtle.simulators import Sim
-
-
-@pytest.fixture(scope="module")
-def master() -> Iterator[str]:
-    """A rosx master on a free port; yields its URI."""
-    with MasterThread(port=0, host="127.0.0.1", advertised_host="127.0.0.1") as thread:
-        yield thread.uri
 
 
 @pytest.fixture
@@ -43,18 +34,3 @@ def make_sim(master: str) -> Iterator[Callable[..., Sim]]:
     yield make
     for sim in sims:
         sim.shutdown("test over")
-
-
-@pytest.fixture
-def make_node(master: str) -> Iterator[Callable[[str], Node]]:
-    """Start client nodes on the test's master; every one is shut down after the test."""
-    nodes: list[Node] = []
-
-    def make(name: str) -> Node:
-        node = Node(name, master_uri=master, environ={}).start()
-        nodes.append(node)
-        return node
-
-    yield make
-    for node in nodes:
-        node.shutdown("test over")
