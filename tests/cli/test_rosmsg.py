@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import pytest
 
 from tests.support.cli import rosx, rosx_process
@@ -234,9 +237,12 @@ print(json.dumps(out))
 """
 
 
-@needs_ros1
-def test_every_type_ros1_knows_shows_and_hashes_the_same() -> None:
-    ros1 = ros1_python(_ROS1_TEXTS)
+#: ROS 1's rosmsg/rossrv output for every type it knows (``show`` text and md5 sums), recorded
+#: from the reference with `_ROS1_TEXTS`; the live test below keeps it honest.
+GOLDEN = Path(__file__).resolve().parent.parent / "golden" / "ros1_rosmsg.json"
+
+
+def _compare_with(ros1: dict[str, dict[str, str]]) -> None:
     assert len(ros1["msg"]) > 100 and len(ros1["srv"]) > 10
     for kind in ("msg", "srv"):
         for type_name, text in ros1[kind].items():
@@ -245,6 +251,17 @@ def test_every_type_ros1_knows_shows_and_hashes_the_same() -> None:
             assert ours.out == text + "\n", type_name
             md5 = rosx("ros" + kind, "md5", type_name).out
             assert md5 == ros1["md5"][f"{kind}:{type_name}"] + "\n", type_name
+
+
+def test_every_type_ros1_knows_shows_and_hashes_as_recorded() -> None:
+    _compare_with(json.loads(GOLDEN.read_text(encoding="utf-8")))
+
+
+@needs_ros1
+def test_every_type_ros1_knows_shows_and_hashes_the_same() -> None:
+    live = ros1_python(_ROS1_TEXTS)
+    _compare_with(live)
+    assert live == json.loads(GOLDEN.read_text(encoding="utf-8")), "re-record tests/golden"
 
 
 @needs_ros1
