@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 import subprocess
+import sys
 from collections.abc import Iterator
 
 import pytest
@@ -62,13 +63,17 @@ rospy.spin()
 """
 
 
-@pytest.fixture(scope="module")
-def graph() -> Iterator[str]:
-    """ROS 1's roscore with the rospy talker; yields the master URI."""
+@pytest.fixture(scope="module", params=["ros1-roscore", "rosx-roscore"])
+def graph(request: pytest.FixtureRequest) -> Iterator[str]:
+    """A roscore (ROS 1's or rosx's) with the rospy talker; yields the master URI."""
     port = free_port()
     uri = f"http://localhost:{port}"
     env = ros1_environ(ROS_MASTER_URI=uri)
-    with running(["/usr/bin/roscore", "-p", str(port)], env):
+    if request.param == "ros1-roscore":
+        core = ["/usr/bin/roscore", "-p", str(port)]
+    else:
+        core = [sys.executable, "-m", "rosx_commands", "roscore", "-p", str(port)]
+    with running(core, env):
         wait_for(lambda: port_open(port), what="roscore")
         with running([ROS1_PYTHON, "-c", TALKER], env):
             wait_for(
