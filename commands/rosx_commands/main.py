@@ -23,6 +23,10 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rosnode": ("rosx_commands.rosnode:rosnode", "Print information about ROS nodes."),
     "rosservice": ("rosx_commands.rosservice:rosservice", "List, inspect and call ROS services."),
     "rosparam": ("rosx_commands.rosparam:rosparam", "Get and set ROS parameters."),
+    "rqt_graph": (
+        "rosx_commands.rqt_graph:rqt_graph",
+        "Show the ROS graph of nodes and topics, live.",
+    ),
     "sim": ("rosx_commands.sim:sim", "Run a master, turtlesim and teleop in one terminal UI."),
     "catkin_create_pkg": (
         "rosx_commands.catkin_create_pkg:catkin_create_pkg",

@@ -91,3 +91,12 @@ def test_workspace_tools_do_not_pay_for_typer(argv: list[str]) -> None:
     )
     assert not {m for m in loaded if m.split(".")[0] in ("typer", "pydantic", "rich", *HEAVY)}
     assert "dataclasses" not in loaded and "textual" not in loaded
+
+
+def test_rqt_graph_text_output_loads_no_tui() -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        "run_tool(['rqt_graph', '--text'], Environment(stdout=io.StringIO(), stderr=io.StringIO(),"
+        " environ={'ROS_MASTER_URI': 'http://localhost:9'}))"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in ("textual", "typer", "numpy")}

@@ -155,7 +155,12 @@ def info(argv: list[str], env: Environment) -> int:
     if len(names) > 1:
         parser.error("you may only specify one topic name")
     topic = resolve(env, names[0])
-    master = Master(env, CALLER_ID)
+    env.out(topic_description(Master(env, CALLER_ID), topic))
+    return ExitStatus.OK
+
+
+def topic_description(master: Master, topic: str) -> str:
+    """What ``rostopic info`` prints of ``topic``: its type, publishers and subscribers."""
     pubs, subs = topic_rows(master)
     pubs = [r for r in pubs if r[0] == topic]
     subs = [r for r in subs if r[0] == topic]
@@ -171,8 +176,7 @@ def info(argv: list[str], env: Environment) -> int:
         else:
             lines.append(f"{title}: None")
         lines.append("")
-    env.out("\n".join(lines) + "\n")
-    return ExitStatus.OK
+    return "\n".join(lines) + "\n"
 
 
 def topic_type(argv: list[str], env: Environment) -> int:

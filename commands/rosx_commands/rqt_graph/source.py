@@ -1,0 +1,110 @@
+"""Where the live view gets its graph and its details: `LiveSource` asks the master and the
+nodes; tests pass a source of their own with the same methods (`GraphSource`).
+
+Every method may block (network calls) and is called from worker threads only.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from typing import Any, Protocol
+
+from rosx.graph.state import GraphState
+from rosx.graph.view import Kind, Vertex
+from rosx_commands.context import CommandError, Environment
+
+
+class GraphSource(Protocol):
+    def snapshot(self) -> GraphState: ...
+
+    def describe(self, vertex: Vertex) -> str: ...
+
+    def rate(self, topic: str) -> str: ...
+
+    def close(self) -> None: ...
+
+
+class RateCounter:
+    """Messages received on one topic, and the rate over the last window."""
+
+    def __init__(self) -> None:
+        self._lock = threading.Lock()
+        self._stamps: list[float] = []
+
+    def __call__(self, _message: object) -> None:
+        now = time.monotonic()
+        with self._lock:
+            self._stamps.append(now)
+            self._stamps = [t for t in self._stamps if now - t <= 5.0]
+
+    def text(self) -> str:
+        with self._lock:
+            stamps = list(self._stamps)
+        if len(stamps) < 2:
+            return "rate: no messages yet"
+        return f"average rate: {(len(stamps) - 1) / (stamps[-1] - stamps[0]):.3f} Hz"
+
+
+class LiveSource:
+    """A running master and its nodes; one hidden node of its own for topic rates."""
+
+    def __init__(self, env: Environment, uri: str, caller_id: str, bus_info: bool) -> None:
+        self.env = env
+        self.uri = uri
+        self.caller_id = caller_id
+        self.bus_info = bus_info
+        self._node: Any = None
+        self._counters: dict[str, RateCounter] = {}
+
+    def snapshot(self) -> GraphState:
+        from rosx.graph.fetch import fetch_state  # noqa: PLC0415
+
+        return fetch_state(self.uri, self.caller_id, bus_info=self.bus_info)
+
+    def describe(self, vertex: Vertex) -> str:
+        from rosx_commands.master import Master  # noqa: PLC0415
+
+        master = Master(self.env, self.caller_id)
+        try:
+            if vertex.kind is Kind.NODE:
+                from rosx_commands.rosnode import (  # noqa: PLC0415
+                    connection_description,
+                    node_description,
+                )
+
+                text = node_description(master, vertex.label)
+                uri = master.lookup_node(vertex.label)
+                if uri is None:
+                    return text + f"\ncannot contact [{vertex.label}]: unknown node"
+                return (
+                    text
+                    + f"\ncontacting node {uri} ...\n"
+                    + connection_description(master, vertex.label, uri)
+                )
+            if vertex.kind is Kind.GROUP:
+                return f"Group of topics: {vertex.label}"
+            from rosx_commands.rostopic.listing import topic_description  # noqa: PLC0415
+
+            return topic_description(master, vertex.label)
+        except CommandError as error:
+            return error.message
+
+    def rate(self, topic: str) -> str:
+        if topic not in self._counters:
+            if self._node is None:
+                from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415
+                from rosx.node import Node  # noqa: PLC0415
+
+                name = anonymous_node_name("rqt_graph")
+                self._node = Node(
+                    name, master_uri=self.uri, environ=self.env.environ, rosout_enabled=False
+                ).start()
+            counter = self._counters[topic] = RateCounter()
+            self._node.subscribe(topic, None, counter)
+        return self._counters[topic].text()
+
+    def close(self) -> None:
+        if self._node is not None:
+            self._node.shutdown("rqt_graph closed")
+            self._node = None

@@ -1,0 +1,84 @@
+"""`ViewGraph`: the graph as drawn, with vertices (nodes, topics, topic groups) and edges.
+
+Vertex ids keep nodes and topics apart when they share a name: ``n:/name`` for a node,
+``t:/name`` for a topic or a topic group (rqt_graph's ``n_``/``t_`` prefixes in DOT).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+
+
+class Kind(str, Enum):
+    NODE = "node"  # an ellipse in rqt_graph
+    TOPIC = "topic"  # a box
+    GROUP = "group"  # a 3-D box: grouped action, image or tf topics
+
+
+@dataclass(frozen=True)
+class Vertex:
+    id: str
+    label: str
+    kind: Kind
+    unreachable: bool = False
+    #: Enclosing namespaces, outermost first (rqt_graph's namespace clusters).
+    clusters: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Edge:
+    source: str
+    target: str
+    #: The topic, on node → node edges (Nodes only); empty otherwise.
+    label: str = ""
+
+
+@dataclass(frozen=True)
+class ViewGraph:
+    vertices: tuple[Vertex, ...] = ()
+    edges: tuple[Edge, ...] = ()
+
+    def vertex(self, vertex_id: str) -> Vertex | None:
+        return next((v for v in self.vertices if v.id == vertex_id), None)
+
+
+def node_id(name: str) -> str:
+    return "n:" + name
+
+
+def topic_id(name: str) -> str:
+    return "t:" + name
+
+
+@dataclass(frozen=True)
+class Changes:
+    """What appeared and what vanished between two views (vertex ids, and edges)."""
+
+    appeared: frozenset[str] = frozenset()
+    vanished: frozenset[str] = frozenset()
+    appeared_edges: frozenset[Edge] = frozenset()
+    vanished_edges: frozenset[Edge] = frozenset()
+
+    def __bool__(self) -> bool:
+        return bool(self.appeared or self.vanished or self.appeared_edges or self.vanished_edges)
+
+    def summary(self) -> str:
+        """``+ /a  - /b`` style, vertices sorted; empty when nothing changed."""
+        parts = [f"+ {vertex_id[2:]}" for vertex_id in sorted(self.appeared)]
+        parts += [f"- {vertex_id[2:]}" for vertex_id in sorted(self.vanished)]
+        return "  ".join(parts)
+
+
+def changes(before: ViewGraph | None, after: ViewGraph) -> Changes:
+    """The difference from ``before`` to ``after`` (nothing when there was no before)."""
+    if before is None:
+        return Changes()
+    old = {v.id for v in before.vertices}
+    new = {v.id for v in after.vertices}
+    return Changes(
+        frozenset(new - old),
+        frozenset(old - new),
+        frozenset(set(after.edges) - set(before.edges)),
+        frozenset(set(before.edges) - set(after.edges)),
+    )
