@@ -8,11 +8,16 @@ wins, as with rospack.
 
 from __future__ import annotations
 
+import importlib.util
 import os
 import re
+from functools import cache
 from pathlib import Path
 
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
+
+#: Python packages shipped with rosx that hold ROS package directories (found, not imported).
+BUNDLED_MODULES = ("rosx_turtle",)
 
 
 def package_name(manifest: Path) -> str | None:
@@ -55,3 +60,15 @@ def _crawl(directory: Path, found: dict[str, Path]) -> None:
         if entry.name.startswith(".") or not entry.is_dir():
             continue
         _crawl(Path(entry.path), found)
+
+
+@cache
+def bundled_packages() -> dict[str, Path]:
+    """The ROS package directories shipped with rosx (turtlesim's), by name."""
+    found: dict[str, Path] = {}
+    for module in BUNDLED_MODULES:
+        spec = importlib.util.find_spec(module)
+        if spec is not None and spec.origin is not None:
+            for name, directory in find_packages([Path(spec.origin).parent]).items():
+                found.setdefault(name, directory)
+    return found

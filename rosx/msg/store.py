@@ -11,21 +11,18 @@ Nothing is parsed until asked for; listing every type reads directory names, not
 
 from __future__ import annotations
 
-import importlib.util
 import os
 from collections.abc import Mapping
 from functools import cached_property
 from pathlib import Path
 
 from rosx.msg.md5 import full_text, message_md5, service_md5
-from rosx.msg.packages import find_packages, split_package_path
+from rosx.msg.packages import bundled_packages, find_packages, split_package_path
 from rosx.msg.parser import InvalidMsgSpecError, is_valid_type_name, parse_msg, parse_srv
 from rosx.msg.spec import MsgSpec, SrvSpec
 from rosx.msg.standard import standard_text, standard_types
 
 _INTERFACES = Path(__file__).parent / "interfaces"
-#: Packages shipped with rosx whose definitions are part of the standard set.
-_BUNDLED_PACKAGES = ("rosx_turtle",)
 
 
 class UnknownTypeError(LookupError):
@@ -63,10 +60,7 @@ class TypeStore:
     @cached_property
     def _bundled_packages(self) -> dict[str, Path]:
         found = {p.name: p for p in sorted(_INTERFACES.iterdir()) if p.is_dir()}
-        for module in _BUNDLED_PACKAGES:
-            spec = importlib.util.find_spec(module)
-            if spec is not None and spec.origin is not None:
-                found.update(find_packages([Path(spec.origin).parent]))
+        found.update(bundled_packages())
         return found
 
     def package_dir(self, package: str) -> Path | None:

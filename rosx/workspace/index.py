@@ -12,19 +12,15 @@ are not known at all are skipped silently, as rospack skips system dependencies.
 from __future__ import annotations
 
 import contextlib
-import importlib.util
 from functools import cached_property
 from typing import TYPE_CHECKING
 
-from rosx.msg.packages import find_packages, split_package_path
+from rosx.msg.packages import bundled_packages, find_packages, split_package_path
 from rosx.workspace.manifest import Manifest, ManifestError, read_manifest
 
 if TYPE_CHECKING:
     from collections.abc import Mapping
     from pathlib import Path
-
-#: Python modules shipped with rosx that hold a ROS package directory.
-_BUNDLED_MODULES = ("rosx_turtle",)
 
 #: Packages of ROS 1's core that rosx stands in for, without a directory of theirs.
 CORE_PACKAGES = frozenset(
@@ -51,19 +47,6 @@ class PackageNotFoundError(LookupError):
     def __init__(self, name: str) -> None:
         super().__init__(f"[rospack] Error: package '{name}' not found")
         self.name = name
-
-
-def bundled_packages() -> dict[str, Path]:
-    """The package directories shipped with rosx, by name."""
-    from pathlib import Path  # noqa: PLC0415
-
-    found: dict[str, Path] = {}
-    for module in _BUNDLED_MODULES:
-        spec = importlib.util.find_spec(module)
-        if spec is not None and spec.origin is not None:
-            for name, directory in find_packages([Path(spec.origin).parent]).items():
-                found.setdefault(name, directory)
-    return found
 
 
 class PackageIndex:
