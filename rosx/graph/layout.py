@@ -4,10 +4,16 @@ grandalf ranks the vertices (cycles broken by reversing feedback edges), inserts
 vertex wherever an edge spans several ranks and orders each rank to reduce crossings. What
 comes out is columns of slots, each a vertex or a dummy, and for every edge the slots it runs
 through; `text` turns that into characters. grandalf is imported on first use only.
+
+The live view refreshes every second or so and mostly finds the same graph: `layered` keeps
+the last few layerings, keyed by the graph's vertex ids and edges (all the layering depends
+on), and hands them back without asking grandalf again.
 """
 
 from __future__ import annotations
 
+import threading
+from collections import OrderedDict
 from dataclasses import dataclass
 from typing import Any
 
@@ -15,6 +21,12 @@ from rosx.graph.view import Edge, ViewGraph
 
 #: Rounds of grandalf's crossing reduction (each sweeps down and up once).
 ORDERING_ROUNDS = 2
+#: Layerings kept for graphs seen again.
+CACHE_SIZE = 4
+
+_Key = tuple[tuple[str, ...], tuple[Edge, ...]]
+_cache: OrderedDict[_Key, Layering] = OrderedDict()
+_cache_lock = threading.Lock()
 
 
 @dataclass(frozen=True)
@@ -37,8 +49,21 @@ class Layering:
 
 def layered(graph: ViewGraph) -> Layering:
     """Lay out ``graph``: connected components one below the other, sharing columns."""
+    key = (tuple(v.id for v in graph.vertices), graph.edges)
+    with _cache_lock:
+        if key in _cache:
+            _cache.move_to_end(key)
+            return _cache[key]
+    layering = _layered(graph)
+    with _cache_lock:
+        _cache[key] = layering
+        while len(_cache) > CACHE_SIZE:
+            _cache.popitem(last=False)
+    return layering
+
+
+def _layered(graph: ViewGraph) -> Layering:
     from grandalf.graphs import Edge as GEdge
-    from grandalf.graphs import Graph as GGraph
     from grandalf.graphs import Vertex as GVertex
     from grandalf.layouts import SugiyamaLayout, VertexViewer
 
@@ -50,10 +75,9 @@ def layered(graph: ViewGraph) -> Layering:
         if edge.source != edge.target:
             gedge = GEdge(gvertices[edge.source], gvertices[edge.target], data=edge)
             gedges.append(gedge)
-    ggraph = GGraph(list(gvertices.values()), gedges)
     columns: list[list[str | None]] = []
     routes: list[Route] = []
-    for component in ggraph.C:
+    for component in _components(list(gvertices.values()), gedges):
         layout = SugiyamaLayout(component)
         layout.init_all(roots=_roots(component), inverted_edges=_feedback(component))
         for _ in range(ORDERING_ROUNDS):
@@ -61,6 +85,33 @@ def layered(graph: ViewGraph) -> Layering:
                 pass
         _place(layout, component, columns, routes)
     return Layering(tuple(tuple(c) for c in columns), tuple(routes))
+
+
+def _components(vertices: list[Any], edges: list[Any]) -> list[Any]:
+    """grandalf's ``Graph(vertices, edges).C``, in the same order, without its checks that
+    scan the vertex and component lists once per edge (quadratic on large graphs)."""
+    from grandalf.graphs import graph_core
+    from grandalf.utils import Poset
+
+    for vertex in vertices:
+        vertex.c = Poset([vertex])
+    sets = {id(v.c): v.c for v in vertices}  # in vertex order, as grandalf's list
+    for edge in edges:
+        x, y = edge.v
+        edge.attach()
+        if x.c is not y.c:
+            merged = y.c
+            x.c.update(merged)
+            del sets[id(merged)]
+            for z in merged:
+                z.c = x.c
+    components = []
+    for vertex_set in sets.values():
+        edge_set: set[Any] = set()
+        for vertex in vertex_set:
+            edge_set.update(vertex.e)
+        components.append(graph_core(vertex_set, edge_set, True))
+    return components
 
 
 def _roots(component: Any) -> list[Any]:

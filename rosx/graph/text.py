@@ -8,6 +8,8 @@ of their own between two columns and enter the next box on its left with an arro
 
 from __future__ import annotations
 
+import threading
+from collections import OrderedDict
 from dataclasses import dataclass, field
 
 from rosx.graph.canvas import Canvas
@@ -25,6 +27,10 @@ _BORDERS = {
 }
 _DEAD_BORDERS = ("╭", "╮", "╰", "╯", "┄", "┆")
 _LABEL = "l:"
+#: Drawings kept for graphs seen again (the live view mostly redraws the same graph).
+CACHE_SIZE = 4
+_cache: OrderedDict[ViewGraph, Drawing] = OrderedDict()
+_cache_lock = threading.Lock()
 
 
 @dataclass(frozen=True)
@@ -63,11 +69,22 @@ def with_label_vertices(graph: ViewGraph) -> ViewGraph:
 
 
 def draw(graph: ViewGraph) -> Drawing:
-    """Draw ``graph``; an empty graph draws as no lines."""
+    """Draw ``graph``; an empty graph draws as no lines. A graph drawn lately is not drawn
+    again: its drawing comes back (a copy, sharing the lines' strings)."""
     if not graph.vertices:
         return Drawing()
-    graph = with_label_vertices(graph)
-    return render(graph, layered(graph))
+    with _cache_lock:
+        drawing = _cache.get(graph)
+        if drawing is not None:
+            _cache.move_to_end(graph)
+    if drawing is None:
+        split = with_label_vertices(graph)
+        drawing = render(split, layered(split))
+        with _cache_lock:
+            _cache[graph] = drawing
+            while len(_cache) > CACHE_SIZE:
+                _cache.popitem(last=False)
+    return Drawing(list(drawing.lines), dict(drawing.boxes))
 
 
 def _size(vertex: Vertex | None) -> tuple[int, int]:
@@ -112,7 +129,7 @@ def render(graph: ViewGraph, layering: Layering) -> Drawing:
         x = lefts[c] + (widths[c] - sizes[c][r][0]) // 2
         return x, x + sizes[c][r][0] - 1
 
-    canvas = Canvas()
+    canvas = Canvas(lefts[-1] + widths[-1], tallest)
     drawing = Drawing()
     for route in layering.routes:
         _route(canvas, route, tracks, lefts, widths, span, mid)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from itertools import accumulate
+
 from rich.text import Text
 from textual.containers import ScrollableContainer  # noqa: TID253 - TUI code
 from textual.widgets import Static  # noqa: TID253 - TUI code
@@ -18,11 +20,18 @@ class GraphView(ScrollableContainer, can_focus=True):
     GraphView > Static { width: auto; height: auto; }
     """
 
+    _shown: tuple[object, ...] | None = None
+
     def compose(self):  # type: ignore[no-untyped-def]
         yield Static(id="drawing")
 
     def show(self, drawing: Drawing, changes: Changes, selected: str | None) -> None:
+        shown = (drawing.lines, drawing.boxes, changes, selected)
+        if shown == self._shown:
+            return  # a refresh that found the same graph: nothing to redraw
+        self._shown = shown
         text = Text("\n".join(drawing.lines) if drawing.lines else "(no nodes)")
+        offsets = list(accumulate((len(line) + 1 for line in drawing.lines), initial=0))
         for vertex_id, box in drawing.boxes.items():
             style = None
             if vertex_id == selected:
@@ -34,7 +43,7 @@ class GraphView(ScrollableContainer, can_focus=True):
             if style is None:
                 continue
             for row in range(box.height):
-                start = _offset(drawing.lines, box.y + row) + box.x
+                start = offsets[box.y + row] + box.x
                 text.stylize(style, start, start + box.width)
         self.query_one("#drawing", Static).update(text)
         if selected in drawing.boxes:
@@ -45,7 +54,3 @@ class GraphView(ScrollableContainer, can_focus=True):
         from textual.geometry import Region
 
         self.scroll_to_region(Region(x, y, width, height), animate=False)
-
-
-def _offset(lines: list[str], row: int) -> int:
-    return sum(len(line) + 1 for line in lines[:row])
