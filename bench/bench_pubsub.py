@@ -7,10 +7,12 @@ with rosx under this Python, and prints:
 * small messages (``geometry_msgs/Twist``, 48 bytes) sent as fast as the publisher can: msgs/s
   delivered and messages lost, with rospy's asynchronous publisher (``queue_size=100``) and with
   its synchronous one (``queue_size=None``) against rosx's equivalents;
-* latency from ``publish`` to the callback at 1 kHz: p50 and p99;
+* latency from ``publish`` to the callback at 1 kHz: p50 and p99, the first messages ignored
+  as a warm-up, medians over several rounds with rospy and rosx alternating;
 * 1 MiB messages (``sensor_msgs/Image``): bytes/s delivered;
 
-and the ratios rosx/rospy. Run: ``python bench/bench_pubsub.py [--quick]``.
+and the ratios rosx/rospy. Run:
+``python bench/bench_pubsub.py [--quick] [--only CASE] [--rounds N]``.
 """
 
 from __future__ import annotations
@@ -89,6 +91,7 @@ time.sleep(1.0)
 SUBSCRIBER = """
 import sys, time, json, threading
 count, queue_size, kind = int(sys.argv[1]), json.loads(sys.argv[2]), sys.argv[3]
+warmup = int(sys.argv[4])
 make_node('bench_sub')
 cls = msg_class('sensor_msgs/Image' if kind == 'image' else 'geometry_msgs/Twist')
 state = {'n': 0, 'first': 0.0, 'last': 0.0, 'bytes': 0}
@@ -105,7 +108,8 @@ def cb(msg):
         state['bytes'] += len(msg.data)
         last = int(msg.header.frame_id) == count - 1
     else:
-        lat.append(now - msg.linear.x)
+        if msg.linear.y >= warmup:
+            lat.append(now - msg.linear.x)
         last = msg.linear.y == count - 1
     if last:
         done.set()
@@ -123,6 +127,7 @@ result = {'received': state['n'], 'rate': state['n'] / span, 'bytes_rate': state
 if lat:
     result['p50'] = lat[len(lat) // 2] * 1e6
     result['p99'] = lat[min(len(lat) - 1, int(len(lat) * 0.99))] * 1e6
+    result['samples'] = len(lat)
 print(json.dumps(result), flush=True)
 """
 
@@ -160,6 +165,7 @@ def run_case(
     pub_queue: int | None,
     sub_queue: int | None,
     period: float,
+    warmup: int = 0,
 ) -> dict[str, float]:
     python = ROS1_PYTHON if lib == "rospy" else sys.executable
     api = API_ROSPY if lib == "rospy" else API_ROSX
@@ -167,7 +173,7 @@ def run_case(
     if lib == "rospy":
         env["ROS_PACKAGE_PATH"] = "/usr/share"
     sub = subprocess.Popen(
-        [python, "-c", api + SUBSCRIBER, str(count), json.dumps(sub_queue), kind],
+        [python, "-c", api + SUBSCRIBER, str(count), json.dumps(sub_queue), kind, str(warmup)],
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
         env=env,
@@ -199,49 +205,89 @@ def run_case(
     return result
 
 
+def median(values: list[float]) -> float:
+    ordered = sorted(values)
+    mid = len(ordered) // 2
+    return ordered[mid] if len(ordered) % 2 else (ordered[mid - 1] + ordered[mid]) / 2
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer messages")
+    parser.add_argument(
+        "--only", choices=("async", "sync", "latency", "image"), help="run only this case"
+    )
+    parser.add_argument(
+        "--rounds", type=int, default=5, help="latency rounds, rospy and rosx alternating"
+    )
     args = parser.parse_args()
     scale = 0.2 if args.quick else 1.0
-    small, latency, images = int(200_000 * scale), int(2000 * scale), int(1000 * scale)
+    small, latency, images = int(200_000 * scale), int(3000 * scale), int(1000 * scale)
+    warmup = latency // 6
+    rounds = max(1, args.rounds if not args.quick else min(args.rounds, 2))
     proc, master = start_master()
     rows: list[tuple[str, dict[str, float], dict[str, float], str]] = []
     try:
         cases = [
             (
-                "Twist flood, async publisher (rospy queue_size=100 / rosx 100)",
+                "async",
+                "Twist flood, async publisher (queue_size=100 both)",
                 "twist",
                 small,
                 100,
-                None,
                 0.0,
                 "rate",
             ),
             (
+                "sync",
                 "Twist flood, sync publisher (queue_size=None both)",
                 "twist",
                 small,
                 None,
-                None,
                 0.0,
                 "rate",
             ),
-            ("Twist at 1 kHz, latency (queue_size=100)", "twist", latency, 100, None, 0.001, "p50"),
             (
+                "latency",
+                "Twist at 1 kHz, latency (queue_size=100)",
+                "twist",
+                latency,
+                100,
+                0.001,
+                "p50",
+            ),
+            (
+                "image",
                 "1 MiB Image flood (queue_size=None)",
                 "image",
                 images // 5,
-                None,
                 None,
                 0.0,
                 "bytes_rate",
             ),
         ]
-        for title, kind, count, pq, sq, period, key in cases:
-            ros = run_case("rospy", master, kind, count, pq, sq, period)
-            rx = run_case("rosx", master, kind, count, pq, sq, period)
-            rows.append((title, ros, rx, key))
+        for name, title, kind, count, pq, period, key in cases:
+            if args.only and name != args.only:
+                continue
+            if key != "p50":
+                ros = run_case("rospy", master, kind, count, pq, None, period)
+                rx = run_case("rosx", master, kind, count, pq, None, period)
+                rows.append((title, ros, rx, key))
+                continue
+            # Latency: several rounds, alternating, the first `warmup` messages of each
+            # ignored; each library's figures are the medians over its rounds.
+            runs: dict[str, list[dict[str, float]]] = {"rospy": [], "rosx": []}
+            for _ in range(rounds):
+                for lib, results in runs.items():
+                    results.append(run_case(lib, master, kind, count, pq, None, period, warmup))
+            merged = []
+            for lib in ("rospy", "rosx"):
+                res = dict(runs[lib][-1])
+                for field in ("p50", "p99", "rate", "received", "lost"):
+                    res[field] = median([r[field] for r in runs[lib]])
+                res["rounds_p50"] = [round(r["p50"]) for r in runs[lib]]  # type: ignore[assignment]
+                merged.append(res)
+            rows.append((title, merged[0], merged[1], key))
     finally:
         proc.terminate()
         proc.wait()
@@ -253,8 +299,10 @@ def main() -> None:
                 parts.append(f"{res['bytes_rate'] / 2**30:.2f} GiB/s")
             else:
                 parts.append(f"{res['rate']:,.0f} msgs/s")
-            if "p50" in res:
+            if key == "p50":
                 parts.append(f"latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us")
+            if "rounds_p50" in res:
+                parts.append(f"(median of {rounds} rounds, p50s {res['rounds_p50']})")
             print(f"  {lib}: " + ", ".join(parts))
         base, mine = ros[key], rx[key]
         if key == "p50":

@@ -16,7 +16,9 @@ The contract:
   frames are kept when the callbacks fall behind (ROS 1's drop-oldest semantics); ``None`` keeps
   everything.
 * Whichever reader thread queued frames runs the callbacks, unless another one already is: the
-  callbacks of a topic never run concurrently, and run in the order the frames were queued.
+  callbacks of a topic never run concurrently, and run in the order the frames were queued. A
+  single frame read when nothing is queued and no callback is running skips the queue (same
+  order, one hand-off less on the latency path).
 * A frame is decoded lazily, once per decoder, just before its callbacks run. Callback
   exceptions go to ``on_error`` (rospy logs ``bad callback``) and reading goes on.
 * A stream that ends (peer closed, error, `Receiver.detach` shutting its socket down) has its
@@ -127,14 +129,27 @@ class Receiver:
     # -- the threads -------------------------------------------------------------------------
 
     def _read_loop(self, stream: IncomingStream) -> None:
+        queue = self._queue
+        lock = self._dispatching
         try:
             frames = stream.take_frames()  # what came with the header (a latched message)
             while frames is not None and not self._stopped:
                 if frames:
                     self.received += len(frames)
                     header = stream.header
-                    self._queue.extend([(frame, header, None) for frame in frames])
-                    self._dispatch_all()
+                    if len(frames) == 1 and not queue and lock.acquire(blocking=False):
+                        # Nothing waits and no callback runs: run this frame's callbacks now,
+                        # without the trip through the queue (the same order either way).
+                        try:
+                            if not self._stopped:
+                                self._dispatch((frames[0], header, None))
+                        finally:
+                            lock.release()
+                        if queue:
+                            self._dispatch_all()
+                    else:
+                        queue.extend([(frame, header, None) for frame in frames])
+                        self._dispatch_all()
                 frames = stream.read()
         finally:
             self._streams.discard(stream)
