@@ -2,14 +2,13 @@
 
 from __future__ import annotations
 
-import sys
 from collections.abc import Iterator
 
 import pytest
 
 from tests.support.cli import Result, clean_environ, rosx
-from tests.support.procs import free_port, port_open, running, wait_for
-from tests.support.ros1 import ROS1_PYTHON, needs_ros1, ros1_environ
+from tests.support.procs import running, wait_for
+from tests.support.ros1 import ROS1_PYTHON, ROSCORES, needs_ros1, ros1_environ, roscore
 
 pytestmark = needs_ros1
 
@@ -37,18 +36,11 @@ def graph_tool(uri: str, *argv: str) -> Result:
     return rosx("rqt_graph", *argv, environ=clean_environ(ROS_MASTER_URI=uri))
 
 
-@pytest.fixture(scope="module", params=["ros1-roscore", "rosx-roscore"])
+@pytest.fixture(scope="module", params=ROSCORES)
 def master(request: pytest.FixtureRequest) -> Iterator[str]:
     """A roscore (ROS 1's or rosx's) with a rospy talker and listener, connected; its URI."""
-    port = free_port()
-    uri = f"http://localhost:{port}"
-    env = ros1_environ(ROS_MASTER_URI=uri)
-    if request.param == "ros1-roscore":
-        core = ["/usr/bin/roscore", "-p", str(port)]
-    else:
-        core = [sys.executable, "-m", "rosx_commands", "roscore", "-p", str(port)]
-    with running(core, {**clean_environ(), "ROS_MASTER_URI": uri}):
-        wait_for(lambda: port_open(port), what="roscore")
+    with roscore(request.param) as uri:
+        env = ros1_environ(ROS_MASTER_URI=uri)
         with running([ROS1_PYTHON, "-c", TALKER], env), running([ROS1_PYTHON, "-c", LISTENER], env):
             # Active mode draws what the nodes report: wait for the listener's connection.
             wait_for(

@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import shutil
 import subprocess
+import sys
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -61,3 +64,24 @@ def ros1_python(script: str, **extra: str) -> Any:
         check=True,
     )
     return json.loads(done.stdout)
+
+
+#: The two masters interop tests run against.
+ROSCORES = ["ros1-roscore", "rosx-roscore"]
+
+
+@contextlib.contextmanager
+def roscore(kind: str) -> Iterator[str]:
+    """ROS 1's roscore (``ros1-roscore``) or rosx's (``rosx-roscore``) on a free port; its URI."""
+    from tests.support.procs import free_port, port_open, running, wait_for
+
+    port = free_port()
+    uri = f"http://localhost:{port}"
+    if kind == "ros1-roscore":
+        core = ["/usr/bin/roscore", "-p", str(port)]
+    else:
+        core = [sys.executable, "-m", "rosx_commands", "roscore", "-p", str(port)]
+    environ = {k: v for k, v in os.environ.items() if not k.startswith("ROS_")}
+    with running(core, {**environ, "ROS_MASTER_URI": uri}):
+        wait_for(lambda: port_open(port), what=kind)
+        yield uri
