@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import functools
 import json
 import os
 import shutil
@@ -16,6 +17,21 @@ import pytest
 
 ROS1_PYTHON = os.environ.get("ROS1_PYTHON", "/usr/bin/python3")
 OVERLAY = Path(os.environ.get("ROS1_OVERLAY", "/tmp/ros1-overlay"))
+
+
+@functools.cache
+def ros1_python_imports(*modules: str) -> bool:
+    """True when ROS 1's Python can import every one of ``modules``."""
+    try:
+        done = subprocess.run(
+            [ROS1_PYTHON, "-c", "import " + ", ".join(modules)],
+            capture_output=True,
+            timeout=60,
+            check=False,
+        )
+    except (OSError, subprocess.TimeoutExpired):
+        return False
+    return done.returncode == 0
 
 
 def ros1_available() -> bool:

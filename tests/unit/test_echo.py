@@ -13,7 +13,6 @@ import math
 import random
 import struct
 import subprocess
-from functools import cache
 from typing import Any
 
 import pytest
@@ -32,22 +31,11 @@ from rosx.msg.rostime import Duration, Time
 from rosx.msg.spec import PRIMITIVE_TYPES
 from rosx.msg.store import default_store
 from rosx.msg.yamlstr import quoted, string_list
+from tests.support.ros1 import ROS1_PYTHON, ros1_python_imports
 
-ROS1_PYTHON = "/usr/bin/python3"
 
-
-@cache
 def ros1_available() -> bool:
-    try:
-        done = subprocess.run(
-            [ROS1_PYTHON, "-c", "import genpy, genpy.dynamic, rostopic, yaml"],
-            capture_output=True,
-            timeout=60,
-            check=False,
-        )
-    except (OSError, subprocess.TimeoutExpired):
-        return False
-    return done.returncode == 0
+    return ros1_python_imports("genpy", "genpy.dynamic", "rostopic", "yaml")
 
 
 needs_ros1 = pytest.mark.skipif(not ros1_available(), reason="ROS 1 (genpy, rostopic) not found")

@@ -11,7 +11,6 @@ import random
 import re
 import subprocess
 import sys
-from functools import cache
 from typing import Any
 
 import pytest
@@ -29,23 +28,13 @@ from rosx.msg.yamlargs import (
     publish_error_text,
 )
 from rosx.msg.yamlload import YAMLLoadError, load, load_all, load_stream, split_stream
+from tests.support.ros1 import ROS1_PYTHON, ros1_python_imports
 
-ROS1_PYTHON = "/usr/bin/python3"
 NOW = Time(1700000000, 500)
 
 
-@cache
 def ros1_available() -> bool:
-    try:
-        done = subprocess.run(
-            [ROS1_PYTHON, "-c", "import genpy, genpy.dynamic, rostopic, rosservice, yaml"],
-            capture_output=True,
-            timeout=60,
-            check=False,
-        )
-    except (OSError, subprocess.TimeoutExpired):
-        return False
-    return done.returncode == 0
+    return ros1_python_imports("genpy", "genpy.dynamic", "rostopic", "rosservice", "yaml")
 
 
 needs_ros1 = pytest.mark.skipif(not ros1_available(), reason="ROS 1 (genpy, rostopic) not found")

@@ -13,7 +13,6 @@ import math
 import random
 import string
 import subprocess
-from functools import cache
 from typing import Any
 
 import pytest
@@ -28,8 +27,7 @@ from rosx.msg.yamlparams import (
     load_documents,
     load_value,
 )
-
-ROS1_PYTHON = "/usr/bin/python3"
+from tests.support.ros1 import ROS1_PYTHON, ros1_python_imports
 
 # -- reading ---------------------------------------------------------------------------------
 
@@ -202,18 +200,8 @@ def test_floats_as_pyyaml_represents_them(value: float, text: str) -> None:
 # -- against PyYAML itself -------------------------------------------------------------------
 
 
-@cache
 def ros1_yaml() -> bool:
-    try:
-        done = subprocess.run(
-            [ROS1_PYTHON, "-c", "import yaml, rosparam"],
-            capture_output=True,
-            timeout=60,
-            check=False,
-        )
-    except (OSError, subprocess.TimeoutExpired):
-        return False
-    return done.returncode == 0
+    return ros1_python_imports("yaml", "rosparam")
 
 
 ORACLE = """
