@@ -142,10 +142,20 @@ def test_dot_has_rqt_graphs_shapes() -> None:
 
 
 def test_text_drawing_of_lab1() -> None:
-    assert str(draw(build(lab1(), GraphOptions(mode=Mode.ACTIVE)))) == (
+    assert str(draw(build(lab1(), GraphOptions(mode=Mode.ACTIVE, group_depth=0)))) == (
         "╭────────────────╮      ┌──────────────────┐      ╭────────────╮\n"
         "│ /teleop_turtle │─────▶│ /turtle1/cmd_vel │─────▶│ /turtlesim │\n"
         "╰────────────────╯      └──────────────────┘      ╰────────────╯"
+    )
+
+
+def test_text_drawing_frames_namespaces_as_rqt_graph_groups_them() -> None:
+    assert str(draw(build(lab1(), GraphOptions(mode=Mode.ACTIVE)))) == (
+        "                        ┌╌ /turtle1 ╌╌╌╌╌╌╌╌╌╌╌┐\n"
+        "╭────────────────╮      ╎ ┌──────────────────┐ ╎      ╭────────────╮\n"
+        "│ /teleop_turtle │──────╎▶│ /turtle1/cmd_vel │─╎─────▶│ /turtlesim │\n"
+        "╰────────────────╯      ╎ └──────────────────┘ ╎      ╰────────────╯\n"
+        "                        └╌╌╌╌╌╌╌╌╌╌╌╌╌╌╌╌╌╌╌╌╌╌┘"
     )
 
 
