@@ -82,3 +82,26 @@ def changes(before: ViewGraph | None, after: ViewGraph) -> Changes:
         frozenset(set(after.edges) - set(before.edges)),
         frozenset(set(before.edges) - set(after.edges)),
     )
+
+
+def vanished(before: ViewGraph, after: ViewGraph) -> ViewGraph:
+    """What ``before`` holds and ``after`` does not: its vertices, and its edges."""
+    ids = {v.id for v in after.vertices}
+    edges = set(after.edges)
+    return ViewGraph(
+        tuple(v for v in before.vertices if v.id not in ids),
+        tuple(e for e in before.edges if e not in edges),
+    )
+
+
+def with_ghosts(graph: ViewGraph, ghosts: ViewGraph) -> ViewGraph:
+    """``graph`` with what vanished from it (``ghosts``) drawn in again, so a view can show it
+    faded: the ghost vertices, and the ghost edges whose ends are still drawn."""
+    ids = {v.id for v in graph.vertices}
+    vertices = graph.vertices + tuple(v for v in ghosts.vertices if v.id not in ids)
+    present = {v.id for v in vertices}
+    edges = set(graph.edges)
+    extra = tuple(
+        e for e in ghosts.edges if e not in edges and e.source in present and e.target in present
+    )
+    return ViewGraph(vertices, graph.edges + extra) if ghosts.vertices or extra else graph

@@ -6,16 +6,26 @@ from collections.abc import Callable
 from typing import Any
 
 from textual.pilot import Pilot
-from textual.widgets import Static
+from textual.widgets import Input, Static
 
 from rosx.graph.options import GraphOptions, Mode
 from rosx.graph.state import GraphState
 from rosx.graph.view import Vertex
 from rosx_commands.rqt_graph.app import GraphApp, make_graph_app
+from rosx_commands.rqt_graph.view import (
+    APPEARED,
+    LINKED,
+    NODE,
+    SELECTED,
+    VANISHED,
+    GraphView,
+)
 from tests.graph.states import lab1
 from tests.tui.conftest import SNAPSHOT_SIZE, run
 
 SnapCompare = Callable[..., bool]
+#: Wide enough for Lab 1's graph beside the details panel.
+WIDE = (140, 32)
 
 
 class StaticSource:
@@ -42,9 +52,35 @@ def status(app: GraphApp) -> str:
     return str(app.query_one("#status", Static).render())
 
 
+def info(app: GraphApp) -> str:
+    return str(app.query_one("#info", Static).render())
+
+
 async def settle(pilot: Pilot[Any]) -> None:
     await pilot.app.workers.wait_for_complete()
     await pilot.pause()
+
+
+MARKS = {"appeared": APPEARED, "vanished": VANISHED, "selected": SELECTED}
+MARKS |= {"linked": LINKED, "node": NODE}
+
+
+def mark_at(app: GraphApp, text: str, nth: int = 0) -> str | None:
+    """How the view marks the ``nth`` ``text`` on screen: a name of `MARKS`, or None when it
+    is plain."""
+    view = app.query_one(GraphView)
+    base = view.rich_style
+    found = []
+    for y in range(view.scrollable_content_region.height):
+        strip = view.render_line(y)
+        found += [seg.style for seg in strip for _ in range(seg.text.count(text))]
+        if strip.text.count(text) > sum(seg.text.count(text) for seg in strip):
+            raise AssertionError(f"{text!r} is split over several styles: {strip.text!r}")
+    if len(found) <= nth:
+        raise AssertionError(f"{text!r} not on screen {nth + 1} times")
+    if found[nth] == base:
+        return None
+    return next(k for k, style in MARKS.items() if base + style == found[nth])
 
 
 def test_refresh_marks_what_vanished_and_selection_shows_details() -> None:
@@ -52,22 +88,135 @@ def test_refresh_marks_what_vanished_and_selection_shows_details() -> None:
     app = make_graph_app(source, GraphOptions(mode=Mode.ACTIVE))
 
     async def drive() -> None:
-        async with app.run_test(size=SNAPSHOT_SIZE) as pilot:
+        async with app.run_test(size=WIDE) as pilot:
             await settle(pilot)
             assert "t:/turtle1/cmd_vel" in app.drawing.boxes
             assert "Nodes/Topics (active) │ 2 nodes, 1 topics" in status(app)
+            assert mark_at(app, "/turtle1/cmd_vel") is None
             source.state = lab1(teleop_connected=False)
             await pilot.press("r")
             await settle(pilot)
-            assert "changed: - /turtle1/cmd_vel" in status(app)
+            assert "2 nodes, 0 topics │ changed: - /turtle1/cmd_vel" in status(app)
+            # what vanished is still drawn, faded, with its edges
+            assert "t:/turtle1/cmd_vel" in app.drawing.boxes
+            assert mark_at(app, "/turtle1/cmd_vel") == "vanished"
+            assert mark_at(app, "▶") == "vanished"
+            await pilot.press("r")  # the same graph again: the marks stay
+            await settle(pilot)
+            assert mark_at(app, "/turtle1/cmd_vel") == "vanished"
             await pilot.press("tab")
             await settle(pilot)
             assert app.selected == "n:/teleop_turtle"
-            assert "Node [/teleop_turtle]" in str(app.query_one("#info", Static).render())
+            assert "Node [/teleop_turtle]" in info(app)
+            await pilot.press("tab")
+            await settle(pilot)
+            assert app.selected == "t:/turtle1/cmd_vel"
+            assert info(app) == "/turtle1/cmd_vel: gone"
+            source.state = lab1()
+            await pilot.press("r")
+            await settle(pilot)
+            assert "changed: + /turtle1/cmd_vel" in status(app)
+            assert mark_at(app, "/turtle1/cmd_vel") == "selected"
             await pilot.press("m")
             await settle(pilot)
             assert app.options.mode is Mode.ALL
+            assert "changed" not in status(app)  # a new view, not a change
         assert source.closed
+
+    run(drive())
+
+
+def test_what_appears_is_marked_and_a_selection_lights_its_edges() -> None:
+    source = StaticSource(lab1(teleop_connected=False))
+    app = make_graph_app(source, GraphOptions(mode=Mode.ACTIVE, group_depth=0))
+
+    async def drive() -> None:
+        async with app.run_test(size=WIDE) as pilot:
+            await settle(pilot)
+            source.state = lab1()
+            await pilot.press("r")
+            await settle(pilot)
+            assert "changed: + /turtle1/cmd_vel" in status(app)
+            assert mark_at(app, "/turtle1/cmd_vel") == "appeared"
+            assert mark_at(app, "─────▶") == "appeared"
+            assert mark_at(app, "/turtlesim") == "node"
+            await pilot.press("shift+tab")  # backwards from nothing: the last one
+            await settle(pilot)
+            assert app.selected == "n:/turtlesim"
+            assert mark_at(app, "/turtlesim") == "selected"
+            assert mark_at(app, "─────▶", 0) == "appeared"
+            assert mark_at(app, "─────▶", 1) == "linked"
+            assert "Node [/turtlesim]" in info(app)
+
+    run(drive())
+
+
+def test_filters_and_namespace_groups_are_keys() -> None:
+    source = StaticSource(lab1())
+    app = make_graph_app(source, GraphOptions(mode=Mode.ACTIVE))
+
+    async def drive() -> None:
+        async with app.run_test(size=WIDE) as pilot:
+            await settle(pilot)
+            assert [f.namespace for f in app.drawing.frames] == ["/turtle1"]
+            await pilot.press("g")  # 2 -> 3 -> 0
+            await settle(pilot)
+            await pilot.press("g")
+            await settle(pilot)
+            assert app.options.group_depth == 0
+            assert app.drawing.frames == ()
+            await pilot.press("n")
+            line = app.query_one("#filter", Input)
+            assert line.has_focus and line.value == "/"
+            await pilot.press("backspace", *"-/teleop_turtle", "enter")
+            await settle(pilot)
+            assert app.options.namespace_filter == "-/teleop_turtle"
+            assert set(app.drawing.boxes) == {"n:/turtlesim", "t:/turtle1/cmd_vel"}
+            assert "Nodes/Topics (active) │ 1 nodes, 1 topics" in status(app)
+            await pilot.press("t")
+            await pilot.press("backspace", *"(", "enter")
+            await settle(pilot)
+            assert "ERROR: bad filter '('" in status(app)
+            assert line.has_focus and app.options.topic_filter == "/"
+            await pilot.press("escape")
+            assert app.query_one(GraphView).has_focus
+            await pilot.press("n", "ctrl+u", "enter")  # empty: everything, as rqt_graph's "/"
+            await settle(pilot)
+            assert app.options.namespace_filter == "/"
+            assert "t:/turtle1/cmd_vel" in app.drawing.boxes
+            assert "ERROR" not in status(app)
+
+    run(drive())
+
+
+def chain(nodes: int) -> GraphState:
+    """``/n0 -> /t0 -> /n1 -> /t1 -> ...``, each topic with a second, parallel subscriber."""
+    pubs = {f"/t{i}": (f"/n{i}",) for i in range(nodes - 1)}
+    subs = {f"/t{i}": (f"/n{i + 1}", f"/side{i}") for i in range(nodes - 1)}
+    return GraphState(pubs, subs)
+
+
+def test_the_view_pans_over_a_drawing_larger_than_the_screen() -> None:
+    app = make_graph_app(StaticSource(chain(40)), GraphOptions(mode=Mode.ALL))
+
+    async def drive() -> None:
+        async with app.run_test(size=SNAPSHOT_SIZE) as pilot:
+            await settle(pilot)
+            view = app.query_one(GraphView)
+            lines = app.drawing.lines
+            width = max(map(len, lines))
+            assert width > 1000
+            assert (view.virtual_size.width, view.virtual_size.height) == (width, len(lines))
+            for keys in ([], ["end"], ["right"] * 30, ["pagedown"], ["home"]):
+                await pilot.press(*keys)
+                await pilot.pause()
+                x, y = view.scroll_offset
+                seen = view.visible_text()
+                w = view.scrollable_content_region.width
+                expected = [line[x : x + w].ljust(w) for line in lines[y : y + len(seen)]]
+                expected += [" " * w] * (len(seen) - len(expected))
+                assert seen == expected, keys
+            assert view.scroll_offset == (0, 0)
 
     run(drive())
 
@@ -86,3 +235,16 @@ def test_snapshot_active_mode_with_a_topic_selected(snap_compare: SnapCompare) -
 def test_snapshot_nodes_only(snap_compare: SnapCompare) -> None:
     app = make_graph_app(StaticSource(lab1()))
     assert snap_compare(app, terminal_size=SNAPSHOT_SIZE, run_before=settle)
+
+
+def test_snapshot_a_vanished_topic_drawn_faded(snap_compare: SnapCompare) -> None:
+    source = StaticSource(lab1())
+    app = make_graph_app(source, GraphOptions(mode=Mode.ACTIVE))
+
+    async def vanish(pilot: Pilot[Any]) -> None:
+        await settle(pilot)
+        source.state = lab1(teleop_connected=False)
+        await pilot.press("r")
+        await settle(pilot)
+
+    assert snap_compare(app, terminal_size=SNAPSHOT_SIZE, run_before=vanish)

@@ -1,43 +1,77 @@
 """`GraphApp`: rqt_graph in the terminal: the drawing, a details panel, a status line.
 
 A timer starts a refresh on a worker thread every period (and ``r`` at once); the worker
-fetches, builds and draws, and hands the result to the UI with ``call_from_thread``. ``tab`` /
-``shift+tab`` select the next / previous node or topic, whose ``rosnode info`` /
-``rostopic info`` (and a topic's live rate) show on the right; ``m`` cycles the modes, ``d``
-toggles hiding debug names, ``q`` quits.
+fetches, builds and draws, and hands the result to the UI with ``call_from_thread``, so the
+view pans and answers keys while a large graph is laid out. What appeared since the refresh
+before is green; what vanished stays drawn, faded red, until the graph changes again; the
+status line names both.
+
+``tab`` / ``shift+tab`` select the next / previous node or topic: its edges light up (as
+rqt_graph's highlight), and its ``rosnode info`` / ``rostopic info`` (and a topic's live rate)
+show on the right. rqt_graph's controls are keys: ``m`` cycles the modes, ``n`` and ``t`` edit
+the namespace and topic filters, ``g`` the depth of namespace groups, ``d`` toggles hiding
+debug names; ``q`` quits.
 """
 
 from __future__ import annotations
 
 import dataclasses
+from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 from rich.text import Text
 from textual.app import App, ComposeResult  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import Horizontal, VerticalScroll  # noqa: TID253 - TUI code
-from textual.widgets import Footer, Static  # noqa: TID253 - TUI code
+from textual.widgets import Footer, Input, Static  # noqa: TID253 - TUI code
+from textual.worker import get_current_worker  # noqa: TID253 - TUI code
 
 from rosx.graph.builder import build
-from rosx.graph.options import GraphOptions, Mode
+from rosx.graph.options import GraphOptions, Mode, NameFilter
 from rosx.graph.text import Drawing, draw
-from rosx.graph.view import Changes, Kind, ViewGraph, changes
+from rosx.graph.view import Changes, Kind, ViewGraph, changes, vanished, with_ghosts
 from rosx_commands.rqt_graph.source import GraphSource
-from rosx_commands.rqt_graph.view import GraphView
+from rosx_commands.rqt_graph.view import GraphView, Marks
 
 _MODES = list(Mode)
+#: Deepest namespace groups ``g`` steps through before going back to none.
+MAX_GROUP_DEPTH = 3
+_FILTERS = {"namespace_filter": "Namespace filter", "topic_filter": "Topic filter"}
+
+
+@dataclass(frozen=True)
+class History:
+    """The last graph shown, the changes it brought and what vanished with them."""
+
+    graph: ViewGraph | None = None
+    changes: Changes = field(default_factory=Changes)
+    ghosts: ViewGraph = field(default_factory=ViewGraph)
+
+    def after(self, graph: ViewGraph) -> History:
+        """The history once ``graph`` is shown; an unchanged graph keeps the marks."""
+        if self.graph is None:
+            return History(graph)
+        diff = changes(self.graph, graph)
+        if not diff:
+            return dataclasses.replace(self, graph=graph)
+        return History(graph, diff, vanished(self.graph, graph))
 
 
 class GraphApp(App[int]):
     CSS = """
     #details { width: 48; border-left: solid $primary; padding: 0 1; }
     #status { height: 1; background: $boost; }
+    #filter { display: none; }
+    #filter.editing { display: block; }
     """
     BINDINGS: ClassVar[list[BindingType]] = [
         Binding("r", "refresh_graph", "Refresh"),
         Binding("tab", "select(1)", "Next", priority=True),
         Binding("shift+tab", "select(-1)", "Previous", priority=True),
         Binding("m", "next_mode", "Mode"),
+        Binding("n", "edit_filter('namespace_filter')", "Nodes filter"),
+        Binding("t", "edit_filter('topic_filter')", "Topics filter"),
+        Binding("g", "next_group_depth", "Groups"),
         Binding("d", "toggle_debug", "Debug"),
         Binding("q", "quit", "Quit"),
     ]
@@ -49,11 +83,20 @@ class GraphApp(App[int]):
         self.source = source
         self.options = options
         self.period = period
-        self.graph: ViewGraph | None = None
+        self.history = History()
         self.drawing = Drawing()
-        self.changes = Changes()
         self.selected: str | None = None
         self.error: str | None = None
+        self._editing: str | None = None
+
+    @property
+    def graph(self) -> ViewGraph | None:
+        """The graph last shown (what vanished from it not included)."""
+        return self.history.graph
+
+    @property
+    def changes(self) -> Changes:
+        return self.history.changes
 
     def compose(self) -> ComposeResult:
         yield Static(id="status")
@@ -61,9 +104,12 @@ class GraphApp(App[int]):
             yield GraphView(id="graph")
             with VerticalScroll(id="details"):
                 yield Static("Select a node or topic with tab.", id="info")
+        yield Input(id="filter")
         yield Footer()
 
     def on_mount(self) -> None:
+        self.query_one(GraphView).focus()
+        self._status()
         self.action_refresh_graph()
         if self.period:
             self.set_interval(self.period, self.action_refresh_graph)
@@ -72,35 +118,41 @@ class GraphApp(App[int]):
         self.run_worker(self._refresh, thread=True, exclusive=True, group="refresh")
 
     def _refresh(self) -> None:
-        options = self.options
+        options, history = self.options, self.history
         try:
             graph = build(self.source.snapshot(), options)
         except Exception as error:
             self.call_from_thread(self._failed, str(error) or type(error).__name__)
             return
-        drawing = draw(graph)
-        self.call_from_thread(self._show, graph, drawing, options)
+        history = history.after(graph)
+        drawing = draw(with_ghosts(graph, history.ghosts))
+        if not get_current_worker().is_cancelled:
+            self.call_from_thread(self._show, history, drawing, options)
 
     def _failed(self, message: str) -> None:
         self.error = message
         self._status()
 
-    def _show(self, graph: ViewGraph, drawing: Drawing, options: GraphOptions) -> None:
+    def _show(self, history: History, drawing: Drawing, options: GraphOptions) -> None:
         if options != self.options:
             return  # drawn for options changed since; a newer refresh is on its way
-        self.changes = changes(self.graph, graph) or self.changes if self.graph else Changes()
-        self.graph, self.drawing, self.error = graph, drawing, None
+        self.history, self.drawing, self.error = history, drawing, None
         if self.selected not in drawing.boxes:
             self.selected = None
         self._status()
-        self.query_one(GraphView).show(drawing, self.changes, self.selected)
+        self._redraw()
         self._details()
+
+    def _redraw(self) -> None:
+        self.query_one(GraphView).show(self.drawing, Marks(self.changes, self.selected))
 
     def _status(self) -> None:
         graph = self.graph or ViewGraph()
         nodes = sum(v.kind is Kind.NODE for v in graph.vertices)
         topics = len(graph.vertices) - nodes
         text = f" {self.options.mode.caption} │ {nodes} nodes, {topics} topics"
+        if self.graph is None and self.error is None:
+            text += " │ reading the graph…"
         if self.changes:
             text += f" │ changed: {self.changes.summary()}"
         if self.error:
@@ -108,19 +160,25 @@ class GraphApp(App[int]):
         self.query_one("#status", Static).update(Text(text))
 
     def action_select(self, step: int) -> None:
-        order = sorted(
-            self.drawing.boxes, key=lambda i: (self.drawing.boxes[i].x, self.drawing.boxes[i].y)
-        )
+        if self._editing:
+            return
+        boxes = self.drawing.boxes
+        order = sorted(boxes, key=lambda i: (boxes[i].x, boxes[i].y))
         if not order:
             return
-        index = order.index(self.selected) + step if self.selected in order else 0
+        if self.selected in order:
+            index = order.index(self.selected) + step
+        else:
+            index = 0 if step > 0 else -1
         self.selected = order[index % len(order)]
-        self.query_one(GraphView).show(self.drawing, self.changes, self.selected)
+        self._redraw()
         self._details()
 
     def _details(self) -> None:
         vertex = self.graph.vertex(self.selected) if self.graph and self.selected else None
         if vertex is None:
+            if self.selected:  # a vertex that vanished, still drawn faded
+                self.query_one("#info", Static).update(Text(f"{self.selected[2:]}: gone"))
             return
         self.run_worker(lambda: self._describe(vertex), thread=True, exclusive=True, group="info")
 
@@ -141,9 +199,49 @@ class GraphApp(App[int]):
     def action_toggle_debug(self) -> None:
         self._set_options(dataclasses.replace(self.options, hide_debug=not self.options.hide_debug))
 
+    def action_next_group_depth(self) -> None:
+        depth = (self.options.group_depth + 1) % (MAX_GROUP_DEPTH + 1)
+        self._set_options(dataclasses.replace(self.options, group_depth=depth))
+
+    def action_edit_filter(self, which: str) -> None:
+        """Open the filter line for ``namespace_filter`` or ``topic_filter``."""
+        self._editing = which
+        line = self.query_one("#filter", Input)
+        line.border_title = f"{_FILTERS[which]} (comma list, -name excludes; enter applies)"
+        line.value = getattr(self.options, which)
+        line.add_class("editing")
+        line.focus()
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        which, text = self._editing, event.value.strip() or "/"
+        if which is None:
+            return
+        try:
+            NameFilter.parse(text)
+        except ValueError as error:
+            self.error = str(error)
+            self._status()
+            return  # the line stays open for a fix
+        self._close_filter()
+        if which == "namespace_filter":
+            self._set_options(dataclasses.replace(self.options, namespace_filter=text))
+        else:
+            self._set_options(dataclasses.replace(self.options, topic_filter=text))
+
+    def key_escape(self) -> None:
+        if self._editing:
+            self._close_filter()
+
+    def _close_filter(self) -> None:
+        self._editing = None
+        self.query_one("#filter", Input).remove_class("editing")
+        self.query_one(GraphView).focus()
+
     def _set_options(self, options: GraphOptions) -> None:
         self.options = options
-        self.graph = None  # a new view, not a change of the graph
+        self.history = History()  # a new view, not a change of the graph
+        self.error = None
+        self._status()
         self.action_refresh_graph()
 
     def on_unmount(self) -> None:
