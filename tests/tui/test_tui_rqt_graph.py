@@ -6,26 +6,18 @@ from collections.abc import Callable
 from typing import Any
 
 from textual.pilot import Pilot
-from textual.widgets import Input, Static
+from textual.widgets import Input
 
 from rosx.graph.options import GraphOptions, Mode
 from rosx.graph.state import GraphState
 from rosx.graph.view import Vertex
-from rosx_commands.rqt_graph.app import GraphApp, make_graph_app
-from rosx_commands.rqt_graph.view import (
-    APPEARED,
-    LINKED,
-    NODE,
-    SELECTED,
-    VANISHED,
-    GraphView,
-)
+from rosx_commands.rqt_graph.app import make_graph_app
+from rosx_commands.rqt_graph.view import GraphView
 from tests.graph.states import lab1
 from tests.tui.conftest import SNAPSHOT_SIZE, run
+from tests.tui.graph_pilot import WIDE, info, mark_at, settle, status
 
 SnapCompare = Callable[..., bool]
-#: Wide enough for Lab 1's graph beside the details panel.
-WIDE = (140, 32)
 
 
 class StaticSource:
@@ -46,41 +38,6 @@ class StaticSource:
 
     def close(self) -> None:
         self.closed = True
-
-
-def status(app: GraphApp) -> str:
-    return str(app.query_one("#status", Static).render())
-
-
-def info(app: GraphApp) -> str:
-    return str(app.query_one("#info", Static).render())
-
-
-async def settle(pilot: Pilot[Any]) -> None:
-    await pilot.app.workers.wait_for_complete()
-    await pilot.pause()
-
-
-MARKS = {"appeared": APPEARED, "vanished": VANISHED, "selected": SELECTED}
-MARKS |= {"linked": LINKED, "node": NODE}
-
-
-def mark_at(app: GraphApp, text: str, nth: int = 0) -> str | None:
-    """How the view marks the ``nth`` ``text`` on screen: a name of `MARKS`, or None when it
-    is plain."""
-    view = app.query_one(GraphView)
-    base = view.rich_style
-    found = []
-    for y in range(view.scrollable_content_region.height):
-        strip = view.render_line(y)
-        found += [seg.style for seg in strip for _ in range(seg.text.count(text))]
-        if strip.text.count(text) > sum(seg.text.count(text) for seg in strip):
-            raise AssertionError(f"{text!r} is split over several styles: {strip.text!r}")
-    if len(found) <= nth:
-        raise AssertionError(f"{text!r} not on screen {nth + 1} times")
-    if found[nth] == base:
-        return None
-    return next(k for k, style in MARKS.items() if base + style == found[nth])
 
 
 def test_refresh_marks_what_vanished_and_selection_shows_details() -> None:
