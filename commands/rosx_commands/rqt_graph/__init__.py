@@ -19,7 +19,9 @@ REFRESH_PERIOD = 1.5
 
 USAGE = """usage: %prog [options]
 
-Show the ROS graph: nodes (round boxes), topics (square boxes) and who publishes to whom."""
+Show the ROS graph: nodes (round boxes), topics (square boxes), namespaces (dotted frames)
+and who publishes to whom. On a terminal the view is live: r refreshes, tab selects, m mode,
+n/t node/topic filter, g namespace depth, d debug names, q quits."""
 
 
 def _parser(env: Environment) -> ToolParser:
