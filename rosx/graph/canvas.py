@@ -4,9 +4,11 @@ Lines are kept as sets of directions per cell (up, down, left, right) and turned
 characters at the end, so a line meeting another becomes ``┬``, ``├`` or ``┼`` by itself;
 text written on top (boxes, labels, arrowheads) wins over lines.
 
-Each row is a `bytearray` of direction bits: a horizontal line ORs its bits into a slice of
-the row in one `bytes.translate` call, and a row becomes text with one `str.translate`, so a
-drawing thousands of characters wide costs no Python object per cell.
+The cells are one `bytearray` of direction bits, row after row, each row ``stride`` cells
+long: a line ORs its bits into a slice of it (a vertical line's slice steps by ``stride``) in
+one `bytes.translate` call, and the whole grid becomes text through UTF-16 (two more
+translations), so a drawing thousands of characters wide and tall costs no Python work per
+cell.
 """
 
 from __future__ import annotations
@@ -34,71 +36,85 @@ _JUNCTIONS = {
 
 #: ``_OR[bits]`` maps every byte ``b`` to ``b | bits`` (a `bytes.translate` table).
 _OR = [bytes(b | bits for b in range(256)) for bits in range(16)]
-#: Direction bits (as latin-1 characters) to their junction character.
-_TO_TEXT = str.maketrans({chr(bits): char for bits, char in _JUNCTIONS.items()})
+#: Direction bits to the low and the high byte of their junction character in UTF-16.
+_CHARS = [ord(_JUNCTIONS.get(b, chr(b))) for b in range(256)]
+_LOW = bytes(c & 0xFF for c in _CHARS)
+_HIGH = bytes(c >> 8 for c in _CHARS)
 
 
 class Canvas:
     """A character grid, ``width`` by ``height`` to begin with, growing to hold what is drawn."""
 
     def __init__(self, width: int = 0, height: int = 0) -> None:
-        self._rows = [bytearray(width) for _ in range(height)]
+        self._stride = max(width, 1)
+        self._cells = bytearray(self._stride * height)
         self._text: dict[int, list[tuple[int, str]]] = {}
         self.width = 0
         self.height = 0
 
-    def _row(self, y: int, x: int) -> bytearray:
-        """Row ``y``, long enough for column ``x``; the canvas grows to hold it."""
-        rows = self._rows
-        while len(rows) <= y:
-            rows.append(bytearray())
-        row = rows[y]
-        if len(row) <= x:
-            row.extend(bytes(x + 1 - len(row)))
-        if x >= self.width:
-            self.width = x + 1
-        if y >= self.height:
-            self.height = y + 1
-        return row
+    def _reach(self, x: int, y: int) -> None:
+        """Make cell ``(x, y)`` part of the canvas, growing the cells to hold it."""
+        if x >= self._stride:
+            self._widen(max(x + 1, 2 * self._stride))
+        end = (y + 1) * self._stride
+        if end > len(self._cells):
+            self._cells.extend(bytes(end - len(self._cells)))
+        self.width = max(self.width, x + 1)
+        self.height = max(self.height, y + 1)
+
+    def _widen(self, stride: int) -> None:
+        old, cells = self._stride, self._cells
+        wider = bytearray(stride * (len(cells) // old))
+        for y in range(len(cells) // old):
+            wider[y * stride : y * stride + old] = cells[y * old : (y + 1) * old]
+        self._stride, self._cells = stride, wider
 
     def hline(self, y: int, x0: int, x1: int) -> None:
         """A horizontal line from column ``x0`` to ``x1`` (either order), ends included."""
         if x0 > x1:
             x0, x1 = x1, x0
-        rows = self._rows
-        row = rows[y] if y < len(rows) and x1 < len(rows[y]) else self._row(y, x1)
         if x1 >= self.width or y >= self.height:
-            self._row(y, x1)
-        if x0 == x1:
-            row[x0] |= LEFT | RIGHT
+            self._reach(x1, y)
+        cells = self._cells
+        start = y * self._stride + x0
+        end = start + x1 - x0
+        if start == end:
+            cells[start] |= LEFT | RIGHT
             return
-        row[x0] |= RIGHT
-        if x1 - x0 > 1:
-            row[x0 + 1 : x1] = row[x0 + 1 : x1].translate(_OR[LEFT | RIGHT])
-        row[x1] |= LEFT
+        cells[start] |= RIGHT
+        if end - start > 1:
+            cells[start + 1 : end] = cells[start + 1 : end].translate(_OR[LEFT | RIGHT])
+        cells[end] |= LEFT
 
     def vline(self, x: int, y0: int, y1: int) -> None:
         """A vertical line from row ``y0`` to ``y1`` (either order), ends included."""
         y0, y1 = min(y0, y1), max(y0, y1)
         if y0 == y1:
             return
-        self._row(y1, x)
-        rows = self._rows
-        self._row(y0, x)[x] |= DOWN
-        for y in range(y0 + 1, y1):
-            row = rows[y] if len(rows[y]) > x else self._row(y, x)
-            row[x] |= UP | DOWN
-        rows[y1][x] |= UP
+        if x >= self.width or y1 >= self.height:
+            self._reach(x, y1)
+        cells, stride = self._cells, self._stride
+        top = y0 * stride + x
+        bottom = y1 * stride + x
+        cells[top] |= DOWN
+        inner = slice(top + stride, bottom, stride)
+        cells[inner] = cells[inner].translate(_OR[UP | DOWN])
+        cells[bottom] |= UP
 
     def write(self, x: int, y: int, text: str) -> None:
         self._text.setdefault(y, []).append((x, text))
-        self._row(y, x + len(text) - 1)
+        self._reach(x + len(text) - 1, y)
 
     def lines(self) -> list[str]:
-        width = self.width
+        width, stride = self.width, self._stride
+        cells = self._cells[: stride * self.height]
+        utf16 = bytearray(2 * len(cells))
+        utf16[0::2] = cells.translate(_LOW)
+        utf16[1::2] = cells.translate(_HIGH)
+        grid = utf16.decode("utf-16-le")
         out = []
-        for y, row in enumerate(self._rows[: self.height]):
-            line = row.decode("latin-1").translate(_TO_TEXT).ljust(width)
+        for y in range(self.height):
+            line = grid[y * stride : y * stride + width]
             for x, text in self._text.get(y, ()):
                 line = line[:x] + text + line[x + len(text) :]
             out.append(line.rstrip())
