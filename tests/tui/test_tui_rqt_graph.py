@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import asyncio
+import time
 from collections.abc import Callable
 from typing import Any
 
@@ -205,3 +207,31 @@ def test_snapshot_a_vanished_topic_drawn_faded(snap_compare: SnapCompare) -> Non
         await settle(pilot)
 
     assert snap_compare(app, terminal_size=SNAPSHOT_SIZE, run_before=vanish)
+
+
+class SlowSource(StaticSource):
+    """Takes longer to read than the view's period; counts how often it is read."""
+
+    def __init__(self, state: GraphState, delay: float) -> None:
+        super().__init__(state)
+        self.delay = delay
+        self.reads = 0
+
+    def snapshot(self) -> GraphState:
+        self.reads += 1
+        time.sleep(self.delay)
+        return self.state
+
+
+def test_timer_refreshes_do_not_pile_up_behind_a_slow_one() -> None:
+    source = SlowSource(lab1(), delay=0.5)
+    app = make_graph_app(source, GraphOptions(mode=Mode.ACTIVE), period=0.05)
+
+    async def drive() -> None:
+        async with app.run_test(size=WIDE) as pilot:
+            await asyncio.sleep(1.2)  # 24 periods
+            assert 2 <= source.reads <= 3
+            await settle(pilot)
+            assert "t:/turtle1/cmd_vel" in app.drawing.boxes
+
+    run(drive())

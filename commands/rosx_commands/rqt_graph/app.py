@@ -112,7 +112,13 @@ class GraphApp(App[int]):
         self._status()
         self.action_refresh_graph()
         if self.period:
-            self.set_interval(self.period, self.action_refresh_graph)
+            self.set_interval(self.period, self._tick)
+
+    def _tick(self) -> None:
+        """The timer's refresh; skipped while one is under way, so a graph that takes longer
+        than a period to lay out does not pile up refreshes."""
+        if not any(w.group == "refresh" and w.is_running for w in self.workers):
+            self.action_refresh_graph()
 
     def action_refresh_graph(self) -> None:
         self.run_worker(self._refresh, thread=True, exclusive=True, group="refresh")
