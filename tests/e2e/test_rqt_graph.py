@@ -7,6 +7,7 @@ when it shuts down, the next drawing no longer has it (Lab 1's third question).
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 from collections.abc import Iterator
@@ -18,6 +19,7 @@ from rosx.msg.classes import get_message_class
 from rosx.node import Node
 from tests.support.cli import clean_environ
 from tests.support.procs import free_port, port_open, running, wait_for
+from tests.tui.terminal import on_a_terminal
 
 README = Path(__file__).parents[2] / "README.md"
 NODES_ONLY = (
@@ -91,3 +93,21 @@ def test_teleop_to_turtlesim_and_gone_after_teleop_stops(world: World) -> None:
     everything = world.rqt_graph("--mode", "all", "--show-leaf-topics", "--show-dead-sinks")
     assert "/turtlesim" in everything
     assert "/turtle1/pose" in everything
+
+
+def test_on_a_terminal_the_live_view_draws_the_graph_and_q_quits(world: World) -> None:
+    teleop = Node("teleop_turtle", master_uri=world.uri, environ={}).start()
+    try:
+        teleop.advertise("/turtle1/cmd_vel", get_message_class("geometry_msgs/Twist"))
+        wait_for(world.connected, what="teleop connected to turtlesim")
+        args = [sys.executable, "-m", "rosx_commands", "rqt_graph", "--period", "0.5"]
+        with on_a_terminal(args, ROS_MASTER_URI=world.uri) as terminal:
+            terminal.read(20, until=b"/turtle1/cmd_vel")
+            terminal.read(1)
+            screen = re.sub(r"\x1b\[[0-9;?<>=$]*[A-Za-z]", "", terminal.output.decode())
+            assert "Nodes only │ 2 nodes, 0 topics" in screen, screen[-2000:]
+            assert "│ /teleop_turtle │" in screen
+            terminal.type(b"q")
+            assert terminal.wait(10) == 0
+    finally:
+        teleop.shutdown("teleop stopped")
