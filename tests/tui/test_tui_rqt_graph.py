@@ -235,3 +235,25 @@ def test_timer_refreshes_do_not_pile_up_behind_a_slow_one() -> None:
             assert "t:/turtle1/cmd_vel" in app.drawing.boxes
 
     run(drive())
+
+
+def test_the_details_panel_opens_with_a_selection_and_escape_closes_it() -> None:
+    app = make_graph_app(StaticSource(lab1()), GraphOptions(mode=Mode.ACTIVE))
+
+    async def drive() -> None:
+        async with app.run_test(size=SNAPSHOT_SIZE) as pilot:
+            await settle(pilot)
+            details = app.query_one("#details")
+            view = app.query_one(GraphView)
+            assert not details.display
+            assert view.size.width == SNAPSHOT_SIZE[0]  # the drawing has the whole width
+            await pilot.press("tab")
+            await settle(pilot)
+            assert details.display and view.size.width < SNAPSHOT_SIZE[0] - 30
+            assert "Node [/teleop_turtle]" in info(app)
+            await pilot.press("escape")
+            await pilot.pause()
+            assert app.selected is None and not details.display
+            assert mark_at(app, "/teleop_turtle") == "node"
+
+    run(drive())

@@ -8,9 +8,9 @@ status line names both.
 
 ``tab`` / ``shift+tab`` select the next / previous node or topic: its edges light up (as
 rqt_graph's highlight), and its ``rosnode info`` / ``rostopic info`` (and a topic's live rate)
-show on the right. rqt_graph's controls are keys: ``m`` cycles the modes, ``n`` and ``t`` edit
-the namespace and topic filters, ``g`` the depth of namespace groups, ``d`` toggles hiding
-debug names; ``q`` quits.
+show in a panel on the right, which ``escape`` closes. rqt_graph's controls are keys: ``m``
+cycles the modes, ``n`` and ``t`` edit the namespace and topic filters, ``g`` the depth of
+namespace groups, ``d`` toggles hiding debug names; ``q`` quits.
 """
 
 from __future__ import annotations
@@ -59,18 +59,19 @@ class History:
 
 class GraphApp(App[int]):
     CSS = """
-    #details { width: 48; border-left: solid $primary; padding: 0 1; }
+    #details { width: 40; border-left: solid $primary; padding: 0 1; display: none; }
+    #details.open { display: block; }
     #status { height: 1; background: $boost; }
     #filter { display: none; }
     #filter.editing { display: block; }
     """
     BINDINGS: ClassVar[list[BindingType]] = [
         Binding("r", "refresh_graph", "Refresh"),
-        Binding("tab", "select(1)", "Next", priority=True),
-        Binding("shift+tab", "select(-1)", "Previous", priority=True),
+        Binding("tab", "select(1)", "Select", priority=True),
+        Binding("shift+tab", "select(-1)", "Previous", priority=True, show=False),
         Binding("m", "next_mode", "Mode"),
-        Binding("n", "edit_filter('namespace_filter')", "Nodes filter"),
-        Binding("t", "edit_filter('topic_filter')", "Topics filter"),
+        Binding("n", "edit_filter('namespace_filter')", "Node filter"),
+        Binding("t", "edit_filter('topic_filter')", "Topic filter"),
         Binding("g", "next_group_depth", "Groups"),
         Binding("d", "toggle_debug", "Debug"),
         Binding("q", "quit", "Quit"),
@@ -103,7 +104,7 @@ class GraphApp(App[int]):
         with Horizontal():
             yield GraphView(id="graph")
             with VerticalScroll(id="details"):
-                yield Static("Select a node or topic with tab.", id="info")
+                yield Static(id="info")
         yield Input(id="filter")
         yield Footer()
 
@@ -181,6 +182,7 @@ class GraphApp(App[int]):
         self._details()
 
     def _details(self) -> None:
+        self.query_one("#details").set_class(self.selected is not None, "open")
         vertex = self.graph.vertex(self.selected) if self.graph and self.selected else None
         if vertex is None:
             if self.selected:  # a vertex that vanished, still drawn faded
@@ -237,6 +239,10 @@ class GraphApp(App[int]):
     def key_escape(self) -> None:
         if self._editing:
             self._close_filter()
+        elif self.selected:
+            self.selected = None  # the drawing gets the whole width again
+            self._redraw()
+            self._details()
 
     def _close_filter(self) -> None:
         self._editing = None
