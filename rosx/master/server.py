@@ -13,20 +13,13 @@ from __future__ import annotations
 
 import asyncio
 import os
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from rosx.master.api import MasterApi
 from rosx.master.notifier import DEFAULT_TIMEOUT, Notifier
 from rosx.transport.address import http_uri
-from rosx.transport.loop_thread import LoopThread
+from rosx.transport.loop_thread import Hosted
 from rosx.transport.server import XmlRpcServer
-
-if TYPE_CHECKING:
-    from collections.abc import Coroutine
-    from types import TracebackType
-    from typing import TypeVar
-
-    T = TypeVar("T")
 
 #: The port roscore listens on unless told otherwise.
 DEFAULT_MASTER_PORT = 11311
@@ -110,46 +103,9 @@ class Master:
             self.shutdown_requested.set()
 
 
-class MasterThread:
+class MasterThread(Hosted):
     """A `Master` in a background event loop; arguments as `Master`'s, but port 0 by default."""
 
     def __init__(self, *, port: int = 0, **options: Any) -> None:
         self.master = Master(port=port, **options)
-        self._loop_thread = LoopThread("rosx-master")
-
-    @property
-    def uri(self) -> str:
-        """The master's URI (after `start`)."""
-        return self.master.uri
-
-    def start(self) -> str:
-        """Start the loop thread and the master; returns the master's URI."""
-        self._loop_thread.start()
-        try:
-            self._loop_thread.run(self.master.start())
-        except BaseException:
-            self._loop_thread.stop()
-            raise
-        return self.master.uri
-
-    def run(self, coro: Coroutine[Any, Any, T], timeout: float | None = 10.0) -> T:
-        """Run `coro` on the master's loop (to read or change its state safely)."""
-        return self._loop_thread.run(coro, timeout)
-
-    def close(self) -> None:
-        """Close the master and stop its thread."""
-        if self._loop_thread.running:
-            self._loop_thread.run(self.master.close(), timeout=10.0)
-        self._loop_thread.stop()
-
-    def __enter__(self) -> MasterThread:
-        self.start()
-        return self
-
-    def __exit__(
-        self,
-        exc_type: type[BaseException] | None,
-        exc: BaseException | None,
-        tb: TracebackType | None,
-    ) -> None:
-        self.close()
+        super().__init__(self.master, "rosx-master", close_timeout=10.0)

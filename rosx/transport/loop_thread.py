@@ -25,6 +25,7 @@ if TYPE_CHECKING:
     from rosx.transport.server import Handler
 
     T = TypeVar("T")
+    H = TypeVar("H", bound="Hosted")
 
 
 class LoopThread:
@@ -108,7 +109,59 @@ class LoopThread:
         self.stop()
 
 
-class ServerThread:
+class Hosted:
+    """Something with async ``start()`` and ``close()`` and a ``uri``, hosted on a background
+    `LoopThread` for synchronous callers: the shape of `ServerThread` and of the master's
+    `rosx.master.server.MasterThread`."""
+
+    def __init__(self, hosted: Any, name: str, close_timeout: float) -> None:
+        self._hosted = hosted
+        self._close_timeout = close_timeout
+        self.loop_thread = LoopThread(name)
+
+    @property
+    def uri(self) -> str:
+        """The URI it serves (after `start`)."""
+        return str(self._hosted.uri)
+
+    def start(self) -> str:
+        """Start the loop thread and what it hosts; returns the URI.
+
+        Raises:
+            OSError: the address cannot be bound.
+        """
+        self.loop_thread.start()
+        try:
+            self.loop_thread.run(self._hosted.start())
+        except BaseException:
+            self.loop_thread.stop()
+            raise
+        return self.uri
+
+    def run(self, coro: Coroutine[Any, Any, T], timeout: float | None = 10.0) -> T:
+        """Run ``coro`` on the loop (to read or change the hosted object's state safely)."""
+        return self.loop_thread.run(coro, timeout)
+
+    def close(self) -> None:
+        """Close what it hosts, then stop the loop thread."""
+        if self.loop_thread.running:
+            self.loop_thread.run(self._hosted.close(), timeout=self._close_timeout)
+        self.loop_thread.stop()
+
+    def __enter__(self: H) -> H:
+        self.start()
+        return self
+
+    def __exit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
+        self.close()
+
+
+class ServerThread(Hosted):
     """An `XmlRpcServer` served from a background `LoopThread` (arguments as `XmlRpcServer`'s)."""
 
     def __init__(
@@ -123,46 +176,9 @@ class ServerThread:
         self.server = XmlRpcServer(
             handlers, host=host, port=port, advertised_host=advertised_host, multicall=multicall
         )
-        self.loop_thread = LoopThread("rosx-xmlrpc")
-
-    @property
-    def uri(self) -> str:
-        """The server's URI (after `start`)."""
-        return self.server.uri
+        super().__init__(self.server, "rosx-xmlrpc", close_timeout=5.0)
 
     @property
     def port(self) -> int:
         """The port listened on (after `start`)."""
         return self.server.port
-
-    def start(self) -> str:
-        """Start the loop thread and the server; returns the server's URI.
-
-        Raises:
-            OSError: the address cannot be bound.
-        """
-        self.loop_thread.start()
-        try:
-            self.loop_thread.run(self.server.start())
-        except BaseException:
-            self.loop_thread.stop()
-            raise
-        return self.server.uri
-
-    def close(self) -> None:
-        """Close the server, then stop the loop thread."""
-        if self.loop_thread.running:
-            self.loop_thread.run(self.server.close(), timeout=5.0)
-        self.loop_thread.stop()
-
-    def __enter__(self) -> ServerThread:
-        self.start()
-        return self
-
-    def __exit__(
-        self,
-        exc_type: type[BaseException] | None,
-        exc: BaseException | None,
-        tb: TracebackType | None,
-    ) -> None:
-        self.close()
