@@ -139,7 +139,7 @@ def _clusters(vertex: Vertex | None) -> tuple[str, ...]:
     return () if vertex is None else vertex.clusters
 
 
-def grouped(layering: Layering, vertices: dict[str, Vertex]) -> Layering:
+def _grouped(layering: Layering, vertices: dict[str, Vertex]) -> Layering:
     """``layering`` with each column's namespace members one under the other.
 
     A namespace moves up to where its first member was; everything else keeps its order.
@@ -201,7 +201,7 @@ def _stack(
 def render(graph: ViewGraph, layering: Layering) -> Drawing:
     """Turn a layering into characters."""
     vertices = {v.id: v for v in graph.vertices}
-    layering = grouped(layering, vertices)
+    layering = _grouped(layering, vertices)
     columns = layering.columns
     paths = [[_clusters(vertices.get(s) if s else None) for s in slots] for slots in columns]
     sizes = [[_size(vertices.get(s) if s else None) for s in slots] for slots in columns]
