@@ -77,6 +77,17 @@ def _wait_for_param(port: int, key: str, timeout: float = 30.0) -> None:
         time.sleep(0.05)
 
 
+def _wait_for_node(port: int, name: str, timeout: float = 30.0) -> None:
+    """ROS 1's roscore only settles into its process monitor after launching rosout; a signal
+    before that ends it on a different path (``No processes to monitor``). rosout registering
+    with the master comes after that point."""
+    master = RosProxy(f"http://localhost:{port}/")
+    deadline = time.monotonic() + timeout
+    while master.call("lookupNode", "/test", name)[0] != 1:
+        assert time.monotonic() < deadline, f"{name} never registered"
+        time.sleep(0.05)
+
+
 def _finish(proc: subprocess.Popen[str], sig: int = signal.SIGINT) -> tuple[int, str, str]:
     os.kill(proc.pid, sig)
     out, err = proc.communicate(timeout=30)
@@ -126,6 +137,7 @@ def test_output_has_roscore_shape(env: dict[str, str]) -> None:
     try:
         head = _read_through(real, "started core service [/rosout]")
         _wait_for_param(port, "/rosdistro")
+        _wait_for_node(port, "/rosout")
         code, tail, _ = _finish(real)
         theirs = (code, "".join(head) + tail)
     finally:
