@@ -217,6 +217,7 @@ class GraphApp(App[int]):
         line = self.query_one("#filter", Input)
         line.border_title = f"{_FILTERS[which]} (comma list, -name excludes; enter applies)"
         line.value = getattr(self.options, which)
+        line.cursor_position = len(line.value)  # older textual keeps the previous text's cursor
         line.add_class("editing")
         line.focus()
 
