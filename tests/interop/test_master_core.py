@@ -68,24 +68,16 @@ def _read_through(proc: subprocess.Popen[str], marker: str, timeout: float = 30.
     raise AssertionError(f"{marker!r} never printed; got {''.join(lines)!r}")
 
 
-def _wait_for_param(port: int, key: str, timeout: float = 30.0) -> None:
-    """roscore sets its parameters last: wait for them before stopping it."""
+def _wait_until_settled(port: int, timeout: float = 30.0) -> None:
+    """Wait for ROS 1's roscore to reach its process monitor: a signal before that ends it on
+    a different path (``No processes to monitor``). Its parameters are set first, then rosout
+    starts and registers with the master."""
     master = RosProxy(f"http://localhost:{port}/")
     deadline = time.monotonic() + timeout
-    while master.call("getParam", "/test", key)[0] != 1:
-        assert time.monotonic() < deadline, f"{key} never set"
-        time.sleep(0.05)
-
-
-def _wait_for_node(port: int, name: str, timeout: float = 30.0) -> None:
-    """ROS 1's roscore only settles into its process monitor after launching rosout; a signal
-    before that ends it on a different path (``No processes to monitor``). rosout registering
-    with the master comes after that point."""
-    master = RosProxy(f"http://localhost:{port}/")
-    deadline = time.monotonic() + timeout
-    while master.call("lookupNode", "/test", name)[0] != 1:
-        assert time.monotonic() < deadline, f"{name} never registered"
-        time.sleep(0.05)
+    for method, name in (("getParam", "/rosdistro"), ("lookupNode", "/rosout")):
+        while master.call(method, "/test", name)[0] != 1:
+            assert time.monotonic() < deadline, f"{method} {name} never answered"
+            time.sleep(0.05)
 
 
 def _finish(proc: subprocess.Popen[str], sig: int = signal.SIGINT) -> tuple[int, str, str]:
@@ -136,8 +128,7 @@ def test_output_has_roscore_shape(env: dict[str, str]) -> None:
     )
     try:
         head = _read_through(real, "started core service [/rosout]")
-        _wait_for_param(port, "/rosdistro")
-        _wait_for_node(port, "/rosout")
+        _wait_until_settled(port)
         code, tail, _ = _finish(real)
         theirs = (code, "".join(head) + tail)
     finally:
