@@ -1,12 +1,14 @@
 """What the graph tools say about one node or topic, and the graph's lists, computed once.
 
 ``rosnode info`` and ``rostopic info`` print these texts (ROS 1's, byte for byte); rqt_graph's
-details panel shows the same texts for the selected box.
+details panel shows the same texts for the selected box, and ``rosx sim``'s panels list the
+summaries of a `rosx.graph.state.GraphState`.
 
 - `node_description`: the master's view of a node (publications with their types,
   subscriptions, services); `node_connections`: what the node says of itself (``getPid``,
   ``getBusInfo``, ROS wiki Slave_API), each peer named as the master knows it.
 - `topic_description`: a topic's type, publishers and subscribers with their URIs.
+- `topic_summaries`, `node_summaries`: one row per topic or node of a graph state.
 
 The texts' failures are typed (`UnknownTopicError`, `NodeContactError`, and the master
 client's errors); their words for a user are the CLI's (`rosx_commands.errors`).
@@ -15,12 +17,13 @@ client's errors); their words for a user are the CLI's (`rosx_commands.errors`).
 from __future__ import annotations
 
 import re
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from rosx.master.client import MasterError
 from rosx.transport.errors import FaultError, TransportError
 
 if TYPE_CHECKING:
+    from rosx.graph.state import GraphState
     from rosx.master.client import MasterClient
 
 #: Seconds a node has to answer ``getPid`` and ``getBusInfo`` (rosnode's socket timeout).
@@ -144,3 +147,48 @@ def topic_description(master: MasterClient, topic: str) -> str:
             lines.append(f"{title}: None")
         lines.append("")
     return "\n".join(lines) + "\n"
+
+
+# -- summaries of a graph state ----------------------------------------------------------------
+
+
+class TopicSummary(NamedTuple):
+    """A topic with its type (``""`` when unknown) and the nodes at either end, sorted."""
+
+    name: str
+    type: str
+    publishers: tuple[str, ...]
+    subscribers: tuple[str, ...]
+
+
+class NodeSummary(NamedTuple):
+    """A node with how many topics it publishes and subscribes to."""
+
+    name: str
+    publications: int
+    subscriptions: int
+
+
+def topic_summaries(state: GraphState) -> tuple[TopicSummary, ...]:
+    """Every topic of ``state`` (``rostopic list``), sorted by name."""
+    return tuple(
+        TopicSummary(
+            topic,
+            state.topic_types.get(topic, ""),
+            tuple(sorted(state.publishers.get(topic, ()))),
+            tuple(sorted(state.subscribers.get(topic, ()))),
+        )
+        for topic in state.topics
+    )
+
+
+def node_summaries(state: GraphState) -> tuple[NodeSummary, ...]:
+    """Every node of ``state`` (``rosnode list``), sorted, with its topic counts."""
+    return tuple(
+        NodeSummary(
+            node,
+            sum(node in nodes for nodes in state.publishers.values()),
+            sum(node in nodes for nodes in state.subscribers.values()),
+        )
+        for node in state.nodes
+    )
