@@ -1,8 +1,8 @@
 """The core's errors as ROS 1's tools print them: the one place the CLI words them.
 
 `rosx_commands.cli.run_command` hands every exception a sub-command lets through to
-`command_error`; what it maps becomes one line on stderr (two for an unreachable master) and
-the tool's error status, anything else stays a bug and keeps its traceback.
+`command_error`; what it maps becomes one line on stderr (two for an unreachable master on a
+terminal) and the tool's error status, anything else stays a bug and keeps its traceback.
 
 - `rosx.master.client.MasterUnreachable`: ``ERROR: Unable to communicate with master!``
 - `rosx.master.client.MasterError`: ``ERROR: <the master's status message>``
@@ -11,6 +11,9 @@ the tool's error status, anything else stays a bug and keeps its traceback.
 - any other `rosx.node.errors.ServiceError`: ``ERROR: <rospy's text>``
 - `rosx.graph.describe.UnknownTopicError`: ``ERROR: Unknown topic /x``
 - `rosx.graph.describe.NodeContactError`: ``ERROR: Communication with node[<uri>] failed!``
+
+ROS 1's scripts and tests match the master's line exactly, so the hint on how to get a master
+is added only when stderr is a terminal.
 """
 
 from __future__ import annotations
@@ -24,12 +27,14 @@ UNREACHABLE = "ERROR: Unable to communicate with master!"
 
 
 def unreachable(env: Environment, uri: str, status: int = 1) -> CommandError:
-    """ROS 1's line for a master that does not answer, then how to get one."""
-    return CommandError(
-        f"{UNREACHABLE}\nNo master answers at ROS_MASTER_URI={uri}: start one with `rosx roscore` "
-        "(or `rosx sim`) in another terminal, or point ROS_MASTER_URI at a running one.",
-        status,
-    )
+    """ROS 1's line for a master that does not answer; on a terminal, how to get one."""
+    text = UNREACHABLE
+    if env.stderr_isatty:
+        text += (
+            f"\nNo master answers at ROS_MASTER_URI={uri}: start one with `rosx roscore` "
+            "(or `rosx sim`) in another terminal, or point ROS_MASTER_URI at a running one."
+        )
+    return CommandError(text, status)
 
 
 def command_error(error: BaseException, env: Environment, status: int) -> CommandError | None:
