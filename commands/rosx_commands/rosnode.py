@@ -5,7 +5,7 @@ from __future__ import annotations
 import contextlib
 import socket
 import time
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NoReturn
 from urllib.parse import urlparse
 
 from rosx.master.client import MasterError
@@ -197,14 +197,29 @@ def ping(argv: list[str], env: Environment) -> int:
             ping_node(env, master, node, 1, True)
         return ExitStatus.OK
     if not names:
-        listing = "\n".join(node_names(master))
-        parser.error("Please enter a node to ping. Available nodes are:\n" + listing)
+        _no_node_to_ping(env, parser, master)
     if len(names) > 1:
         parser.error("you may only specify one input node")
     node = _resolve(env, names[0])
     env.out(f"rosnode: node is [{node}]")
     ping_node(env, master, node, count, True)
     return ExitStatus.OK
+
+
+def _no_node_to_ping(env: Environment, parser: ToolParser, master: MasterClient) -> NoReturn:
+    """rosnode's usage error for ``ping`` without a node, as ROS 1 gives it: the list of nodes
+    when the master answers, then (its first exit caught by its own bare ``except``) the short
+    error, which alone is printed when there is no master."""
+    try:
+        listing = "\n".join(node_names(master))
+    except (TransportError, MasterError):
+        listing = None
+    if listing is not None:
+        try:
+            parser.error("Please enter a node to ping. Available nodes are:\n" + listing)
+        except CommandError as listed:
+            env.err(listed.message)
+    parser.error("Please enter a node to ping")
 
 
 def machine(argv: list[str], env: Environment) -> int:
