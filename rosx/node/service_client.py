@@ -45,7 +45,7 @@ from rosx.wire.rosrpc import (
 
 if TYPE_CHECKING:
     from rosx.master.client import MasterClient
-    from rosx.msg.message import Message, ServiceDefinition
+    from rosx.msg.codec.message import Message, ServiceDefinition
 
 #: Seconds to open a connection when the caller gives no timeout.
 DEFAULT_CONNECT_TIMEOUT = 10.0
