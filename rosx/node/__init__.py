@@ -32,9 +32,9 @@ This package imports `rosx.wire`, `rosx.names`, `rosx.msg`, `rosx.transport` and
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from rosx._lazy import lazy_names
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     from rosx.master.client import MasterError
     from rosx.node.clock import Rate, now, sleep
@@ -92,14 +92,4 @@ __all__ = [
 ]
 
 
-def __getattr__(name: str) -> Any:
-    home = _HOMES.get(name)
-    if home is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(home), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted({*globals(), *_HOMES})
+__getattr__ = lazy_names(__name__, _HOMES)
