@@ -13,12 +13,29 @@ def info(argv: list[str], env: Environment) -> int:
     """Run ``rosbag info ARGV…``."""
     parser = ToolParser(env, "rosbag", "rosbag info [options] BAGFILE1 [BAGFILE2 BAGFILE3 ...]")
     parser.description = "Summarize the contents of one or more bag files."
-    parser.add_option("-y", "--yaml", dest="yaml", default=False, action="store_true",
-                      help="print information in YAML format")  # fmt: skip
-    parser.add_option("-k", "--key", dest="key", default=None, action="store",
-                      help="print information on the given key")  # fmt: skip
-    parser.add_option("--freq", dest="freq", default=False, action="store_true",
-                      help="display topic message frequency statistics")  # fmt: skip
+    parser.add_option(
+        "-y",
+        "--yaml",
+        dest="yaml",
+        default=False,
+        action="store_true",
+        help="print information in YAML format",
+    )
+    parser.add_option(
+        "-k",
+        "--key",
+        dest="key",
+        default=None,
+        action="store",
+        help="print information on the given key",
+    )
+    parser.add_option(
+        "--freq",
+        dest="freq",
+        default=False,
+        action="store_true",
+        help="display topic message frequency statistics",
+    )
     options, args = parser.parse(argv)
     if not args:
         parser.error("You must specify at least 1 bag file.")
