@@ -18,6 +18,7 @@ import collections
 import io
 import os
 import time
+from pathlib import Path
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 from rosx.bag.errors import (
@@ -106,7 +107,7 @@ class Bag:
         if mode == "r":
             self._reader = BagReader(self._filename)
         else:
-            exists = mode == "a" and os.path.exists(self._filename)
+            exists = mode == "a" and Path(self._filename).exists()
             self._writer = BagWriter(
                 self._filename,
                 "a" if exists else "w",
@@ -228,11 +229,9 @@ class Bag:
         ids = self._connection_ids(topics, connection_filter)
         for conn, stamp, data in bag.messages(ids, _to_ns(start_time), _to_ns(end_time)):
             cls = message_class(conn)
-            message: Any
-            if raw:
-                message = (conn.type, data, conn.md5sum, 0, cls)
-            else:
-                message = cls().deserialize(data)
+            message: Any = (
+                (conn.type, data, conn.md5sum, 0, cls) if raw else cls().deserialize(data)
+            )
             if return_connection_header:
                 yield BagMessageWithConnectionHeader(conn.topic, message, _time(stamp), conn.header)
             else:
