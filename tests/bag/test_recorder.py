@@ -3,6 +3,7 @@ process, on the test's master."""
 
 from __future__ import annotations
 
+import itertools
 import threading
 from collections.abc import Callable
 from pathlib import Path
@@ -106,13 +107,15 @@ def test_play_delivers_every_message_with_the_recorded_spacing(
         player = Player(player_node, [bag], PlayOptions(rate=rate))
         player.timing = []
         player.advertise()
-        wait_for(lambda: player._publishers["/chatter"].get_num_connections() == 1, what="a subscriber")
+        wait_for(
+            lambda: player._publishers["/chatter"].get_num_connections() == 1, what="a subscriber"
+        )
         player.run()
     assert done.wait(5)
     assert got == [str(i) for i in range(20)]
     assert player_node.publications["/played"].latching
     due = [d for d, _ in player.timing]
-    spacing = [b - a for a, b in zip(due, due[1:], strict=False)]
+    spacing = [b - a for a, b in itertools.pairwise(due)]
     assert all(abs(s - 0.02 / rate) < 1e-6 for s in spacing)
 
 

@@ -91,7 +91,9 @@ class Graph:
         )
 
     def run(self, args: list[str], rosx: bool = False) -> subprocess.CompletedProcess[str]:
-        command = [sys.executable, "-m", "rosx_commands", *args] if rosx else [str(ROS1_PYTHON), *args]
+        command = (
+            [sys.executable, "-m", "rosx_commands", *args] if rosx else [str(ROS1_PYTHON), *args]
+        )
         return subprocess.run(
             command,
             env=self.rosx_env if rosx else self.env,
@@ -143,14 +145,16 @@ def test_ros1_accepts_rosx_bags(recorded: Graph, name: str) -> None:
     assert check.stdout == "Bag file does not need any migrations.\n"
 
 
-@pytest.mark.parametrize(
-    "name", ["rx_plain", "rx_bz2", "rx_lz4", "r1_plain", "r1_bz2", "r1_lz4"]
-)
+@pytest.mark.parametrize("name", ["rx_plain", "rx_bz2", "rx_lz4", "r1_plain", "r1_bz2", "r1_lz4"])
 @pytest.mark.parametrize("options", [[], ["--freq"], ["-y"], ["-y", "-k", "topics"]])
 def test_rosx_info_prints_ros1s_text(recorded: Graph, name: str, options: list[str]) -> None:
     ros1 = recorded.run([ROSBAG, "info", *options, f"{name}.bag"])
     mine = recorded.run(["rosbag", "info", *options, f"{name}.bag"], rosx=True)
-    assert (mine.returncode, mine.stdout, mine.stderr) == (ros1.returncode, ros1.stdout, ros1.stderr)
+    assert (mine.returncode, mine.stdout, mine.stderr) == (
+        ros1.returncode,
+        ros1.stdout,
+        ros1.stderr,
+    )
 
 
 def test_ros1_play_of_a_rosx_bag_reaches_a_rosx_subscriber(recorded: Graph) -> None:
@@ -162,9 +166,9 @@ def test_ros1_play_of_a_rosx_bag_reaches_a_rosx_subscriber(recorded: Graph) -> N
         if len(got) == COUNT:
             done.set()
 
-    String = get_message_class("std_msgs/String")
+    string = get_message_class("std_msgs/String")
     with Node("bag_listener", master_uri=recorded.uri, environ={}) as node:
-        node.subscribe("/chatter", String, heard)
+        node.subscribe("/chatter", string, heard)
         player = recorded.ros1(ROSBAG, "play", "-r", "4", "rx_plain.bag")
         try:
             assert done.wait(30), f"{len(got)} of {COUNT} messages"
