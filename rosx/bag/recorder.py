@@ -45,7 +45,23 @@ if TYPE_CHECKING:
 DISCOVERY_PERIOD = 0.5
 #: Seconds after which an open chunk is written out even if it is not full.
 FLUSH_PERIOD = 1.0
+#: Seconds `Recorder.stop` waits for messages already read to reach the queue.
+DRAIN_TIMEOUT = 30.0
 _WARN_PERIOD = 5.0
+
+
+def _pending_bytes(sock: Any) -> int:
+    """Bytes waiting in ``sock``'s receive buffer (0 when unknown)."""
+    if sock is None:
+        return 0
+    try:
+        import fcntl  # noqa: PLC0415
+        import termios  # noqa: PLC0415
+
+        raw = fcntl.ioctl(sock.fileno(), termios.FIONREAD, b"\0\0\0\0")
+    except (ImportError, OSError, ValueError):
+        return 0
+    return int.from_bytes(raw, "little")
 
 
 class RecordOptions:
@@ -126,6 +142,7 @@ class Recorder:
         self._counts: dict[str, int] = {}
         self._done_topics: set[str] = set()
         self._stopping = threading.Event()
+        self._closing = False
         #: Set once recording has stopped for good (all written, files closed).
         self.finished = threading.Event()
         self.error: str | None = None
@@ -138,6 +155,8 @@ class Recorder:
         self._threads: list[threading.Thread] = []
         self.written = 0
         self.dropped = 0
+        self._conns: dict[tuple[str, int], int] = {}
+        self._headers_kept: list[dict[str, str]] = []
 
     # -- lifecycle ---------------------------------------------------------------------------
 
@@ -156,8 +175,35 @@ class Recorder:
             watcher.start()
 
     def stop(self) -> None:
-        """Stop subscribing, write everything queued, close the bag (idempotent, any thread)."""
-        for sub in list(self._subscribers.values()):
+        """Stop reading, write everything received, close the bag (idempotent, any thread).
+
+        The connections are shut first; what their reader threads had already taken in still
+        reaches the callbacks (waited for, up to `DRAIN_TIMEOUT`), then the writer's queue.
+        """
+        self._closing = True
+        subscribers = list(self._subscribers.values())
+        receivers = [sub.subscription.receiver for sub in subscribers]
+        # What had reached this host when asked to stop: the bytes each socket holds.
+        targets = []
+        for sub in subscribers:
+            for stream in list(sub.subscription.streams.values()):
+                targets.append((stream, stream.bytes_received + _pending_bytes(stream.sock)))
+        deadline = time.monotonic() + DRAIN_TIMEOUT
+
+        def drained() -> bool:
+            return all(r.received <= r.handled for r in receivers) and all(
+                stream.closed or stream.bytes_received >= target for stream, target in targets
+            )
+
+        while time.monotonic() < deadline and not drained():
+            time.sleep(0.01)
+        for sub in subscribers:
+            subscription = sub.subscription
+            for stream in list(subscription.streams.values()):
+                subscription.receiver.detach(stream)
+        while time.monotonic() < deadline and any(r.received > r.handled for r in receivers):
+            time.sleep(0.01)
+        for sub in subscribers:
             with contextlib.suppress(Exception):
                 sub.unregister()
         self._stopping.set()
@@ -194,7 +240,7 @@ class Recorder:
         return topic in self.options.topics
 
     def _subscribe(self, topic: str) -> None:
-        if topic in self._subscribers or self._stopping.is_set():
+        if topic in self._subscribers or self._stopping.is_set() or self._closing:
             return
         self.log("INFO", f"Subscribing to {topic}")
 
@@ -240,8 +286,7 @@ class Recorder:
         if self._stopping.is_set() or topic in self._done_topics:
             return
         data = msg._buff
-        header = dict(msg._connection_header)
-        header["topic"] = topic
+        header = msg._connection_header  # one dict per publisher connection, never changed
         limit = self.options.limit
         with self._lock:
             if limit:
@@ -302,6 +347,16 @@ class Recorder:
             self._close_bag()
             self.request_stop()
 
+    def _connection(self, writer: BagWriter, topic: str, header: dict[str, str]) -> int:
+        key = (topic, id(header))
+        conn = self._conns.get(key)
+        if conn is None:
+            recorded = dict(header)
+            recorded["topic"] = topic
+            conn = self._conns[key] = writer.add_connection(topic, recorded)
+            self._headers_kept.append(header)  # keeps id(header) unique while cached
+        return conn
+
     def _write(self, topic: str, header: dict[str, str], stamp: int, data: bytes) -> None:
         writer = self._writer
         if writer is None:
@@ -315,8 +370,7 @@ class Recorder:
                 self._file_start += int(self.options.max_duration * 1e9)
             writer = self._writer
             assert writer is not None
-        conn = writer.add_connection(topic, header)
-        writer.write(conn, stamp, data)
+        writer.write(self._connection(writer, topic, header), stamp, data)
         self.written += 1
         if self.options.max_size and writer.size > self.options.max_size:
             if self.options.split:
@@ -334,6 +388,7 @@ class Recorder:
     def _open_bag(self) -> None:
         split = self._split_index if self.options.split else None
         self._target = bag_name(self.options.prefix, self.options.append_date, split, time.time())
+        self._conns = {}
         self._writer = BagWriter(
             self._target + ".active",
             compression=self.options.compression,
