@@ -122,7 +122,7 @@ class BagReader:
                 f"bag is encrypted with {fields['encryptor'].decode('latin-1')}, "
                 "which rosx cannot decrypt"
             )
-        if self.index_pos == 0 or self.index_pos >= self.size:
+        if self.index_pos == 0 or self.index_pos > self.size:
             if allow_unindexed:
                 return False
             raise BagUnindexedError
