@@ -1,5 +1,7 @@
 """What ``rostopic hz``, ``bw`` and ``delay`` measure, and the text they print each second.
 
+Also the rates and bandwidths of ``rosx rqt_topic``: one home for a topic's statistics.
+
 Pure bookkeeping: each tracker is fed arrival times (and sizes or stamps) by a subscriber's
 callback and asked for its report by the printing loop; neither sockets nor clocks live here,
 the caller passes the current time in. The rules are ROS 1's:
