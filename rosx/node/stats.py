@@ -157,6 +157,14 @@ class BandwidthTracker:
                 self.times.popleft()
                 self.sizes.popleft()
 
+    def rate(self, now: float) -> float | None:
+        """Bytes per second at ``now`` over the window, or None (fewer than two messages)."""
+        with self._lock:
+            if len(self.times) < 2:
+                return None
+            elapsed = now - self.times[0]
+            return sum(self.sizes) / elapsed if elapsed > 0 else math.inf
+
     def report(self, now: float) -> str | None:
         """What ``rostopic bw`` prints at ``now``, or None (fewer than two messages)."""
         with self._lock:
