@@ -131,3 +131,14 @@ def test_rosx_node_loads_its_modules_on_first_use() -> None:
     assert "rosx.node.node" not in loaded and "asyncio" not in loaded
     loaded = _modules_after("from rosx.node import Node, ServiceClient")
     assert {"rosx.node.node", "rosx.node.service_client"} <= loaded
+
+
+@pytest.mark.parametrize(
+    "argv", [["rqt_plot", "--help"], ["rqt_plot", "/a/x"], ["rqt_topic"], ["rqt", "--help"]]
+)
+def test_rqt_tools_load_no_tui_before_they_draw(argv: list[str]) -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        f"run_tool({argv!r}, Environment(stdout=io.StringIO(), stderr=io.StringIO(), environ={{}}))"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in ("textual", "textual_plot", "numpy")}
