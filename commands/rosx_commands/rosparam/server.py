@@ -9,13 +9,16 @@ nothing.
 from __future__ import annotations
 
 import os
-from typing import Any
 
 from rosx.msg.yamlparams import ParamValueError, check_value
 from rosx.names.resolution import ns_join
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.context import CommandError, Environment
 from rosx_commands.master import Master, MasterError
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 NAME = "rosparam"
 
