@@ -6,7 +6,10 @@ import os
 import sys
 from collections.abc import Mapping
 from enum import IntEnum
-from typing import TextIO
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import TextIO
 
 
 class ExitStatus(IntEnum):

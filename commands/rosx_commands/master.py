@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from rosx.transport.client import XmlRpcClient
 from rosx.transport.errors import FaultError, TransportError
 from rosx_commands.context import CommandError, Environment
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 DEFAULT_MASTER_URI = "http://localhost:11311"
 #: Seconds to reach the master before saying it is not there (ROS 1 may take minutes).

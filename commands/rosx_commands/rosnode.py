@@ -1,12 +1,12 @@
 """``rosx rosnode``: list, info, ping, kill, machine, cleanup, as ROS 1's rosnode."""
 
+from __future__ import annotations
+
 import contextlib
 import re
 import socket
 import time
 from collections.abc import Sequence
-from typing import Any
-from urllib.parse import urlparse
 
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
@@ -14,6 +14,10 @@ from rosx.transport.errors import CallTimeoutError, ConnectError, FaultError, Tr
 from rosx_commands.cli import ToolParser, commands_overview, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.master import Master
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 CALLER_ID = "/rosnode"
 PING_TIMEOUT = 3.0
@@ -281,6 +285,8 @@ def machine(argv: list[str], env: Environment) -> int:
     _, names = parser.parse(argv)
     if len(names) > 1:
         parser.error("please enter only one machine name")
+    from urllib.parse import urlparse  # noqa: PLC0415 - only machine needs it
+
     master = Master(env, CALLER_ID)
     hosts: dict[str, str] = {}
     for node in node_names(master):

@@ -13,11 +13,11 @@ from __future__ import annotations
 
 import contextlib
 from functools import cached_property
-from typing import TYPE_CHECKING
 
 from rosx.msg.packages import bundled_packages, find_packages, split_package_path
 from rosx.workspace.manifest import Manifest, ManifestError, read_manifest
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     from collections.abc import Mapping
     from pathlib import Path

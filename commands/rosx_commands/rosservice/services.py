@@ -7,15 +7,16 @@ a `CommandError` with ROS 1's text and rosservice's status 2, including the mast
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
-
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.context import CommandError, Environment
 from rosx_commands.master import Master, MasterError
 from rosx_commands.rosservice.rpc import ServiceIOError, probe
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any
+
     from rosx.msg.message import ServiceDefinition
     from rosx.msg.store import TypeStore
 

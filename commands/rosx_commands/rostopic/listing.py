@@ -2,16 +2,16 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
-from urllib.parse import urlparse
-
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.master import Master
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any
+
     from rosx.msg.store import TypeStore
 
 CALLER_ID = "/rostopic"
@@ -121,6 +121,8 @@ def _print_by_host(
     subscribers_only: bool,
     verbose: bool,
 ) -> None:
+
+    from urllib.parse import urlparse  # noqa: PLC0415 - only list --host needs it
 
     uris: dict[str, str | None] = {}
 
