@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -100,3 +101,41 @@ def test_rqt_graph_text_output_loads_no_tui() -> None:
         " environ={'ROS_MASTER_URI': 'http://localhost:9'}))"
     )
     assert not {m for m in loaded if m.split(".")[0] in ("textual", "typer", "numpy")}
+
+
+#: What a one-shot ROS tool's start-up does without: each costs milliseconds that ROS 1's own
+#: tools (a 50 ms ``rosparam get``) leave no room for.
+STARTUP_FREE = ("dataclasses", "typing", "optparse", "pathlib", "rosbags", "asyncio", "threading")
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["rostopic", "list"],
+        ["rosnode", "list"],
+        ["rosparam", "get", "/"],
+        ["rosparam", "list"],
+        ["rosservice", "list"],
+    ],
+)
+def test_master_tools_start_with_little(argv: list[str]) -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        f"run_tool({argv!r}, Environment(stdout=io.StringIO(), stderr=io.StringIO(),"
+        " environ={'ROS_MASTER_URI': 'http://localhost:9'}))"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in STARTUP_FREE}
+
+
+def test_rosmsg_of_a_standard_type_reads_rosbags_once(tmp_path: Path) -> None:
+    """The standard types' texts are kept in the user's cache: rosbags is imported once."""
+    code = (
+        f"import io, os\nos.environ['XDG_CACHE_HOME'] = {str(tmp_path)!r}\n"
+        "from rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        "out = io.StringIO()\n"
+        "run_tool(['rosmsg', 'show', 'geometry_msgs/Twist'], Environment(stdout=out, environ={}))\n"
+        "assert out.getvalue().startswith('geometry_msgs/Vector3 linear'), out.getvalue()"
+    )
+    first, second = _modules_after(code), _modules_after(code)
+    assert "rosbags" in first
+    assert not {m for m in second if m.split(".")[0] in ("rosbags", "dataclasses", "typing")}
