@@ -8,7 +8,7 @@ of a namespace to a file or stdout.
 
 from __future__ import annotations
 
-from rosx.msg.yamlparams import dump_value
+from rosx.msg.text.yamlparams import dump_value
 from rosx.names.resolution import make_global_ns
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus

@@ -17,7 +17,7 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import Any
 
-    from rosx.msg.message import ServiceDefinition
+    from rosx.msg.codec.message import ServiceDefinition
     from rosx.msg.store import TypeStore
 
 CALLER_ID = "/rosservice"
@@ -106,7 +106,7 @@ class Services:
             raise CommandError(
                 f"ERROR: Unable to determine type of service [{name}].", SERVICE_ERROR
             )
-        from rosx.msg.classes import get_service_class  # noqa: PLC0415 - code generation
+        from rosx.msg.codec.classes import get_service_class  # noqa: PLC0415 - code generation
         from rosx.msg.store import UnknownTypeError  # noqa: PLC0415
 
         candidates = [service_type]

@@ -182,7 +182,10 @@ def test_standard_texts_come_back_from_the_cache_unchanged(
     cache = tmp_path / "rosx" / "ros1_noetic_types.marshal"
     assert cache.is_file()
     assert _fresh_standard_texts() == built
-    assert built["geometry_msgs/Twist"] == "geometry_msgs/Vector3 linear\ngeometry_msgs/Vector3 angular\n"
+    assert (
+        built["geometry_msgs/Twist"]
+        == "geometry_msgs/Vector3 linear\ngeometry_msgs/Vector3 angular\n"
+    )
 
 
 @pytest.mark.parametrize("content", [b"", b"\x00garbage", b"\xe9\x02\x00\x00\x00"])
