@@ -27,6 +27,7 @@ import time
 import xmlrpc.client
 from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
@@ -111,10 +112,10 @@ def compare(
 def registered(uri: str, topics: int) -> bool:
     """True once the master lists ``topics`` publishers of the nodes' topics and /rosout."""
     try:
-        _, _, state = xmlrpc.client.ServerProxy(uri).getSystemState("/bench")
+        reply: Any = xmlrpc.client.ServerProxy(uri).getSystemState("/bench")
     except OSError:
         return False
-    publishers = dict(state[0])
+    publishers: dict[str, list[str]] = dict(reply[2][0])
     bench = sum(len(nodes) for topic, nodes in publishers.items() if topic.startswith("/bench/"))
     return bench == topics and "/rosout_agg" in publishers
 
