@@ -39,6 +39,7 @@ class ToolParser:
         self.usage = usage
         self.description: str | None = None
         self.epilog: str | None = None
+        self.formatter: optparse.HelpFormatter | None = None
         self._options: list[tuple[tuple[str, ...], dict[str, Any]]] = []
         self._parser: optparse.OptionParser | None = None
 
@@ -65,6 +66,9 @@ class ToolParser:
             self._parser = _option_parser_class()(self.env, self.prog, self.usage)
             self._parser.description = self.description
             self._parser.epilog = self.epilog
+            if self.formatter is not None:
+                self._parser.formatter = self.formatter
+                self.formatter.set_parser(self._parser)
             for flags, settings in self._options:
                 self._parser.add_option(*flags, **settings)
         return self._parser
@@ -76,11 +80,16 @@ class ToolParser:
             default = settings.get("default")
             if isinstance(default, str) and settings.get("type", "string") != "string":
                 return None  # optparse converts such a default with the option's type
-            dest = settings.get("dest") or _dest(flags)
-            if dest is None:
-                return None
-            defaults[dest] = default
+            dest = settings.get("dest")
+            if dest is None and (settings.get("action", "store") in _STORING or "type" in settings):
+                dest = _dest(flags)
+            if dest is not None and ("default" in settings or dest not in defaults):
+                defaults[dest] = default
         return defaults
+
+
+#: optparse's actions that store a value, and so have a ``dest`` even when none is given.
+_STORING = ("store", "store_const", "store_true", "store_false", "append", "append_const", "count")
 
 
 def _dest(flags: tuple[str, ...]) -> str | None:

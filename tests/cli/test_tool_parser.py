@@ -18,6 +18,8 @@ def _parser() -> ToolParser:
     parser.add_option("-n", dest="count", default=None, help="count")
     parser.add_option("-w", "--window", dest="window", default=-1, help="window")
     parser.add_option("-c", help="a short flag alone")
+    parser.add_option("--split", action="callback", callback=lambda *_: None, help="no dest")
+    parser.add_option("-q", dest="window", action="store_const", const=0, help="shares a dest")
     return parser
 
 
