@@ -40,6 +40,7 @@ def main(argv: list[str], environ: Mapping[str, str]) -> tuple[int, str, str]:
             environ,
             index,
             with_core=option != "--dump-params",
+            core_params={},
             args_only=option == "--ros-args",
             argv=rest,
         )
