@@ -93,6 +93,15 @@ def test_workspace_tools_do_not_pay_for_typer(argv: list[str]) -> None:
     assert "dataclasses" not in loaded and "textual" not in loaded
 
 
+def test_rosbag_info_loads_no_tui_numpy_or_typer() -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        "run_tool(['rosbag', 'info', '/nonexistent.bag'], Environment(stdout=io.StringIO(),"
+        " stderr=io.StringIO(), environ={}))"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in ("typer", "pydantic", "rich", *HEAVY)}
+
+
 def test_rqt_graph_text_output_loads_no_tui() -> None:
     loaded = _modules_after(
         "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"

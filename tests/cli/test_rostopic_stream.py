@@ -476,9 +476,9 @@ def test_usage_errors(env: dict[str, str], argv: list[str], err: str) -> None:
     assert (result.status, result.out, result.err) == (2, "", err)
 
 
-def test_echo_from_a_bag_is_not_supported(env: dict[str, str]) -> None:
+def test_echo_from_a_missing_bag_says_so(env: dict[str, str]) -> None:
     result = rosx("rostopic", "echo", "-b", "x.bag", "/x", environ=env)
-    assert (result.status, result.err) == (1, "ERROR: rosx does not read .bag files\n")
+    assert (result.status, result.err) == (1, "ERROR: bag file [x.bag] does not exist\n")
 
 
 def test_ctrl_c_exits_quietly_and_unregisters(master: str) -> None:

@@ -35,6 +35,45 @@ def topic_rows(master: Master) -> tuple[TopicRows, TopicRows]:
     return rows(publishers), rows(subscribers)
 
 
+def _list_bag(env: Environment, bag: str, topic: str | None) -> int:
+    """``rostopic list -b BAG [TOPIC]``: topics in order of their first message, or how many
+    messages ``topic`` (and its namespace) has, and when the first and last were recorded."""
+    import time  # noqa: PLC0415
+    from pathlib import Path  # noqa: PLC0415
+
+    from rosx.bag.errors import BagError  # noqa: PLC0415
+    from rosx.bag.reader import BagReader  # noqa: PLC0415
+
+    if not Path(bag).exists():
+        raise CommandError(f"ERROR: bag file [{bag}] does not exist")
+    try:
+        with BagReader(bag) as reader:
+            names = {c.id: c.topic for c in reader.connections.values()}
+            order = [names[conn] for _, _, _, conn in reader.entries()]
+    except (BagError, OSError) as exc:
+        raise CommandError(f"ERROR: unable to read bag file [{bag}]: {exc}") from None
+    if topic is None:
+        for name in dict.fromkeys(order):
+            env.out(name)
+        return ExitStatus.OK
+    prefix = make_global_ns(topic)
+    with BagReader(bag) as reader:
+        ids = {
+            c.id
+            for c in reader.connections.values()
+            if c.topic == topic or c.topic.startswith(prefix)
+        }
+        stamps = [t for t, _, _, _ in reader.entries(ids)]
+    if not stamps:
+        raise CommandError("ERROR: no messages of the topic in the bag")
+
+    def day(ns: int) -> str:
+        return time.strftime("%d %b %Y %H:%M:%S", time.localtime(ns / 1e9))
+
+    env.out(f"{len(stamps)} message(s) from {day(stamps[0])} to {day(stamps[-1])}")
+    return ExitStatus.OK
+
+
 def list_topics(argv: list[str], env: Environment) -> int:
     parser = ToolParser(env, "rostopic", "usage: %prog list [/namespace]")
     parser.add_option(
@@ -63,7 +102,7 @@ def list_topics(argv: list[str], env: Environment) -> int:
     bag, verbose, host = options.bag, options.verbose, options.hostname
     publishers_only, subscribers_only = options.publishers, options.subscribers
     if bag is not None:
-        raise CommandError("ERROR: rosx does not read .bag files")
+        return _list_bag(env, bag, resolve(env, names[0]) if names else None)
     if publishers_only and subscribers_only:
         raise CommandError("ERROR: cannot specify both subscribers- and publishers-only")
     master = Master(env, CALLER_ID)
