@@ -803,7 +803,12 @@ class _Reader:
         }
         if is_test:
             test = Test(
-                output="log", test_name=test_name, time_limit=time_limit, retry=retry, **fields
+                output="log",
+                clear_params=cleared,
+                test_name=test_name,
+                time_limit=time_limit,
+                retry=retry,
+                **fields,
             )
             self.plan.tests.append(test)
             return
