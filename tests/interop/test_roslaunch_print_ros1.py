@@ -108,12 +108,18 @@ def _node_names(name: str, monkeypatch: pytest.MonkeyPatch) -> list[str]:
 
 #: Files whose every node's command line is compared; of the others, the first node's.
 _EVERY_NODE = {"nodes.launch", "remap.launch", "env.launch", "anon.launch"}
+#: Files of turtlesim's nodes: rosx provides turtlesim's programs itself, where Debian's
+#: roslaunch finds no executable (the reference has turtlesim's messages only), so their
+#: command lines differ by design; only --find-node is compared.
+_PROVIDED = {"turtlemimic.launch", "multisim.launch"}
 
 
 @pytest.mark.parametrize("name", VALID)
 def test_args_and_find_node_as_roslaunch(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
     names = [n for n in _node_names(name, monkeypatch) if _ANON.search(n) is None]
     asked = names if name in _EVERY_NODE else names[:1] + names[-1:]
+    if name in _PROVIDED:
+        asked = []
     commands = [["--args", node, f"valid/{name}"] for node in dict.fromkeys(asked)]
     commands += [["--find-node", node, f"valid/{name}"] for node in names[:1]]
     commands += [[option, "no_such_node", f"valid/{name}"] for option in ("--args", "--find-node")]
