@@ -257,6 +257,7 @@ class _Reader:
         self.run = run
         self.args_only = args_only
         self.node_names: list[str] = []
+        self.including: list[str] = []  # the chain of files being read, outermost first
 
     # -- errors ---------------------------------------------------------------------------
 
@@ -359,6 +360,7 @@ class _Reader:
     def load_file(self, filename: str, namespace: str, cli_args: dict[str, str]) -> None:
         context = LoadContext(namespace, filename)
         context.subst.args = cli_args
+        self.including = [os.path.normpath(Path(filename).absolute())]
         launch = self.parse(context, None, filename)
         self.plan.files.append(filename)
         self.launch_tag(context, launch)
@@ -720,9 +722,15 @@ class _Reader:
         except ContextError as error:
             raise self.fail(context, element, str(error)) from None
         launch = self.parse(context, element, filename)
+        path = os.path.normpath(Path(filename).absolute())
+        if path in self.including:
+            chain = " -> ".join([*self.including, path])
+            raise self.fail(context, element, f"the file includes itself: {chain}")
         self.plan.files.append(filename)
         self.launch_tag(child, launch)
+        self.including.append(path)
         machine = self.recurse(child, launch.children, machine)
+        self.including.pop()
         if not pass_all and child.unused_args():
             unused = ", ".join(child.unused_args())
             raise self.fail(context, element, f"unused args [{unused}] for include of [{filename}]")

@@ -316,3 +316,23 @@ def test_duplicate_node_names(load: Load) -> None:
             '<launch><node name="a" pkg="demo" type="run" /><node name="a" pkg="x" type="y" />'
             "</launch>"
         )
+
+
+def test_a_file_including_itself_is_refused(load: Load, write: Write, tmp_path: Path) -> None:
+    other = write(
+        "other.launch", f'<launch>\n<include file="{tmp_path / "main.launch"}" />\n</launch>'
+    )
+    with pytest.raises(LaunchError) as error:
+        load(f'<launch><include file="{other}" /></launch>')
+    main = tmp_path / "main.launch"
+    assert str(error.value) == (
+        f"{other}:2: <include>: the file includes itself: {main} -> {other} -> {main}"
+    )
+
+
+def test_a_file_included_twice_is_read_twice(load: Load, write: Write) -> None:
+    inner = write("inner.launch", '<launch><param name="p" value="1" /></launch>')
+    plan = load(
+        f'<launch><include file="{inner}" ns="a" /><include file="{inner}" ns="b" /></launch>'
+    )
+    assert plan.param_values() == {"/a/p": 1, "/b/p": 1}
