@@ -1,9 +1,10 @@
 """The ROS master as an XML-RPC server: `MasterApi` behind `XmlRpcServer`, with a `Notifier`
 for the calls it makes to nodes (ROS wiki Master_API, Parameter Server API).
 
-`Master` runs in an asyncio event loop; `MasterThread` hosts one in a background thread for
-synchronous code (tests, benchmarks, embedding). All master state lives on the loop's thread;
-other threads reach it through the loop (`MasterThread.run`), never directly.
+`Master` runs in an asyncio event loop; `MasterThread` hosts one on the process's event loop
+(`rosx.transport.loop_thread`) for synchronous code (roscore's core, tests, benchmarks). All
+master state lives on the loop's thread; other threads reach it through the loop
+(`MasterThread.run`), never directly.
 
 A ``shutdown`` call from a client sets `Master.shutdown_requested` (with the caller's message in
 `shutdown_message`); whoever runs the master decides when to `close` it, as roscore does.
@@ -104,8 +105,8 @@ class Master:
 
 
 class MasterThread(Hosted):
-    """A `Master` in a background event loop; arguments as `Master`'s, but port 0 by default."""
+    """A `Master` on the process's event loop; arguments as `Master`'s, but port 0 by default."""
 
     def __init__(self, *, port: int = 0, **options: Any) -> None:
         self.master = Master(port=port, **options)
-        super().__init__(self.master, "rosx-master", close_timeout=10.0)
+        super().__init__(self.master, close_timeout=10.0)

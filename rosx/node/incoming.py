@@ -31,7 +31,7 @@ from rosx.wire.tcpros import check_publisher_reply
 if TYPE_CHECKING:
     from collections.abc import Awaitable, Callable
 
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
 
     class Detacher(Protocol):
         """The receiver thread that owns a connected stream's socket."""
@@ -59,7 +59,7 @@ class IncomingStream:
     def __init__(
         self,
         *,
-        io: IoLoop,
+        io: LoopThread,
         topic: str,
         publisher_uri: str,
         request_header: dict[str, str],

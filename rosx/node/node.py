@@ -1,9 +1,9 @@
 """`Node`: a ROS 1 node with a synchronous facade, any number of them in one process.
 
-A node owns a Slave API server (XML-RPC) and a TCPROS server, both on the process's I/O loop
-(`rosx.node.loop`), and registers its publications, subscriptions and services with the master
-(ROS wiki ROS/Master_API, ROS/Slave_API). Like a rospy node it publishes its log on
-``/rosout`` and serves ``~get_loggers`` and ``~set_logger_level``.
+A node owns a Slave API server (XML-RPC) and a TCPROS server, both on the process's event loop
+(`rosx.transport.loop_thread.process_loop`), and registers its publications, subscriptions and
+services with the master (ROS wiki ROS/Master_API, ROS/Slave_API). Like a rospy node it
+publishes its log on ``/rosout`` and serves ``~get_loggers`` and ``~set_logger_level``.
 
 Every public method may be called from any thread except the I/O loop's (user callbacks never
 run there). Calls to the master are made on the caller's thread with the blocking XML-RPC
@@ -25,7 +25,6 @@ from rosx.node import rosout
 from rosx.node.errors import NodeShutdownError, ServiceError
 from rosx.node.handles import Publisher, ServiceHandle, Subscriber
 from rosx.node.log_services import RosoutPublisher, advertise_logger_services
-from rosx.node.loop import io_loop
 from rosx.node.master_proxy import MasterProxy, call_async
 from rosx.node.params import ParamCache, ParamClient
 from rosx.node.publication import Publication
@@ -38,6 +37,7 @@ from rosx.node.tcpros_server import TcprosServer
 from rosx.transport.aclient import AsyncXmlRpcClient
 from rosx.transport.address import advertised_host, bind_host
 from rosx.transport.client import XmlRpcClient
+from rosx.transport.loop_thread import process_loop
 from rosx.transport.server import XmlRpcServer
 from rosx.wire.header import Refused
 from rosx.wire.rosrpc import accept_client, format_rosrpc_uri
@@ -49,7 +49,7 @@ if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
 
     from rosx.msg.message import Message, ServiceDefinition
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
     from rosx.wire.framing import FrameReader
 
 DEFAULT_MASTER_URI = "http://localhost:11311/"
@@ -75,7 +75,7 @@ class Node:
         rosout_enabled: bool = True,
         log_level: int = rosout.INFO,
         console: Callable[[int, str], None] | None = None,
-        io: IoLoop | None = None,
+        io: LoopThread | None = None,
         private_params: Mapping[str, str] | None = None,
     ) -> None:
         env = os.environ if environ is None else environ
@@ -89,7 +89,7 @@ class Node:
         self.host = advertised_host(env, host)
         self._bind = bind_host(env, host)
         self._ports = (xmlrpc_port, tcpros_port)
-        self.io = io or io_loop()
+        self.io = io or process_loop()
         self.uri = ""
         self.client = XmlRpcClient()
         self.master = MasterProxy(self.master_uri, self.name, self.client)

@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from collections.abc import Callable
 
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
 
 #: With ``queue_size=None``, `OutgoingStream.send` blocks while more bytes than this wait.
 HIGH_WATER = 4 * 1024 * 1024
@@ -43,7 +43,7 @@ class OutgoingStream:
     def __init__(
         self,
         sock: socket.socket,
-        io: IoLoop,
+        io: LoopThread,
         queue_size: int | None,
         on_close: Callable[[OutgoingStream], None] | None = None,
     ) -> None:

@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     import socket
 
     from rosx.msg.message import Message
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
     from rosx.wire.tcpros import SubscriberAccepted
 
 _U32 = struct.Struct("<I")
@@ -71,7 +71,7 @@ class Publication:
 
     def __init__(
         self,
-        io: IoLoop,
+        io: LoopThread,
         info: PublicationInfo,
         *,
         queue_size: int | None,

@@ -37,7 +37,7 @@ if TYPE_CHECKING:
     from collections.abc import Callable
 
     from rosx.node.incoming import IncomingStream
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
 
     Decode = Callable[[bytes, dict[str, str]], Any]
     #: A callback and the decoder of what it receives.
@@ -51,7 +51,7 @@ class Receiver:
 
     def __init__(
         self,
-        io: IoLoop,
+        io: LoopThread,
         *,
         queue_size: int | None,
         name: str,

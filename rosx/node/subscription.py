@@ -28,8 +28,8 @@ if TYPE_CHECKING:
     from collections.abc import Awaitable, Callable
 
     from rosx.msg.message import Message
-    from rosx.node.loop import IoLoop
     from rosx.node.receiver import Decode, Entry
+    from rosx.transport.loop_thread import LoopThread
 
 
 class RawMessage:
@@ -96,7 +96,7 @@ class Subscription:
     def __init__(
         self,
         *,
-        io: IoLoop,
+        io: LoopThread,
         topic: str,
         msg_class: type[Message] | None,
         caller_id: str,
