@@ -5,6 +5,7 @@ channel (``requestTopic``), connect to the host and port it names, send the subs
 and check the publisher's. Then ``on_connected`` hands the stream to its subscription's
 `Receiver` thread, which calls `IncomingStream.read` whenever the socket is readable: large
 reads parsed by a `FrameReader`. ``on_close`` is called once, on the loop, when the stream ends.
+The byte and frame counts (``getBusStats``) are written by that one thread only.
 
 Retries follow rospy: a publisher whose XML-RPC server refuses the connection, or that refuses
 the topic, is given up at once; other failures to reach it (timeouts, unreachable hosts, a

@@ -53,6 +53,15 @@ if TYPE_CHECKING:
     from rosx.wire.framing import FrameReader
 
 DEFAULT_MASTER_URI = "http://localhost:11311/"
+#: A node's worker threads: they run its service handlers and hand a latched message to a
+#: callback added after the message came. They start only when calls overlap and are shared by
+#: all the node's services. The bound is how many calls the node serves at once; more wait in
+#: line. One is too few: as in rospy (a thread per call) a handler may block, on I/O, a sleep or
+#: a call to another service of the same node, which would then wait for itself. Many are
+#: useless: Python handlers hold the GIL, so past a few threads only waiting handlers gain, and
+#: a process hosting many nodes (``rosx sim``, the tests) would keep each node's idle threads.
+#: 8 serves a few slow callers and a nested call or two at once; a ninth call waits its turn.
+WORKERS = 8
 _UNREGISTER_TIMEOUT = 2.0
 #: How long a second `Node.shutdown` caller waits for the first to finish.
 _FINISH_TIMEOUT = 15.0
@@ -107,7 +116,7 @@ class Node:
         self._aclient: AsyncXmlRpcClient | None = None
         self._xmlrpc: XmlRpcServer | None = None
         self._tcpros = TcprosServer(self.io, self._on_connection)
-        self._executor = ThreadPoolExecutor(32, thread_name_prefix=f"rosx-srv{self.name}")
+        self._workers = ThreadPoolExecutor(WORKERS, thread_name_prefix=f"rosx-worker{self.name}")
         self._rosout_enabled = rosout_enabled
         self.log_sink = rosout.NodeLog(self.name, level=log_level, console=console, environ=env)
         self.shutdown_reason = ""
@@ -206,7 +215,7 @@ class Node:
                 self.io.spawn(self._close_all())
             else:
                 self.io.run(self._close_all(), timeout=10.0)
-            self._executor.shutdown(wait=False, cancel_futures=True)
+            self._workers.shutdown(wait=False, cancel_futures=True)
             self.client.close()
         finally:
             self._closed.set()
@@ -338,6 +347,7 @@ class Node:
                     topic=name,
                     msg_class=data_class,
                     caller_id=self.name,
+                    workers=self._workers,
                     xmlrpc=self._call_peer,
                     queue_size=queue_size,
                     tcp_nodelay=tcp_nodelay,
@@ -406,7 +416,7 @@ class Node:
                 name=resolved,
                 service_class=service_class,
                 handler=handler,
-                executor=self._executor,
+                executor=self._workers,
                 on_error=self._log_error,
             )
             server.uri = format_rosrpc_uri(self.host, self._tcpros.port)

@@ -11,6 +11,8 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
   one would exceed it (ROS 1's semantics), never the frame already partly on the wire; ``0``
   means unbounded; ``None`` means no frame is dropped and `send` blocks its (non-loop) caller
   while more than `HIGH_WATER` bytes wait, as rospy's synchronous publish blocks.
+* The queue and the byte and frame counts (``getBusStats``) change only under the stream's
+  lock, whichever thread writes.
 * A peer that closes, resets or sends garbage ends the stream; `on_close` is then called once,
   on the loop. Bytes a subscriber sends after its header are read and ignored: reading is how
   a closed peer is noticed before the next publish.

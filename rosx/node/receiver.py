@@ -18,7 +18,8 @@ The contract:
 * Whichever reader thread queued frames runs the callbacks, unless another one already is: the
   callbacks of a topic never run concurrently, and run in the order the frames were queued. A
   single frame read when nothing is queued and no callback is running skips the queue (same
-  order, one hand-off less on the latency path).
+  order, one hand-off less on the latency path). A latched message for a callback added late
+  is queued by the loop and run by one of the node's worker threads (`Receiver.put`).
 * A frame is decoded lazily, once per decoder, just before its callbacks run. Callback
   exceptions go to ``on_error`` (rospy logs ``bad callback``) and reading goes on.
 * A stream that ends (peer closed, error, `Receiver.detach` shutting its socket down) has its
@@ -35,6 +36,7 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from collections.abc import Callable
+    from concurrent.futures import Executor
 
     from rosx.node.incoming import IncomingStream
     from rosx.transport.loop_thread import LoopThread
@@ -52,12 +54,14 @@ class Receiver:
     def __init__(
         self,
         io: LoopThread,
+        workers: Executor,
         *,
         queue_size: int | None,
         name: str,
         on_error: Callable[[BaseException, Callable[[Any], object]], None] | None = None,
     ) -> None:
         self._io = io
+        self._workers = workers
         self._name = name
         self._on_error = on_error
         self._queue: deque[Item] = deque(maxlen=queue_size if queue_size else None)
@@ -65,14 +69,6 @@ class Receiver:
         self.entries: tuple[Entry, ...] = ()
         self._streams: set[IncomingStream] = set()
         self._stopped = False
-        #: Frames queued, and frames whose callbacks have run.
-        self.received = 0
-        self.handled = 0
-
-    @property
-    def dropped(self) -> int:
-        """Frames dropped from the full queue so far."""
-        return max(0, self.received - self.handled - len(self._queue))
 
     # -- callbacks (any thread) --------------------------------------------------------------
 
@@ -89,14 +85,13 @@ class Receiver:
     def put(self, frame: bytes, header: dict[str, str], only: Entry | None = None) -> None:
         """Queue one frame for every callback, or only for ``only`` (a latched message).
 
-        The callbacks run on a short-lived thread of their own unless a reader thread is
-        already running them.
+        A worker thread runs the callbacks, unless a reader thread already is running them.
         """
         if self._stopped:
             return
-        self.received += 1
         self._queue.append((frame, header, only))
-        threading.Thread(target=self._dispatch_all, name=self._name, daemon=True).start()
+        with contextlib.suppress(RuntimeError):  # the node has shut its workers down
+            self._workers.submit(self._dispatch_all)
 
     # -- connections -------------------------------------------------------------------------
 
@@ -135,7 +130,6 @@ class Receiver:
             frames = stream.take_frames()  # what came with the header (a latched message)
             while frames is not None and not self._stopped:
                 if frames:
-                    self.received += len(frames)
                     header = stream.header
                     if len(frames) == 1 and not queue and lock.acquire(blocking=False):
                         # Nothing waits and no callback runs: run this frame's callbacks now,
@@ -186,4 +180,3 @@ class Receiver:
             except Exception as exc:  # a user's callback must not end the thread
                 if self._on_error is not None and not self._stopped:
                     self._on_error(exc, callback)
-        self.handled += 1

@@ -26,6 +26,7 @@ from rosx.wire.tcpros import WILDCARD, subscriber_header
 
 if TYPE_CHECKING:
     from collections.abc import Awaitable, Callable
+    from concurrent.futures import Executor
 
     from rosx.msg.message import Message
     from rosx.node.receiver import Decode, Entry
@@ -100,6 +101,7 @@ class Subscription:
         topic: str,
         msg_class: type[Message] | None,
         caller_id: str,
+        workers: Executor,
         xmlrpc: Callable[..., Awaitable[Any]],
         queue_size: int | None = None,
         tcp_nodelay: bool = False,
@@ -123,7 +125,11 @@ class Subscription:
         )
         self.streams: dict[str, IncomingStream] = {}
         self.receiver = Receiver(
-            io, queue_size=queue_size, name=f"rosx-sub{topic}", on_error=self._callback_failed
+            io,
+            workers,
+            queue_size=queue_size,
+            name=f"rosx-sub{topic}",
+            on_error=self._callback_failed,
         )
         self.updates = 0
         self.closed = False
