@@ -8,13 +8,13 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node.node import Node
 
 if TYPE_CHECKING:
     from collections.abc import Mapping
 
-    from rosx.msg.message import Message
+    from rosx.msg.codec.message import Message
 
 ROSOUT_QUEUE = 100
 

@@ -28,7 +28,7 @@ from rosx.wire.tcpros import Publication as PublicationInfo
 if TYPE_CHECKING:
     import socket
 
-    from rosx.msg.message import Message
+    from rosx.msg.codec.message import Message
     from rosx.transport.loop_thread import LoopThread
     from rosx.wire.tcpros import SubscriberAccepted
 

@@ -10,7 +10,7 @@ from typing import Any
 import pytest
 
 from rosx.core import Core, PortInUseError
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import INFO, Node
 from rosx.transport.client import XmlRpcClient
 from tests.support.procs import wait_for
