@@ -74,10 +74,10 @@ class Core:
                 advertised_host=advertised_host(self.environ),
                 on_shutdown=self._shutdown_called,
             )
-            self._stopped = True  # until it has started: a failed core is done
             try:
                 self.uri = master.start()
             except OSError as exc:
+                self._stopped = True
                 self._ended.set()
                 raise refusal(self.uri, self.port, exc) from None
             self._master = master
@@ -86,9 +86,9 @@ class Core:
                 master.run(set_core_params(master.master.api, self.run_id))
                 self._rosout = start_rosout(self.uri, self.environ)
             except BaseException:
+                self._stopped = True
                 self._close()
                 raise
-            self._stopped = False
             return self.uri
 
     def wait(self, timeout: float | None = None) -> str | None:

@@ -15,7 +15,7 @@ from __future__ import annotations
 import os
 import signal
 import threading
-from typing import TYPE_CHECKING, TextIO
+from typing import TYPE_CHECKING, Any, TextIO
 
 from rosx.core import Core, PortInUseError
 from rosx.core.params import ROSDISTRO, ROSVERSION
@@ -125,14 +125,15 @@ class _Stop(BaseException):
 
 class _StopSignals:
     """SIGINT and SIGTERM stop roscore from the moment it starts. One that comes while the core
-    starts or the summary prints is kept until `wait`, so both are always printed whole."""
+    starts or the summary prints is kept until `wait`, so roscore's start-up lines and its
+    shutdown lines are always printed whole."""
 
     _SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
     def __init__(self) -> None:
         self.received = False
         self._waiting = False
-        self._previous: dict[int, object] = {}
+        self._previous: dict[int, Any] = {}  # the handlers replaced
 
     def __enter__(self) -> _StopSignals:
         if threading.current_thread() is threading.main_thread():
@@ -142,7 +143,7 @@ class _StopSignals:
 
     def __exit__(self, *exc: object) -> None:
         for sig, handler in self._previous.items():
-            signal.signal(sig, handler)  # type: ignore[arg-type]
+            signal.signal(sig, handler)
 
     def _handle(self, signum: int, frame: FrameType | None) -> None:
         self.received = True
