@@ -11,8 +11,7 @@ from __future__ import annotations
 import errno
 
 from rosx.core.params import LAUNCH_CALLER
-from rosx.transport.client import XmlRpcClient
-from rosx.transport.errors import FaultError, TransportError
+from rosx.master.client import MasterClient, MasterError, MasterUnreachable
 
 #: How long a master already on the port has to answer ``getPid``.
 _ANSWER_TIMEOUT = 3.0
@@ -56,9 +55,11 @@ def refusal(uri: str, port: int, exc: OSError) -> PortInUseError:
 
 
 def _master_answers(uri: str) -> bool:
-    with XmlRpcClient(timeout=_ANSWER_TIMEOUT) as client:
-        try:
-            client.call(uri, "getPid", LAUNCH_CALLER)
-        except (TransportError, FaultError, OSError):
-            return False
+    master = MasterClient(uri, LAUNCH_CALLER, timeout=_ANSWER_TIMEOUT)
+    try:
+        master.call("getPid")
+    except (MasterError, MasterUnreachable):
+        return False
+    finally:
+        master.close()
     return True

@@ -69,6 +69,12 @@ class Receiver:
         self.entries: tuple[Entry, ...] = ()
         self._streams: set[IncomingStream] = set()
         self._stopped = False
+        self._counting = threading.Lock()
+        #: Frames queued, and frames whose callbacks have run (how far the callbacks are
+        #: behind). Several reader threads queue at once, so `received` grows under a lock of
+        #: its own; `handled` grows only under the dispatch lock.
+        self.received = 0
+        self.handled = 0
 
     # -- callbacks (any thread) --------------------------------------------------------------
 
@@ -89,6 +95,7 @@ class Receiver:
         """
         if self._stopped:
             return
+        self._count(1)
         self._queue.append((frame, header, only))
         with contextlib.suppress(RuntimeError):  # the node has shut its workers down
             self._workers.submit(self._dispatch_all)
@@ -130,6 +137,7 @@ class Receiver:
             frames = stream.take_frames()  # what came with the header (a latched message)
             while frames is not None and not self._stopped:
                 if frames:
+                    self._count(len(frames))
                     header = stream.header
                     if len(frames) == 1 and not queue and lock.acquire(blocking=False):
                         # Nothing waits and no callback runs: run this frame's callbacks now,
@@ -152,6 +160,10 @@ class Receiver:
             if sock is not None:
                 sock.close()
             self._io.call_soon(stream.close)
+
+    def _count(self, frames: int) -> None:
+        with self._counting:
+            self.received += frames
 
     def _dispatch_all(self) -> None:
         # Another thread may queue frames just after this one found the queue empty, then
@@ -180,3 +192,4 @@ class Receiver:
             except Exception as exc:  # a user's callback must not end the thread
                 if self._on_error is not None and not self._stopped:
                     self._on_error(exc, callback)
+        self.handled += 1

@@ -19,14 +19,13 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 from rosx.core import Core, PortInUseError
 from rosx.core.params import ROSDISTRO, ROSVERSION
+from rosx.master.client import master_uri
 from rosx.transport.address import address_warnings, is_local_host
 from rosx.wire.xmlrpc_http import parse_http_uri
 
 if TYPE_CHECKING:
     from collections.abc import Mapping
     from types import FrameType
-
-DEFAULT_MASTER_URI = "http://localhost:11311"
 
 
 def _summary_value(value: str) -> str:
@@ -70,7 +69,7 @@ def _print_summary(out: _Printer) -> None:
 
 
 def _master_uri_warning(environ: Mapping[str, str], port: int) -> str | None:
-    uri = environ.get("ROS_MASTER_URI") or DEFAULT_MASTER_URI
+    uri = master_uri(environ)
     try:
         host, env_port, _ = parse_http_uri(uri)
     except ValueError:
