@@ -40,6 +40,13 @@ if TYPE_CHECKING:
     H = TypeVar("H", bound="Hosted")
 
 
+#: Threads for the blocking name lookups asyncio makes when a URI names a host (the loop's
+#: default executor, which nothing else here uses). A known name resolves in microseconds; one
+#: the resolver cannot answer costs its timeout, seconds. 4 lets a few such lookups wait without
+#: holding up every other connection, where Python's default would allow CPUs + 4 threads.
+LOOKUP_THREADS = 4
+
+
 class LoopThreadError(RuntimeError):
     """A blocking call was made on the loop's own thread, where it would wait for itself."""
 
@@ -71,6 +78,11 @@ class LoopThread:
         """Start the thread and its loop (idempotent); returns self."""
         if self._loop is None:
             loop = asyncio.new_event_loop()
+            loop.set_default_executor(
+                concurrent.futures.ThreadPoolExecutor(
+                    LOOKUP_THREADS, thread_name_prefix=f"{self.name}-lookup"
+                )
+            )
             ready = threading.Event()
             thread = threading.Thread(
                 target=self._run, args=(loop, ready), name=self.name, daemon=True
@@ -94,6 +106,7 @@ class LoopThread:
             if pending:
                 loop.run_until_complete(asyncio.gather(*pending, return_exceptions=True))
             loop.run_until_complete(loop.shutdown_asyncgens())
+            loop.run_until_complete(loop.shutdown_default_executor())
             loop.close()
 
     def in_loop_thread(self) -> bool:
