@@ -22,7 +22,14 @@ Layering: above `rosx.node` and `rosx.master`, below the client API; this packag
 
 from __future__ import annotations
 
-from rosx.core.core import Core
-from rosx.core.errors import PortInUseError
+from rosx._lazy import lazy_names
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from rosx.core.core import Core
+    from rosx.core.errors import PortInUseError
+
+# `params` alone (roslaunch's printing options) does not start the node runtime's imports.
+__getattr__ = lazy_names(__name__, {"Core": "rosx.core.core", "PortInUseError": "rosx.core.errors"})
 
 __all__ = ["Core", "PortInUseError"]
