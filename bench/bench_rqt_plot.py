@@ -27,7 +27,9 @@ import subprocess
 import sys
 import threading
 import time
+from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path[:0] = [str(ROOT), str(ROOT / "commands"), str(ROOT / "turtle")]
@@ -54,7 +56,7 @@ def measure(pid: int, window: float) -> float:
     return 100 * (cpu_seconds(pid) - start) / (time.monotonic() - t0)
 
 
-def publish(publishers: list[object], message: type, stop: threading.Event) -> list[int]:
+def publish(publishers: Sequence[Any], message: type, stop: threading.Event) -> list[int]:
     """Each topic at `RATE` on average (batches catch up after a late wake-up)."""
     sent = [0]
     t0 = time.monotonic()
@@ -63,7 +65,7 @@ def publish(publishers: list[object], message: type, stop: threading.Event) -> l
         while sent[0] < due:
             value = math.sin(sent[0] / RATE)
             for publisher in publishers:
-                publisher.publish(message(data=value))  # type: ignore[attr-defined]
+                publisher.publish(message(data=value))
             sent[0] += 1
         time.sleep(0.0005)
     return sent

@@ -39,7 +39,7 @@ def test_pose_x_rises_while_the_turtle_moves(
                 assert time.monotonic() < deadline, series.status
                 await pilot.pause(0.05)
             still = series.latest
-            assert still == pytest.approx(5.544445, abs=1e-4)
+            assert still is not None and still == pytest.approx(5.544445, abs=1e-4)
             command = twist()
             command.linear.x = 2.0
             while series.latest is None or series.latest < still + 1.0:
