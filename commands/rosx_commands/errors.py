@@ -69,3 +69,15 @@ def command_error(error: BaseException, env: Environment, status: int) -> Comman
         if isinstance(error, UnknownTopicError | NodeContactError):
             return CommandError(f"ERROR: {error}", status)
     return None
+
+
+def error_line(error: BaseException) -> str:
+    """``error`` as one line for a terminal UI's status line: the core's errors in ROS 1's
+    words (`command_error`), anything else as ``ERROR: <its text>``."""
+    import io  # noqa: PLC0415 - only on failure
+
+    # Not a terminal: ROS 1's line alone, without the hint that follows it on a terminal.
+    mapped = command_error(error, Environment(stderr=io.StringIO()), 1)
+    if mapped is not None:
+        return mapped.message
+    return f"ERROR: {error or type(error).__name__}"

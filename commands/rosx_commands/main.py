@@ -31,6 +31,14 @@ TOOLS: dict[str, tuple[str, str]] = {
         "rosx_commands.rqt_graph:rqt_graph",
         "Show the ROS graph of nodes and topics, live.",
     ),
+    "rqt_console": (
+        "rosx_commands.rqt_console:rqt_console",
+        "Show the log of every node (/rosout_agg), filtered and highlighted.",
+    ),
+    "rqt_logger_level": (
+        "rosx_commands.rqt_logger_level:rqt_logger_level",
+        "Show and set the logger levels of running nodes.",
+    ),
     "sim": ("rosx_commands.sim:sim", "Run a master, turtlesim and teleop in one terminal UI."),
     "catkin_create_pkg": (
         "rosx_commands.catkin_create_pkg:catkin_create_pkg",

@@ -41,6 +41,8 @@ _TOOL_EXECUTABLES = {
     ("rosservice", "rosservice"): "rosservice",
     ("rosparam", "rosparam"): "rosparam",
     ("rqt_graph", "rqt_graph"): "rqt_graph",
+    ("rqt_console", "rqt_console"): "rqt_console",
+    ("rqt_logger_level", "rqt_logger_level"): "rqt_logger_level",
 }
 
 
