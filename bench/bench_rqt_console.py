@@ -37,7 +37,20 @@ from rosx_commands.rqt_console.source import Inbox
 
 NODES = [f"/node_{i}" for i in range(6)] + ["/turtlesim", "/teleop_turtle"]
 TOPICS = ("/rosout", "/turtle1/pose", "/turtle1/color_sensor", "/turtle1/cmd_vel")
-WORDS = "turtle wall pose velocity spawn clamp reset pen colour service timer frame".split()
+WORDS = [
+    "turtle",
+    "wall",
+    "pose",
+    "velocity",
+    "spawn",
+    "clamp",
+    "reset",
+    "pen",
+    "colour",
+    "service",
+    "timer",
+    "frame",
+]
 
 
 def entries(count: int, seed: int = 1) -> list[Entry]:
@@ -146,8 +159,10 @@ async def screen(count: int) -> None:
         for key in ("home", "end", "pagedown"):
             start = time.perf_counter()
             await pilot.press(key)
-            print(f"screen: {key:8} round trip (pilot's own waits included): "
-                  f"{(time.perf_counter() - start) * 1e3:.0f} ms")
+            print(
+                f"screen: {key:8} round trip (pilot's own waits included): "
+                f"{(time.perf_counter() - start) * 1e3:.0f} ms"
+            )
 
 
 async def datatable(count: int) -> None:

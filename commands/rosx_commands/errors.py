@@ -73,11 +73,10 @@ def command_error(error: BaseException, env: Environment, status: int) -> Comman
 
 def error_line(error: BaseException) -> str:
     """``error`` as one line for a terminal UI's status line: the core's errors in ROS 1's
-    words (`command_error`), anything else as ``ERROR: <its text>``."""
+    words (`command_error`), any other as its text."""
     import io  # noqa: PLC0415 - only on failure
 
-    # Not a terminal: ROS 1's line alone, without the hint that follows it on a terminal.
-    mapped = command_error(error, Environment(stderr=io.StringIO()), 1)
-    if mapped is not None:
-        return mapped.message
-    return f"ERROR: {error or type(error).__name__}"
+    quiet = Environment(stdout=io.StringIO(), stderr=io.StringIO(), environ={})
+    mapped = command_error(error, quiet, 1)
+    text = mapped.message if mapped else str(error)
+    return text.splitlines()[0] if text.strip() else type(error).__name__

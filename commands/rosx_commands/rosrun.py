@@ -43,6 +43,9 @@ _TOOL_EXECUTABLES = {
     ("rqt_graph", "rqt_graph"): "rqt_graph",
     ("rqt_console", "rqt_console"): "rqt_console",
     ("rqt_logger_level", "rqt_logger_level"): "rqt_logger_level",
+    ("rqt_plot", "rqt_plot"): "rqt_plot",
+    ("rqt_topic", "rqt_topic"): "rqt_topic",
+    ("rqt_gui", "rqt_gui"): "rqt",
 }
 
 

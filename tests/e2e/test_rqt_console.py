@@ -37,16 +37,17 @@ def world() -> Iterator[SimHost]:
         host.stop()
 
 
-async def drive_until(pilot: Pilot[ConsoleApp], host: SimHost, text: str, severity: str) -> str:
+async def drive_until(pilot: Pilot[int], host: SimHost, text: str, severity: str) -> str:
     """Drive the turtle forward until a row of ``severity`` holding ``text`` shows; the row."""
     app = pilot.app
+    assert isinstance(app, ConsoleApp)
     deadline = time.monotonic() + DEADLINE
     while time.monotonic() < deadline:
         host.drive(2.0, 0.0)
         await pilot.pause(0.05)
         for row in app.pane.table.visible_text():
             if text in row and f" {severity} " in row:
-                return row
+                return str(row)
     raise AssertionError(f"no {severity} row with {text!r} in {app.pane.table.visible_text()}")
 
 
