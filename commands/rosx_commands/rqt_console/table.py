@@ -39,8 +39,9 @@ HEADER = Style(bold=True, underline=True)
 #: where the terminal is wide enough for them.
 FIXED = (("Time", 12), ("Severity", 8), ("Node", 16))
 WIDE = (("Topics", 20), ("Location", 22))
-#: The width from which the topics and location columns show.
-WIDE_FROM = 120
+#: The table width from which the topics and location columns show (a 120-column terminal
+#: less the scroll bar).
+WIDE_FROM = 110
 
 
 def columns(width: int) -> list[tuple[str, int]]:
