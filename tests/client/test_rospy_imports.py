@@ -240,3 +240,31 @@ def test_rospy_submodules_scripts_import(tmp_path: Path, module: str) -> None:
         f"import json, {module} as m\nprint(json.dumps(m.ROSInterruptException.__name__))\n",
     )
     assert json_of(done) == "ROSInterruptException"
+
+
+def test_scripts_import_rosbag_from_the_bag_layers_shim(tmp_path: Path) -> None:
+    writer = run_script(
+        tmp_path,
+        """\
+import rosbag
+from std_msgs.msg import Int32, String
+with rosbag.Bag('test.bag', 'w') as bag:
+    bag.write('chatter', String(data='foo'))
+    bag.write('numbers', Int32(data=42))
+""",
+    )
+    assert writer.returncode == 0, writer.stderr
+    reader = run_script(
+        tmp_path,
+        """\
+import json, rosbag
+bag = rosbag.Bag('test.bag')
+got = [(topic, str(msg).replace(chr(10), ' ')) for topic, msg, t in bag.read_messages()]
+print(json.dumps([rosbag.__file__, got]))
+bag.close()
+""",
+    )
+    where, got = json_of(reader)
+    assert Path(where).parent.parent.name == "shim"
+    assert Path(where).parent.parent.parent.name == "bag"
+    assert got == [["chatter", 'data: "foo"'], ["numbers", "data: 42"]]
