@@ -11,6 +11,7 @@ import os
 import signal
 import subprocess
 import sys
+import termios
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -104,6 +105,11 @@ def wait_for_publisher(listener: Listener) -> None:
     )
 
 
+def wait_for_keys(terminal: int) -> None:
+    """Until the player reads keys one by one (its terminal out of line mode)."""
+    wait_for(lambda: not termios.tcgetattr(terminal)[3] & termios.ICANON, what="the player's keys")
+
+
 def test_pause_then_step_with_s_and_resume_with_space(
     make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
 ) -> None:
@@ -113,6 +119,7 @@ def test_pause_then_step_with_s_and_resume_with_space(
     try:
         player = play("--pause", "-d", "0", bag, stdin=terminal)
         wait_for_publisher(listener)
+        wait_for_keys(terminal)
         os.write(keys, b"s")
         assert listener.wait(1) == ["/chatter:0"]
         os.write(keys, b"s")
@@ -137,6 +144,7 @@ def test_space_pauses_a_running_playback(
     try:
         player = play("-d", "0", "--wait-for-subscribers", bag, stdin=terminal)
         assert listener.wait(2) == ["/chatter:0", "/chatter:1"]
+        wait_for_keys(terminal)
         os.write(keys, b" ")  # paused: the hour-long gap waits for the step
         os.write(keys, b"s")
         assert listener.wait(3) == ["/chatter:0", "/chatter:1", "/chatter:2"]
