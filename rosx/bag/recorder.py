@@ -37,6 +37,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rosx.bag.writer import DEFAULT_CHUNK_THRESHOLD, BagWriter, open_unbuffered
+from rosx.master.client import MasterError
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -272,15 +273,19 @@ class Recorder:
                     self._subscribe(topic)
 
     def _node_subscriptions(self) -> list[str]:
+        master = self.node.master
         try:
-            uri = self.node.master.call("lookupNode", self.node.resolve(self.options.node))
-            reply = self.node.client.call(uri, "getSubscriptions", self.node.name, timeout=2.0)
+            uri = str(master.call("lookupNode", self.node.resolve(self.options.node)))
         except Exception:
             return []
-        if not (isinstance(reply, list) and len(reply) == 3 and reply[0] == 1):
+        try:
+            subscriptions = master.node_call(uri, "getSubscriptions", timeout=2.0)
+        except MasterError:
             self.log("ERROR", f"Node at: [{uri}] failed to return subscriptions.")
             return []
-        return [str(t) for t, _ in reply[2]]
+        except Exception:
+            return []
+        return [str(t) for t, _ in subscriptions]
 
     def _watch(self) -> None:
         while not self._stopping.wait(DISCOVERY_PERIOD):

@@ -20,13 +20,14 @@ import threading
 from concurrent.futures import ThreadPoolExecutor
 from typing import TYPE_CHECKING, Any, cast
 
+from rosx.master.client import MasterClient, reply_value
+from rosx.master.client import master_uri as find_master_uri
 from rosx.names import make_global_ns, ns_join, resolve, resolve_remappings
 from rosx.node import rosout
 from rosx.node.errors import NodeShutdownError, ServiceError
 from rosx.node.handles import Publisher, ServiceHandle, Subscriber
 from rosx.node.log_services import RosoutPublisher, advertise_logger_services
 from rosx.node.loop import io_loop
-from rosx.node.master_proxy import MasterProxy, call_async
 from rosx.node.params import ParamCache, ParamClient
 from rosx.node.publication import Publication
 from rosx.node.service import ServiceServer
@@ -52,7 +53,6 @@ if TYPE_CHECKING:
     from rosx.node.loop import IoLoop
     from rosx.wire.framing import FrameReader
 
-DEFAULT_MASTER_URI = "http://localhost:11311/"
 _UNREGISTER_TIMEOUT = 2.0
 #: How long a second `Node.shutdown` caller waits for the first to finish.
 _FINISH_TIMEOUT = 15.0
@@ -82,7 +82,7 @@ class Node:
         self.environ = env
         self.namespace = make_global_ns(namespace or env.get("ROS_NAMESPACE") or "/")
         self.name = name if name.startswith("/") else ns_join(self.namespace, name)
-        self.master_uri = master_uri or env.get("ROS_MASTER_URI") or DEFAULT_MASTER_URI
+        self.master_uri = find_master_uri(env, master_uri)
         self.remappings = resolve_remappings(
             remappings or {}, self.namespace, self.name, strict=False
         )
@@ -92,7 +92,7 @@ class Node:
         self.io = io or io_loop()
         self.uri = ""
         self.client = XmlRpcClient()
-        self.master = MasterProxy(self.master_uri, self.name, self.client)
+        self.master = MasterClient(self.master_uri, self.name, self.client)
         self.param_cache = ParamCache()
         self.params = ParamClient(self.master, self.resolve, lambda: self.uri, self.param_cache)
         self.publications: dict[str, Publication] = {}
@@ -121,7 +121,7 @@ class Node:
         services; returns self.
 
         Raises:
-            TransportError: the master cannot be reached.
+            MasterUnreachable: the master cannot be reached.
             MasterError: the master refused a registration.
             ParamArgsError: a private parameter's value cannot be set.
         """
@@ -392,7 +392,7 @@ class Node:
 
     async def _call_peer(self, uri: str, method: str, *params: object) -> Any:
         assert self._aclient is not None
-        return await call_async(self._aclient, uri, method, *params)
+        return reply_value(await self._aclient.call(uri, method, *params))
 
     def _release_subscriber(self, handle: Subscriber) -> None:
         subscription = handle.subscription

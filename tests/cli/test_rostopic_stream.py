@@ -505,3 +505,18 @@ def test_ctrl_c_exits_quietly_and_unregisters(master: str) -> None:
         "WARNING: topic [/c/never] does not appear to be published yet\n",
     )
     assert not tool_nodes(master)
+
+
+def test_pub_once_waits_its_time_when_the_master_goes_away() -> None:
+    """``rostopic pub -1`` asks the master who subscribes; a master gone meanwhile is no error
+    (it waits its full time, as with no subscriber listed)."""
+    from types import SimpleNamespace
+
+    from rosx_commands.context import Environment
+    from rosx_commands.rostopic.publishing import Publishing
+    from rosx_commands.rostopic.session import Session
+
+    env = Environment(environ=clean_environ(ROS_MASTER_URI=f"http://127.0.0.1:{free_port()}"))
+    publisher: Any = SimpleNamespace(data_class=None)
+    publishing = Publishing(env, Session(env), publisher)
+    assert publishing._known_subscribers() is None

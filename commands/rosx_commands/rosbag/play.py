@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 from rosx.names.remap_args import strip_remap_args
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import Environment, ExitStatus
-from rosx_commands.master import master_uri, unreachable
+from rosx_commands.errors import unreachable
 
 if TYPE_CHECKING:
     from collections.abc import Iterator
@@ -245,7 +245,7 @@ def play(argv: list[str], env: Environment) -> int:
             except BagError as exc:
                 _log(env, "FATAL", f"Error reading {path}: {exc}")
                 return ExitStatus.ERROR
-        uri = master_uri(env)
+        uri = env.master_uri
         node = Node(
             f"play_{time.time_ns()}", master_uri=uri, environ=env.environ, remappings=remaps
         )
@@ -253,7 +253,7 @@ def play(argv: list[str], env: Environment) -> int:
             node.start()
         except Exception:
             node.shutdown("start-up failed")
-            raise unreachable(uri) from None
+            raise unreachable(env, uri) from None
         try:
             player = Player(
                 node,

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
-from rosx_commands.master import master_uri, unreachable
+from rosx_commands.errors import unreachable
 
 if TYPE_CHECKING:
     from types import FrameType
@@ -40,7 +40,6 @@ def build_parser(env: Environment) -> ToolParser:
     p = ToolParser(env, "rosbag", _HELP_USAGE)
     p.description = "Record a bag file with the contents of specified topics."
     p.formatter = optparse.IndentedHelpFormatter()
-    p.formatter.set_parser(p)
     add = p.add_option
     add("-a", "--all", dest="all", default=False, action="store_true", help="record all topics")
     add(
@@ -277,14 +276,14 @@ def record(argv: list[str], env: Environment) -> int:
     )
     if options.node:
         env.out(f"Recording from: {options.node}")
-    uri = master_uri(env)
+    uri = env.master_uri
     node = Node(f"record_{time.time_ns()}", master_uri=uri, environ=env.environ)
     stop = _StopFlag()
     try:
         node.start()
     except Exception:
         node.shutdown("start-up failed")
-        raise unreachable(uri) from None
+        raise unreachable(env, uri) from None
     recorder = Recorder(node, record_options, _Console(env, options.quiet))
     try:
         with stop:
