@@ -131,6 +131,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
     from rosx.client.script import shim_environ  # noqa: PLC0415
     from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
     from rosx.workspace.executables import find_executables, is_python_script  # noqa: PLC0415
+    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
 
     options = _options(argv)
     if options is None:
@@ -171,7 +172,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
             return ExitStatus.NOT_FOUND
         chosen = picked
     path = chosen
-    environ = shim_environ(env.environ)
+    environ = shim_environ(env.environ, shim_dirs())
     if is_python_script(path):
         command = [sys.executable, "-m", "rosx_commands", "run-script", str(path)]
     else:
