@@ -6,11 +6,17 @@ import socket
 import time
 from collections.abc import Sequence
 from typing import Any
-from urllib.parse import urlparse
 
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
-from rosx.transport.errors import CallTimeoutError, ConnectError, FaultError, TransportError
+from rosx.transport.address import uri_hostname
+from rosx.transport.errors import (
+    CallTimeoutError,
+    ConnectError,
+    FaultError,
+    InvalidUriError,
+    TransportError,
+)
 from rosx_commands.cli import ToolParser, commands_overview, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.master import Master
@@ -131,6 +137,8 @@ def connection_description(master: Master, node: str, uri: str) -> str:
         pid = _succeed(master.node_call(uri, "getPid", timeout=5.0))
         text = f"Pid: {pid}\n"
         bus_info = _succeed(master.node_call(uri, "getBusInfo", timeout=5.0))
+    except InvalidUriError:
+        raise CommandError(invalid_uri(node, uri)) from None
     except (TransportError, FaultError):
         raise CommandError(f"ERROR: Communication with node[{uri}] failed!") from None
     if bus_info:
@@ -151,6 +159,11 @@ def connection_description(master: Master, node: str, uri: str) -> str:
                     text += " ({} - {}) [{}]".format(*match.groups())
             text += f"\n    * transport: {transport}\n"
     return text
+
+
+def invalid_uri(node: str, uri: str) -> str:
+    """The error for a node registered with a URI that cannot be called (rosservice's words)."""
+    return f"ERROR: node [{node}] has an invalid RPC URI [{uri}]"
 
 
 def _succeed(reply: Any) -> Any:
@@ -208,6 +221,9 @@ def ping_node(
                 master.node_call(uri, "getPid", timeout=PING_TIMEOUT)
             except CallTimeoutError:
                 env.err(f"connection to [{node}] timed out")
+                return False
+            except InvalidUriError:
+                env.err(invalid_uri(node, uri))
                 return False
             except ConnectError:
                 fresh = master.lookup_node(node)
@@ -286,7 +302,7 @@ def machine(argv: list[str], env: Environment) -> int:
     for node in node_names(master):
         uri = master.lookup_node(node)
         if uri is not None:
-            hosts[node] = urlparse(uri).hostname or ""
+            hosts[node] = uri_hostname(uri)
     if not names:
         env.out("\n".join(sorted(set(hosts.values()))))
         return ExitStatus.OK

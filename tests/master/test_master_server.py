@@ -148,7 +148,12 @@ def test_the_replaced_node_is_told_to_shut_down(master: MasterThread, node: Fake
 
 def test_bad_input_is_refused_and_the_master_keeps_serving(master: MasterThread) -> None:
     port = int(master.uri.rsplit(":", 1)[1].rstrip("/"))
-    for junk in (b"\x00\xff garbage\r\n\r\n", b"POST / HTTP/1.1\r\nContent-Length: 3\r\n\r\n<x>"):
+    junks = (
+        b"\x00\xff garbage\r\n\r\n",
+        b"POST / HTTP/1.1\r\nContent-Length: 3\r\n\r\n<x>",
+        "POST / HTTP/1.1\r\nContent-Length: ²\r\n\r\n".encode("latin-1"),
+    )
+    for junk in junks:
         with socket.create_connection(("127.0.0.1", port), timeout=5) as sock:
             sock.sendall(junk)
             assert sock.recv(65536).startswith(b"HTTP/1.1 ")

@@ -3,10 +3,14 @@ publisher updates, unregistration and the Slave API's view of the connections.""
 
 from __future__ import annotations
 
+import contextlib
 import re
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import Any
+from xmlrpc.server import SimpleXMLRPCServer
+
+import pytest
 
 from rosx.msg.classes import get_message_class
 from rosx.node import Node, RawMessage
@@ -128,6 +132,48 @@ def test_publisher_update_connects_a_new_publisher(make_node: Callable[..., Node
     # A publisher that goes away is dropped when the master says so.
     second_node.shutdown("gone")
     wait_for(lambda: sub.get_num_connections() == 1)
+
+
+@contextlib.contextmanager
+def fake_publisher(answer: list[Any]) -> Iterator[str]:
+    """A Slave API answering every ``requestTopic`` with ``answer``; yields its URI."""
+    server = SimpleXMLRPCServer(("127.0.0.1", 0), logRequests=False)
+    server.register_function(lambda *_: answer, "requestTopic")
+    server.register_function(lambda *_: [1, "", [["/odd", "std_msgs/String"]]], "getPublications")
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}/"
+    finally:
+        server.shutdown()
+        server.server_close()
+        thread.join()
+
+
+@pytest.mark.parametrize(
+    ("uri", "answer", "error"),
+    [
+        ("http://127.0.0.1:1²/", None, "invalid host or port in URI 'http://127.0.0.1:1²/'"),
+        (None, [1, "", ["TCPROS", "127.0.0.1", "1²"]], "invalid protocol choice"),
+        (None, [1, "", ["TCPROS", "127.0.0.1", 70000]], "invalid protocol choice"),
+    ],
+    ids=["uri", "port-text", "port-range"],
+)
+def test_a_publisher_that_cannot_be_called_is_one_logged_line(
+    make_node: Callable[..., Node], master: str, uri: str | None, answer: Any, error: str
+) -> None:
+    lines: list[str] = []
+    listener = make_node("odd_listener", console=lambda level, line: lines.append(line))
+    with contextlib.ExitStack() as stack:
+        uri = uri or stack.enter_context(fake_publisher(answer))
+        call(master, "registerPublisher", "/odd_pub", "/odd", "std_msgs/String", uri)
+        try:
+            listener.subscribe("/odd", String, lambda m: None)
+            wait_for(lambda: any(error in line for line in lines), what="the error")
+        finally:
+            call(master, "unregisterPublisher", "/odd_pub", "/odd", uri)
+    (line,) = [line for line in lines if error in line]
+    assert line.startswith("[ERROR] [") and "[/odd]" in line and "\n" not in line
 
 
 def test_several_subscribers_share_a_topic(make_node: Callable[..., Node]) -> None:

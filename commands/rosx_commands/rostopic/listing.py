@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
-from urllib.parse import urlparse
 
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
+from rosx.transport.address import uri_hostname
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.master import Master
@@ -130,7 +130,7 @@ def _print_by_host(
             for node in nodes:
                 if node not in uris:
                     uris[node] = master.lookup_node(node)
-                host = urlparse(uris[node] or "").hostname or ""
+                host = uri_hostname(uris[node] or "")
                 mine = hosts.setdefault(host, [])
                 match = [n for t, _, n in mine if t == topic]
                 if match:
