@@ -64,6 +64,8 @@ class Client:
         self._args: RemapArgs | None = None
         self._argv: list[str] | None = None
         self._master: MasterProxy | None = None
+        #: What ``rospy.get_master()`` hands out (`rosx.client.masterproxy`), made once.
+        self.script_master: Any = None
 
     # -- the command line --------------------------------------------------------------------
 
@@ -127,6 +129,14 @@ class Client:
 
     # -- the master before the node exists ---------------------------------------------------
 
+    def master_uri(self) -> str:
+        """The master's URI: the node's, else ``__master:=``, else ``ROS_MASTER_URI``."""
+        if self.node is not None:
+            return self.node.master.uri
+        from rosx.node.node import DEFAULT_MASTER_URI  # noqa: PLC0415
+
+        return self.args.master or os.environ.get("ROS_MASTER_URI") or DEFAULT_MASTER_URI
+
     def master(self) -> MasterProxy:
         """The master, called as the node (or as ``/unnamed`` before `init_node`)."""
         if self.node is not None:
@@ -134,11 +144,9 @@ class Client:
         with self.lock:
             if self._master is None:
                 from rosx.node.master_proxy import MasterProxy  # noqa: PLC0415
-                from rosx.node.node import DEFAULT_MASTER_URI  # noqa: PLC0415
                 from rosx.transport.client import XmlRpcClient  # noqa: PLC0415
 
-                uri = self.args.master or os.environ.get("ROS_MASTER_URI") or DEFAULT_MASTER_URI
-                self._master = MasterProxy(uri, self.caller_id(), XmlRpcClient())
+                self._master = MasterProxy(self.master_uri(), self.caller_id(), XmlRpcClient())
             return self._master
 
     # -- registrations made before the node ---------------------------------------------------

@@ -27,7 +27,11 @@ class TransportError(Exception):
 
 
 class ConnectError(TransportError):
-    """No connection to the server at `uri` could be opened."""
+    """No connection to the server at `uri` could be opened; `errno` says why, when known."""
+
+    def __init__(self, uri: str, message: str, errno: int | None = None) -> None:
+        super().__init__(uri, message)
+        self.errno = errno
 
 
 class InvalidUriError(ConnectError):

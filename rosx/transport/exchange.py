@@ -52,7 +52,7 @@ def prepare(uri: str, method: str, params: Iterable[object]) -> tuple[Key, bytes
 def connect_error(uri: str, exc: OSError) -> ConnectError:
     """The `ConnectError` for a failed connection attempt, naming the cause."""
     reason = _REASONS.get(exc.errno or 0) or exc.strerror or str(exc) or type(exc).__name__
-    return ConnectError(uri, f"cannot connect to {uri}: {reason}")
+    return ConnectError(uri, f"cannot connect to {uri}: {reason}", exc.errno)
 
 
 def interpret(uri: str, response: HttpResponse) -> Any:
