@@ -268,6 +268,36 @@ def test_slave_api_answers_as_rospy(make_node: Callable[..., Node]) -> None:
     assert call(uri, "paramUpdate", "/x", "/not/subscribed", 1) == [-1, "not subscribed", 0]
 
 
+#: requestTopic's answers for protocols a publisher cannot serve, as a rospy publisher gives them
+#: (Debian's rospy, asked the same).
+NO_PROTOCOL = [0, "no supported protocol implementations", []]
+
+
+@pytest.mark.parametrize(
+    ("protocols", "answer"),
+    [
+        ([["UDPROS"]], NO_PROTOCOL),
+        ([["tcpros"]], NO_PROTOCOL),
+        ([[1]], NO_PROTOCOL),
+        ([[True]], NO_PROTOCOL),
+        (["TCPROS"], NO_PROTOCOL),
+        ("TCPROS", NO_PROTOCOL),
+        ({"a": 1}, NO_PROTOCOL),
+        ([[]], [0, "Internal failure: list index out of range", []]),
+        (5, [-1, "Error: invalid arguments: 'int' object is not iterable", []]),
+        ([], [-1, "ERROR: parameter [protocols] must be specified and non-empty", []]),
+    ],
+)
+def test_request_topic_without_a_usable_protocol_answers_as_rospy(
+    make_node: Callable[..., Node], protocols: object, answer: list[Any]
+) -> None:
+    node = make_node("chooser")
+    node.advertise("/offered", String)
+    assert call(node.uri, "requestTopic", "/x", "/offered", protocols) == answer
+    code, _, params = call(node.uri, "requestTopic", "/x", "/offered", [["UDPROS"], ["TCPROS"]])
+    assert (code, params[0]) == (1, "TCPROS")
+
+
 def test_slave_shutdown_stops_the_node(make_node: Callable[..., Node]) -> None:
     node = make_node("victim")
     reasons: list[str] = []
