@@ -186,21 +186,26 @@ def topic_type(argv: list[str], env: Environment) -> int:
     parser.add_argument("topic_or_field", help="Topic or field name")
     name = resolve(env, parser.parse_args(argv).topic_or_field)
     types = Master(env, CALLER_ID).topic_types()
-    found = find_topic(name, types)
+    if name in types:
+        env.out(types[name])
+        return ExitStatus.OK
+    from rosx.msg.store import TypeStore, UnknownTypeError  # noqa: PLC0415 - field paths only
+
+    store = TypeStore.from_environ(env.environ)
+    found = find_topic(name, types, store)
     if found is None:
         raise CommandError(f"unknown topic type [{name}]")
     topic, type_name = found
-    if topic == name:
-        env.out(type_name)
-        return ExitStatus.OK
     field = name[len(topic) + 1 :]
     field_type = type_name
-    from rosx.msg.store import TypeStore  # noqa: PLC0415 - only field paths need types
-
-    store = TypeStore.from_environ(env.environ)
-    for part in field.split("/"):
-        spec = store.msg(field_type)
-        field_type = next(f.type for f in spec.fields if f.name == part)
+    try:
+        for part in field.split("/"):
+            spec = store.msg(field_type)
+            field_type = next(f.type for f in spec.fields if f.name == part)
+    except UnknownTypeError as error:
+        raise CommandError(
+            f"ERROR: Cannot load message class for [{error.full_name}]. Are your messages built?"
+        ) from None
     env.out(f"{type_name} {field} {field_type}")
     return ExitStatus.OK
 
@@ -211,7 +216,8 @@ def find_topic(
     """The topic ``name`` denotes, itself or the longest topic it is a field path of.
 
     A topic whose type has no such field (in ``store``: the standard types by default) is
-    skipped, as ROS 1 does.
+    skipped, as ROS 1 does; one whose type is not known is taken as it is (its users then say
+    they cannot load the type, as ROS 1's do).
     """
     if name in types:
         return name, types[name]
@@ -227,8 +233,10 @@ def find_topic(
             for part in path.split("/"):
                 field = next(f for f in store.msg(spec_type).fields if f.name == part)
                 spec_type = field.base_type
-        except (StopIteration, UnknownTypeError):
+        except StopIteration:
             continue
+        except UnknownTypeError:
+            return topic, types[topic]
         return topic, types[topic]
     return None
 
