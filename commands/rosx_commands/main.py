@@ -24,6 +24,10 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rosnode": ("rosx_commands.rosnode:rosnode", "Print information about ROS nodes."),
     "rosservice": ("rosx_commands.rosservice:rosservice", "List, inspect and call ROS services."),
     "rosparam": ("rosx_commands.rosparam:rosparam", "Get and set ROS parameters."),
+    "rosbag": (
+        "rosx_commands.rosbag:rosbag",
+        "Record, play back and inspect bag files (ROS 1's format 2.0).",
+    ),
     "rqt_graph": (
         "rosx_commands.rqt_graph:rqt_graph",
         "Show the ROS graph of nodes and topics, live.",

@@ -36,8 +36,8 @@ if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
     from types import FrameType
 
+    from rosx.master.client import MasterClient
     from rosx.node import Node
-    from rosx.node.master_proxy import MasterProxy
 
 DEBUG = 1
 INFO = 2
@@ -161,7 +161,7 @@ def _start_node(
         state.CLIENT.shutdown_event.wait(_RETRY_PERIOD)
 
 
-def _master_answers(master: MasterProxy) -> bool:
+def _master_answers(master: MasterClient) -> bool:
     from rosx.transport.errors import TransportError  # noqa: PLC0415
 
     try:

@@ -19,7 +19,7 @@ from rosx.names import REMAP
 if TYPE_CHECKING:
     from collections.abc import Mapping, Sequence
 
-    from rosx.node.master_proxy import MasterProxy
+    from rosx.master.client import MasterClient
 
 ROS_MASTER_URI = "ROS_MASTER_URI"
 ROS_NAMESPACE = "ROS_NAMESPACE"
@@ -57,7 +57,7 @@ def get_master_uri(env: Mapping[str, str] | None = None, argv: Sequence[str] | N
             if len(parts) != 2 or not parts[1]:
                 raise ValueError(f"__master remapping argument '{arg}' improperly specified")
             return parts[1]
-    from rosx.node.node import DEFAULT_MASTER_URI  # noqa: PLC0415
+    from rosx.master.client import DEFAULT_MASTER_URI  # noqa: PLC0415
 
     return (os.environ if env is None else env).get(ROS_MASTER_URI, DEFAULT_MASTER_URI)
 
@@ -87,28 +87,25 @@ class Master:
             raise ValueError(f"invalid master URI: {uri}") from None
         self.master_uri = uri
         self.caller_id = make_caller_id(caller_id).rstrip("/") or "/"
-        self._proxy: MasterProxy | None = None
+        self._client: MasterClient | None = None
 
     def _call(self, method: str, *params: Any) -> Any:
-        from rosx.node.errors import MasterError as Refused  # noqa: PLC0415
-        from rosx.transport.errors import ConnectError, TransportError  # noqa: PLC0415
+        from rosx.master.client import MasterClient, MasterUnreachable  # noqa: PLC0415
+        from rosx.master.client import MasterError as Refused  # noqa: PLC0415
+        from rosx.transport.errors import ConnectError  # noqa: PLC0415
 
-        if self._proxy is None:
-            from rosx.node.master_proxy import MasterProxy  # noqa: PLC0415
-            from rosx.transport.client import XmlRpcClient  # noqa: PLC0415
-
-            self._proxy = MasterProxy(self.master_uri, self.caller_id, XmlRpcClient())
+        if self._client is None:
+            self._client = MasterClient(self.master_uri, self.caller_id)
         try:
-            return self._proxy.call(method, *params)
+            return self._client.call(method, *params)
         except Refused as refused:
             raise (MasterError if refused.code == -1 else MasterFailure)(refused.status) from None
-        except ConnectError as exc:
+        except MasterUnreachable as exc:
             # What rosgraph's ServerProxy lets through: the socket's own error.
-            if exc.errno:
-                raise OSError(exc.errno, os.strerror(exc.errno)) from None
-            raise OSError(str(exc)) from None
-        except TransportError as exc:
-            raise OSError(str(exc)) from None
+            cause = exc.__cause__
+            if isinstance(cause, ConnectError) and cause.errno:
+                raise OSError(cause.errno, os.strerror(cause.errno)) from None
+            raise OSError(exc.message) from None
 
     def is_online(self) -> bool:
         """Whether the master answers ``getPid``."""

@@ -27,7 +27,7 @@ import binascii
 import sys
 from xml.parsers import expat
 
-from rosx.wire._record import Record
+from rosx.record import Record
 from rosx.wire.errors import ProtocolError, UnencodableError
 
 TYPE_CHECKING = False
