@@ -41,6 +41,9 @@ _TOOL_EXECUTABLES = {
     ("rosservice", "rosservice"): "rosservice",
     ("rosparam", "rosparam"): "rosparam",
     ("rqt_graph", "rqt_graph"): "rqt_graph",
+    ("rqt_plot", "rqt_plot"): "rqt_plot",
+    ("rqt_topic", "rqt_topic"): "rqt_topic",
+    ("rqt_gui", "rqt_gui"): "rqt",
 }
 
 

@@ -19,7 +19,7 @@ from typing import Any
 import pytest
 
 from rosx.client.script import SHIM_DIR
-from rosx.msg.classes import get_message_class, get_service_class
+from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node
 from tests.client.test_rospy_imports import json_of, run_script
 from tests.support.procs import wait_for

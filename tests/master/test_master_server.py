@@ -182,5 +182,5 @@ def test_date_times_are_stored_and_the_tree_stays_readable(master: MasterThread)
         assert b"parameter /when set" in sock.recv(65536)
     proxy = xmlrpc.client.ServerProxy(master.uri)
     assert proxy.getParam("/x", "/when") == [1, "Parameter [/when]", DateTime("20240102T03:04:05")]
-    code, _, tree = proxy.getParam("/x", "/")
-    assert (code, tree["when"]) == (1, DateTime("20240102T03:04:05"))
+    whole: Any = proxy.getParam("/x", "/")
+    assert (whole[0], whole[2]["when"]) == (1, DateTime("20240102T03:04:05"))

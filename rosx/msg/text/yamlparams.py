@@ -110,6 +110,8 @@ def check_value(value: object, name: str = "") -> None:
                 raise ParamValueError(f"cannot set parameter [{path}]{_colon_hint(key, item)}")
             check_value(item, path)
         return
+    import datetime as dt  # noqa: PLC0415 - kept off rosparam get's start-up
+
     if isinstance(value, dt.datetime):
         return  # sent as XML-RPC's dateTime.iso8601, as ROS 1's rosparam sends it
     raise ParamValueError(
