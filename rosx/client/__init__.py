@@ -60,7 +60,6 @@ _HOMES = {
     "delete_param": "rosx.client.params",
     "get_caller_id": "rosx.client.lifecycle",
     "get_master": "rosx.client.masterproxy",
-    "get_message_class  # noqa: PLC0415": "rosx.msg.codec.classes",
     "get_name": "rosx.client.lifecycle",
     "get_namespace": "rosx.client.lifecycle",
     "get_node_uri": "rosx.client.lifecycle",
