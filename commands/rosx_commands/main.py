@@ -7,6 +7,7 @@ so short commands stay fast; ``rosx --help`` builds the typer menu (`rosx_comman
 from __future__ import annotations
 
 import importlib
+import signal
 import sys
 from collections.abc import Callable, Sequence
 
@@ -30,6 +31,14 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rqt_graph": (
         "rosx_commands.rqt_graph:rqt_graph",
         "Show the ROS graph of nodes and topics, live.",
+    ),
+    "rqt_console": (
+        "rosx_commands.rqt_console:rqt_console",
+        "Show the log of every node (/rosout_agg), filtered and highlighted.",
+    ),
+    "rqt_logger_level": (
+        "rosx_commands.rqt_logger_level:rqt_logger_level",
+        "Show and set the logger levels of running nodes.",
     ),
     "rqt_plot": (
         "rosx_commands.rqt_plot:rqt_plot",
@@ -77,6 +86,17 @@ def run_tool(argv: Sequence[str], env: Environment | None = None) -> int:
     return run_menu(argv, env)
 
 
+def take_sigint() -> None:
+    """Make SIGINT raise `KeyboardInterrupt` even when this process started with it ignored.
+
+    A POSIX shell starts ``cmd &`` with SIGINT ignored, and Python then installs no handler of
+    its own; ROS 1's tools install theirs and stop on ``kill -INT``, so rosx's do too.
+    """
+    if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
 def run() -> None:
     """Console-script entry point."""
+    take_sigint()
     sys.exit(run_tool(sys.argv[1:]))

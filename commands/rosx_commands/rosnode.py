@@ -9,7 +9,13 @@ import time
 from rosx.master.client import MasterError
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
-from rosx.transport.errors import CallTimeoutError, ConnectError, FaultError, TransportError
+from rosx.transport.errors import (
+    CallTimeoutError,
+    ConnectError,
+    FaultError,
+    InvalidUriError,
+    TransportError,
+)
 from rosx_commands.cli import ToolParser, commands_overview, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
 
@@ -135,7 +141,11 @@ def info(argv: list[str], env: Environment) -> int:
     quiet = options.quiet
     if not nodes:
         parser.error("You must specify at least one node name")
-    from rosx.graph.describe import node_connections, node_description  # noqa: PLC0415
+    from rosx.graph.describe import (  # noqa: PLC0415
+        InvalidNodeUriError,
+        node_connections,
+        node_description,
+    )
 
     master = env.master(CALLER_ID)
     for raw in nodes:
@@ -148,8 +158,16 @@ def info(argv: list[str], env: Environment) -> int:
             continue
         if not quiet:
             env.out(f"\ncontacting node {uri} ...")
-            env.out(node_connections(master, uri))
+            try:
+                env.out(node_connections(master, uri))
+            except InvalidNodeUriError:
+                raise CommandError(invalid_uri(node, uri)) from None
     return ExitStatus.OK
+
+
+def invalid_uri(node: str, uri: str) -> str:
+    """The error for a node registered with a URI that cannot be called (rosservice's words)."""
+    return f"ERROR: node [{node}] has an invalid RPC URI [{uri}]"
 
 
 def ping_node(
@@ -170,6 +188,9 @@ def ping_node(
                 master.node_call(uri, "getPid", timeout=PING_TIMEOUT)
             except CallTimeoutError:
                 env.err(f"connection to [{node}] timed out")
+                return False
+            except InvalidUriError:
+                env.err(invalid_uri(node, uri))
                 return False
             except ConnectError:
                 fresh = master.lookup_node(node)
@@ -259,14 +280,14 @@ def machine(argv: list[str], env: Environment) -> int:
     _, names = parser.parse(argv)
     if len(names) > 1:
         parser.error("please enter only one machine name")
-    from urllib.parse import urlparse  # noqa: PLC0415 - only machine needs it
+    from rosx.transport.address import uri_hostname  # noqa: PLC0415 - only machine needs it
 
     master = env.master(CALLER_ID)
     hosts: dict[str, str] = {}
     for node in node_names(master):
         uri = master.lookup_node(node)
         if uri is not None:
-            hosts[node] = urlparse(uri).hostname or ""
+            hosts[node] = uri_hostname(uri)
     if not names:
         env.out("\n".join(sorted(set(hosts.values()))))
         return ExitStatus.OK

@@ -431,10 +431,13 @@ class Node:
         handler: Callable[[Any], object],
         *,
         server_class: type[ServiceServer] = ServiceServer,
+        on_exception: Callable[[Exception], object] | None = None,
     ) -> ServiceHandle:
         """Serve ``name``: ``handler(request)`` runs on a pool thread for each call.
 
-        ``server_class`` decides how failures are answered (rospy's way by default).
+        ``server_class`` decides how failures are answered (rospy's way by default);
+        ``on_exception`` gets what a handler raises (other than `ServiceError`) instead of the
+        node's error log.
         """
         self._check_alive()
         resolved = self.resolve(name)
@@ -448,6 +451,7 @@ class Node:
                 handler=handler,
                 executor=self._workers,
                 on_error=self._log_error,
+                on_exception=on_exception,
             )
             server.uri = format_rosrpc_uri(self.host, self._tcpros.port)
             self.services[resolved] = server

@@ -32,7 +32,7 @@ from collections.abc import Mapping
 
 from rosx.transport.address import http_uri
 from rosx.transport.errors import FaultError
-from rosx.wire.errors import HttpError, ProtocolError
+from rosx.wire.errors import HttpError, ProtocolError, UnencodableError
 from rosx.wire.xmlrpc import decode_call, encode_fault, encode_response
 from rosx.wire.xmlrpc_http import (
     DEFAULT_MAX_BODY_SIZE,
@@ -257,6 +257,8 @@ class XmlRpcServer:
             return encode_response(result)
         except ProtocolError as exc:
             _log.error("XML-RPC handler %s returned an unencodable value: %s", call.method, exc)
+            if isinstance(exc, UnencodableError):  # rosmaster's and rospy's answer, word for word
+                return encode_fault(1, exc.python_fault)
             return encode_fault(*_python_fault(exc))
 
     async def _invoke(self, method: str, params: tuple[Any, ...] | list[Any]) -> Any:

@@ -13,9 +13,10 @@ from typing import TYPE_CHECKING, ClassVar
 from rich.text import Text
 from textual.app import App, ComposeResult  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
-from textual.widgets import Footer, Static, TabbedContent, TabPane  # noqa: TID253 - TUI code
+from textual.widgets import Static, TabbedContent, TabPane  # noqa: TID253 - TUI code
 
 from rosx_commands.rqt.tabs import TABS, Tab
+from rosx_turtle.tui.quit import QuitFooter
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -50,7 +51,7 @@ class RqtApp(App[int]):
         with TabbedContent(initial=f"tab-{self.first}"):
             for tab in self.tabs:
                 yield TabPane(tab.title, id=f"tab-{tab.name}")
-        yield Footer()
+        yield QuitFooter()
 
     def on_mount(self) -> None:
         self._build(self.first)

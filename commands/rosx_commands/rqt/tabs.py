@@ -48,4 +48,6 @@ TABS: tuple[Tab, ...] = (
     Tab("graph", "Graph", "rosx_commands.rqt_graph.app:graph_tab"),
     Tab("plot", "Plot", "rosx_commands.rqt_plot.app:plot_tab"),
     Tab("topic", "Topics", "rosx_commands.rqt_topic.app:topic_tab"),
+    Tab("console", "Console", "rosx_commands.rqt_console.app:console_tab"),
+    Tab("logger_level", "Logger levels", "rosx_commands.rqt_logger_level.app:logger_level_tab"),
 )

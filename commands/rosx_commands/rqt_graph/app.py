@@ -4,8 +4,8 @@
 A timer starts a refresh on a worker thread every period (and ``r`` at once); the worker
 fetches, builds and draws, and hands the result to the UI with ``call_from_thread``, so the
 view pans and answers keys while a large graph is laid out. What appeared since the refresh
-before is green; what vanished stays drawn, faded red, until the graph changes again; the
-status line names both.
+before is green; what vanished stays drawn, faded red and labelled "(gone)", until the graph
+changes again or `GHOST_SECONDS` pass; the status line names both, and shows an error whole.
 
 ``tab`` / ``shift+tab`` select the next / previous node or topic: its edges light up (as
 rqt_graph's highlight), and its ``rosnode info`` / ``rostopic info`` (and a topic's live rate)
@@ -17,6 +17,7 @@ namespace groups, ``d`` toggles hiding debug names; ``q`` or ``ctrl+c`` quit.
 from __future__ import annotations
 
 import dataclasses
+import time
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
@@ -24,7 +25,7 @@ from rich.text import Text
 from textual.app import App, ComposeResult  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import Horizontal, Vertical, VerticalScroll  # noqa: TID253 - TUI code
-from textual.widgets import Footer, Input, Static  # noqa: TID253 - TUI code
+from textual.widgets import Input, Static  # noqa: TID253 - TUI code
 from textual.worker import get_current_worker  # noqa: TID253 - TUI code
 
 from rosx.graph.builder import build
@@ -33,8 +34,11 @@ from rosx.graph.text import Drawing, draw
 from rosx.graph.view import Changes, Kind, ViewGraph, changes, vanished, with_ghosts
 from rosx_commands.rqt_graph.source import GraphSource
 from rosx_commands.rqt_graph.view import GraphView, Marks
+from rosx_turtle.tui.quit import QuitFooter
 
 _MODES = list(Mode)
+#: Seconds the last changes stay marked (what vanished drawn as gone) on an unchanged graph.
+GHOST_SECONDS = 10.0
 #: Deepest namespace groups ``g`` steps through before going back to none.
 MAX_GROUP_DEPTH = 3
 _FILTERS = {"namespace_filter": "Namespace filter", "topic_filter": "Topic filter"}
@@ -42,27 +46,32 @@ _FILTERS = {"namespace_filter": "Namespace filter", "topic_filter": "Topic filte
 
 @dataclass(frozen=True)
 class History:
-    """The last graph shown, the changes it brought and what vanished with them."""
+    """The last graph shown, the changes it brought (and when) and what vanished with them."""
 
     graph: ViewGraph | None = None
     changes: Changes = field(default_factory=Changes)
     ghosts: ViewGraph = field(default_factory=ViewGraph)
+    since: float = 0.0
 
-    def after(self, graph: ViewGraph) -> History:
-        """The history once ``graph`` is shown; an unchanged graph keeps the marks."""
+    def after(self, graph: ViewGraph, now: float | None = None) -> History:
+        """The history once ``graph`` is shown at ``now`` (monotonic seconds); an unchanged
+        graph keeps the marks for `GHOST_SECONDS`, then drops them and what vanished."""
+        now = time.monotonic() if now is None else now
         if self.graph is None:
-            return History(graph)
+            return History(graph, since=now)
         diff = changes(self.graph, graph)
-        if not diff:
-            return dataclasses.replace(self, graph=graph)
-        return History(graph, diff, vanished(self.graph, graph))
+        if diff:
+            return History(graph, diff, vanished(self.graph, graph), now)
+        if self.changes and now - self.since >= GHOST_SECONDS:
+            return History(graph, since=now)
+        return dataclasses.replace(self, graph=graph)
 
 
 class GraphPane(Vertical):
     DEFAULT_CSS = """
     #details { width: 40; border-left: solid $primary; padding: 0 1; display: none; }
     #details.open { display: block; }
-    #status { height: 1; background: $boost; }
+    #status { height: auto; background: $boost; }
     #filter { display: none; }
     #filter.editing { display: block; }
     """
@@ -279,7 +288,7 @@ class GraphApp(App[int]):
 
     def compose(self) -> ComposeResult:
         yield self.pane
-        yield Footer()
+        yield QuitFooter()
 
     @property
     def drawing(self) -> Drawing:

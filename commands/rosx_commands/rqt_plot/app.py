@@ -22,10 +22,11 @@ from rich.text import Text
 from textual.app import App, ComposeResult  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import Vertical  # noqa: TID253 - TUI code
-from textual.widgets import Footer, Input, OptionList, Static  # noqa: TID253 - TUI code
+from textual.widgets import Input, OptionList, Static  # noqa: TID253 - TUI code
 from textual.widgets.option_list import Option  # noqa: TID253 - TUI code
 
 from rosx_commands.rqt_plot.series import Series, SeriesError, envelope, expand_args
+from rosx_turtle.tui.quit import QuitFooter
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -338,7 +339,7 @@ class PlotApp(App[int]):
 
     def compose(self) -> ComposeResult:
         yield self.pane
-        yield Footer()
+        yield QuitFooter()
 
 
 def make_plot_app(

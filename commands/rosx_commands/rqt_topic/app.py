@@ -16,9 +16,10 @@ from rich.text import Text
 from textual.app import App, ComposeResult  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import Vertical  # noqa: TID253 - TUI code
-from textual.widgets import Footer, Static, Tree  # noqa: TID253 - TUI code
+from textual.widgets import Static, Tree  # noqa: TID253 - TUI code
 
 from rosx_commands.rqt_topic.monitor import Field, Reading, bytes_per_second, fields
+from rosx_turtle.tui.quit import QuitFooter
 
 if TYPE_CHECKING:
     from textual.widgets.tree import TreeNode
@@ -243,7 +244,7 @@ class TopicApp(App[int]):
 
     def compose(self) -> ComposeResult:
         yield self.pane
-        yield Footer()
+        yield QuitFooter()
 
 
 def make_topic_app(source: TopicSource, *, periodic: bool = True) -> TopicApp:
