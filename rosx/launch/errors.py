@@ -10,15 +10,19 @@ from __future__ import annotations
 class LaunchError(Exception):
     """A launch file cannot be loaded; nothing of it is started.
 
-    ``str()`` is one line: ``FILE:LINE: <TAG>: MESSAGE`` (without the parts that are unknown,
-    for example a missing top-level file has no line and no tag).
+    ``str()`` is one line, ``FILE:LINE: <TAG>: MESSAGE``, without the parts that are unknown
+    (a file that is not XML has no tag). An error about no file at all (a node name not found
+    by ``--args``) is its message alone, as roslaunch prints it.
 
     Attributes:
         file: The launch file the error is in ("" when it is not about a file).
         line: The 1-based line of the tag (0 when unknown).
         tag: The tag's name, ``node``, ``param``… ("" when unknown).
         message: What is wrong, in ROS 1's words where it has them.
+        status: The exit status roslaunch ends with for this error (1 unless said otherwise).
     """
+
+    status: int = 1
 
     def __init__(self, file: str, line: int, tag: str, message: str) -> None:
         super().__init__(file, line, tag, message)
@@ -32,9 +36,10 @@ class LaunchError(Exception):
         if where and self.line:
             where = f"{where}:{self.line}"
         parts = [p for p in (where, f"<{self.tag}>" if self.tag else "") if p]
-        prefix = ": ".join(parts)
+        if not parts:
+            return self.message
         message = " ".join(self.message.split("\n")).strip()
-        return f"{prefix}: {message}" if prefix else message
+        return ": ".join([*parts, message])
 
 
 __all__ = ["LaunchError"]

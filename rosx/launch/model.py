@@ -183,6 +183,8 @@ class LaunchPlan:
         files: Every launch file read (top-level and included), in reading order, absolute.
         master: How the master is reached.
         warnings: Messages roslaunch prints as warnings while loading (unknown attributes…).
+        arg_docs: The args declared at the top level of the last file without a fixed
+            ``value``: name -> (doc, default), for ``--ros-args``.
     """
 
     params: dict[str, Param] = field(default_factory=dict)
@@ -194,6 +196,7 @@ class LaunchPlan:
     files: list[str] = field(default_factory=list)
     master: MasterSettings = field(default_factory=MasterSettings)
     warnings: list[str] = field(default_factory=list)
+    arg_docs: dict[str, tuple[str | None, str | None]] = field(default_factory=dict)
 
     def param_values(self) -> dict[str, ParamValue]:
         """Global name -> value, as ``--dump-params`` and the master receive them."""
