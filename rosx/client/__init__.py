@@ -32,7 +32,7 @@ _HOMES = {
     "ERROR": "rosx.client.lifecycle",
     "FATAL": "rosx.client.lifecycle",
     "INFO": "rosx.client.lifecycle",
-    "Message": "rosx.msg.message",
+    "Message": "rosx.msg.codec.message",
     "Publisher": "rosx.client.topics",
     "ROSException": "rosx.client.exceptions",
     "ROSInitException": "rosx.client.exceptions",
@@ -56,7 +56,7 @@ _HOMES = {
     "delete_param": "rosx.client.params",
     "get_caller_id": "rosx.client.lifecycle",
     "get_master": "rosx.client.lifecycle",
-    "get_message_class  # noqa: PLC0415": "rosx.msg.classes",
+    "get_message_class  # noqa: PLC0415": "rosx.msg.codec.classes",
     "get_name": "rosx.client.lifecycle",
     "get_namespace": "rosx.client.lifecycle",
     "get_node_uri": "rosx.client.lifecycle",
@@ -108,7 +108,7 @@ _HOMES = {
 def __getattr__(name: str) -> Any:
     # std_msgs/Header needs the standard type store, loaded only when a script asks for it.
     if name == "Header":
-        from rosx.msg.classes import get_message_class  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
 
         return get_message_class("std_msgs/Header")
     home = _HOMES.get(name)

@@ -21,7 +21,7 @@ from rosx.client.exceptions import (
 )
 from rosx.client.logs import loginfo, logwarn_throttle
 from rosx.client.topics import args_kwds_to_message
-from rosx.msg.message import SerializationError, ServiceDefinition
+from rosx.msg.codec.message import SerializationError, ServiceDefinition
 
 if TYPE_CHECKING:
     from collections.abc import Callable

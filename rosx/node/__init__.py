@@ -1,7 +1,7 @@
 """The node runtime: ROS 1 nodes that speak the Slave API, TCPROS and ROSRPC, many per process.
 
     from rosx.node import Node
-    from rosx.msg.classes import get_message_class
+    from rosx.msg.codec.classes import get_message_class
 
     Twist = get_message_class("geometry_msgs/Twist")
     with Node("talker", master_uri="http://localhost:11311/") as node:

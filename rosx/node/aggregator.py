@@ -9,8 +9,8 @@ from __future__ import annotations
 import asyncio
 from collections.abc import Awaitable, Callable, Mapping
 
-from rosx.msg.classes import get_message_class
-from rosx.msg.message import Message
+from rosx.msg.codec.classes import get_message_class
+from rosx.msg.codec.message import Message
 from rosx.node.node import Node
 
 ROSOUT_QUEUE = 100

@@ -48,7 +48,7 @@ if TYPE_CHECKING:
     import socket
     from collections.abc import Callable, Mapping
 
-    from rosx.msg.message import Message, ServiceDefinition
+    from rosx.msg.codec.message import Message, ServiceDefinition
     from rosx.node.loop import IoLoop
     from rosx.wire.framing import FrameReader
 

@@ -25,7 +25,7 @@ from rosx.wire.tcpros import Publication as PublicationInfo
 if TYPE_CHECKING:
     import socket
 
-    from rosx.msg.message import Message
+    from rosx.msg.codec.message import Message
     from rosx.node.loop import IoLoop
     from rosx.wire.tcpros import SubscriberAccepted
 

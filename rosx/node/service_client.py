@@ -38,7 +38,7 @@ from rosx.wire.rosrpc import (
 )
 
 if TYPE_CHECKING:
-    from rosx.msg.message import Message, ServiceDefinition
+    from rosx.msg.codec.message import Message, ServiceDefinition
     from rosx.node.master_proxy import MasterProxy
 
 #: Seconds to connect and exchange headers when the caller gives no timeout.

@@ -3,7 +3,7 @@
 ROS 1 (rospy's ``init_node``) sets each ``_name:=value`` argument as the node's private
 parameter ``~name`` before the node's own code starts:
 
-* the value is YAML, read as PyYAML's ``safe_load`` reads it (`rosx.msg.yamlload`): ``1`` is an
+* the value is YAML, read as PyYAML's ``safe_load`` reads it (`rosx.msg.text.yamlload`): ``1`` is an
   int, ``1.0`` a float, ``true`` a bool, ``'1'`` and ``hello`` strings, ``[1, 2]`` a list,
   ``{a: 1}`` a dict (which replaces the namespace ``~name``);
 * ``~name`` resolves against the node's name, after ``__name:=``/``__ns:=``, and then through
@@ -38,8 +38,8 @@ def load_private_params(raw: Mapping[str, str]) -> dict[str, Any]:
     Raises:
         ParamArgsError: a value is not YAML, or not something the Parameter Server stores.
     """
-    from rosx.msg.yamlload import YAMLLoadError, load  # noqa: PLC0415 - ruamel loads lazily
-    from rosx.msg.yamlparams import ParamValueError, check_value  # noqa: PLC0415
+    from rosx.msg.text.yamlload import YAMLLoadError, load  # noqa: PLC0415 - ruamel loads lazily
+    from rosx.msg.text.yamlparams import ParamValueError, check_value  # noqa: PLC0415
 
     values: dict[str, Any] = {}
     for name, text in raw.items():

@@ -27,7 +27,7 @@ from rosx.wire.tcpros import WILDCARD, subscriber_header
 if TYPE_CHECKING:
     from collections.abc import Awaitable, Callable
 
-    from rosx.msg.message import Message
+    from rosx.msg.codec.message import Message
     from rosx.node.loop import IoLoop
     from rosx.node.receiver import Decode, Entry
 
@@ -77,7 +77,7 @@ def _raw(frame: bytes, header: dict[str, str]) -> RawMessage:
 
 def message_decoder(cls: type[Message]) -> Callable[[bytes, dict[str, str]], Message]:
     """Decode frames of ``cls``: a fresh instance per frame, ``_connection_header`` set."""
-    from rosx.msg.codegen import variant  # noqa: PLC0415 - generated on first use
+    from rosx.msg.codec.codegen import variant  # noqa: PLC0415 - generated on first use
 
     fresh = variant(cls, "deserialize_fresh")
     new = object.__new__

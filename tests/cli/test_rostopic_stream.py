@@ -14,7 +14,7 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx.transport.client import XmlRpcClient
 from tests.support.cli import Result, clean_environ, rosx

@@ -8,7 +8,7 @@ import threading
 from collections.abc import Callable
 from typing import Any
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node, RawMessage
 from rosx.transport.client import call
 from tests.support.procs import wait_for
@@ -233,6 +233,6 @@ def test_slave_shutdown_stops_the_node(make_node: Callable[..., Node]) -> None:
 
 
 def _srv(name: str) -> Any:
-    from rosx.msg.classes import get_service_class
+    from rosx.msg.codec.classes import get_service_class
 
     return get_service_class(name)

@@ -10,7 +10,7 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class, get_service_class
+from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node, ServiceError, rosout
 from rosx.node.outgoing import OutgoingStream
 from rosx.transport.client import call

@@ -11,7 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from rosx.msg.yamlparams import dump_value
+from rosx.msg.text.yamlparams import dump_value
 from rosx.names.resolution import make_global_ns
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus

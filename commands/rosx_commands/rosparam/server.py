@@ -11,7 +11,7 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from rosx.msg.yamlparams import ParamValueError, check_value
+from rosx.msg.text.yamlparams import ParamValueError, check_value
 from rosx.names.resolution import ns_join
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.context import CommandError, Environment

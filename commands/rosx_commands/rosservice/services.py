@@ -16,7 +16,7 @@ from rosx_commands.master import Master, MasterError
 from rosx_commands.rosservice.rpc import ServiceIOError, probe
 
 if TYPE_CHECKING:
-    from rosx.msg.message import ServiceDefinition
+    from rosx.msg.codec.message import ServiceDefinition
     from rosx.msg.store import TypeStore
 
 CALLER_ID = "/rosservice"
@@ -105,7 +105,7 @@ class Services:
             raise CommandError(
                 f"ERROR: Unable to determine type of service [{name}].", SERVICE_ERROR
             )
-        from rosx.msg.classes import get_service_class  # noqa: PLC0415 - code generation
+        from rosx.msg.codec.classes import get_service_class  # noqa: PLC0415 - code generation
         from rosx.msg.store import UnknownTypeError  # noqa: PLC0415
 
         candidates = [service_type]

@@ -1,7 +1,7 @@
 """``rostopic echo``: print a topic's messages, a field of them, or CSV rows, as ROS 1 does.
 
 Each message (or the value a field path selects) is printed in the YAML-like text of
-`rosx.msg.echo` followed by a ``---`` line, or with ``-p`` as a CSV row under a ``%time,…``
+`rosx.msg.text.echo` followed by a ``---`` line, or with ``-p`` as a CSV row under a ``%time,…``
 header. ``-n COUNT`` stops after COUNT messages; ``--filter`` skips messages its expression
 rejects (it sees the whole message as ``m`` and the topic name as ``topic``). The command waits
 for the topic to be published, and Ctrl-C ends it quietly with status 0.
@@ -18,7 +18,7 @@ from rosx_commands.rostopic.listing import resolve
 from rosx_commands.rostopic.session import MessageFilter, Session, wait_until
 
 if TYPE_CHECKING:
-    from rosx.msg.fieldpath import FieldPath
+    from rosx.msg.text.fieldpath import FieldPath
 
 
 def _parser(env: Environment) -> ToolParser:
@@ -131,9 +131,9 @@ class Printer:
         self.first = True
         self.done = threading.Event()
         # Bound once: the callback runs for every message.
-        from rosx.msg.echo import echo_record, format_value  # noqa: PLC0415
-        from rosx.msg.echocsv import csv_header, csv_row  # noqa: PLC0415
-        from rosx.msg.fieldpath import FieldPathError  # noqa: PLC0415
+        from rosx.msg.text.echo import echo_record, format_value  # noqa: PLC0415
+        from rosx.msg.text.echocsv import csv_header, csv_row  # noqa: PLC0415
+        from rosx.msg.text.fieldpath import FieldPathError  # noqa: PLC0415
         from rosx.node.clock import now  # noqa: PLC0415
 
         self._format, self._record = format_value, echo_record
@@ -263,7 +263,7 @@ def _field_path(
     """
     if not text.strip("/"):
         return None, None
-    from rosx.msg.fieldpath import FieldPathError, field_type, parse_field_path  # noqa: PLC0415
+    from rosx.msg.text.fieldpath import FieldPathError, field_type, parse_field_path  # noqa: PLC0415
 
     try:
         path = parse_field_path(text)

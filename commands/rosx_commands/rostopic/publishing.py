@@ -20,14 +20,14 @@ from __future__ import annotations
 import time
 from typing import TYPE_CHECKING, Any
 
-from rosx.msg.message import MessageException
+from rosx.msg.codec.message import MessageException
 from rosx_commands.context import CommandError
 from rosx_commands.rostopic.session import fail
 
 if TYPE_CHECKING:
     from collections.abc import Iterable
 
-    from rosx.msg.message import Message
+    from rosx.msg.codec.message import Message
     from rosx.node import Publisher
     from rosx_commands.context import Environment
     from rosx_commands.rostopic.session import Session
@@ -67,7 +67,7 @@ class Publishing:
         Raises:
             ValueError: a scalar where a message is needed (``-f``/stdin report it and stop).
         """
-        from rosx.msg.yamlargs import fill_message_args, publish_error_text  # noqa: PLC0415
+        from rosx.msg.text.yamlargs import fill_message_args, publish_error_text  # noqa: PLC0415
 
         try:
             fill_message_args(msg, args, store=self.session.store)
@@ -132,7 +132,7 @@ class Publishing:
         try:
             self.publish_message(args, rate, once)
         except ValueError as error:
-            from rosx.msg.yamlargs import publish_error_text  # noqa: PLC0415
+            from rosx.msg.text.yamlargs import publish_error_text  # noqa: PLC0415
 
             fail(publish_error_text(error, self.msg_class()))
         if once:

@@ -25,7 +25,7 @@ if TYPE_CHECKING:
     from collections.abc import Callable, Iterator
     from types import FrameType
 
-    from rosx.msg.message import Message
+    from rosx.msg.codec.message import Message
     from rosx.msg.store import TypeStore
     from rosx.node import Node
     from rosx_commands.cli import ToolParser
@@ -129,7 +129,7 @@ class Session:
 
     def message_class(self, type_name: str) -> type[Message]:
         """The class of ``type_name``, or ROS 1's error when its definition is not found."""
-        from rosx.msg.classes import get_message_class  # noqa: PLC0415 - the codegen is lazy
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - the codegen is lazy
 
         try:
             return get_message_class(type_name, self.store)

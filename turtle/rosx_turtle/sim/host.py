@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx_turtle.roscpp import NodeArgs
 from rosx_turtle.sim.core import SimCore
 from rosx_turtle.teleop import DEFAULT_NAME as TELEOP_NAME

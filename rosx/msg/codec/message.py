@@ -1,6 +1,6 @@
 """The base classes of generated message and service classes, as rospy scripts see them.
 
-A message class (built by `rosx.msg.classes`) behaves as a class genpy generates: class
+A message class (built by `rosx.msg.codec.classes`) behaves as a class genpy generates: class
 attributes ``_type``, ``_md5sum``, ``_full_text``, ``_has_header``, ``__slots__`` (the field
 names in order, Python keywords suffixed with ``_``) and ``_slot_types`` (the resolved field
 types), the type's constants, construction from all fields in order or from keywords, defaults
@@ -77,13 +77,13 @@ class Message:
 
     def serialize_numpy(self, buff: Writable, numpy: ModuleType) -> None:
         """As `serialize`, taking numeric arrays as numpy arrays."""
-        from rosx.msg.codegen import variant  # noqa: PLC0415 - generated on first use
+        from rosx.msg.codec.codegen import variant  # noqa: PLC0415 - generated on first use
 
         variant(type(self), "serialize_numpy")(self, buff, numpy)
 
     def deserialize_numpy(self: _M, data: bytes, numpy: ModuleType) -> _M:
         """As `deserialize`, giving numeric arrays (not ``uint8[]``) as numpy arrays."""
-        from rosx.msg.codegen import variant  # noqa: PLC0415 - generated on first use
+        from rosx.msg.codec.codegen import variant  # noqa: PLC0415 - generated on first use
 
         result: _M = variant(type(self), "deserialize_numpy")(self, data, numpy)
         return result
@@ -93,7 +93,7 @@ class Message:
 
     def _check_types(self, exc: BaseException | None = None) -> None:
         """Raise `SerializationError` naming the first field that cannot be written."""
-        from rosx.msg.checks import find_problem  # noqa: PLC0415 - only on the error path
+        from rosx.msg.codec.checks import find_problem  # noqa: PLC0415 - only on the error path
 
         problem = find_problem(self)
         if problem is not None:
@@ -201,7 +201,7 @@ def _format(msg: Message) -> str:
     global _formatter  # noqa: PLW0603 - found once, on first use
     if _formatter is None:
         try:
-            from rosx.msg.echo import format_message  # noqa: PLC0415 - heavy, only for printing
+            from rosx.msg.text.echo import format_message  # noqa: PLC0415 - heavy, only for printing
         except ImportError:
             return _plain_format(msg)
         _formatter = format_message
@@ -214,7 +214,7 @@ def _plain_format(msg: Message) -> str:
 
 
 def _restore(type_name: str) -> Message:
-    from rosx.msg.classes import get_message_class  # noqa: PLC0415 - classes imports this module
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - classes imports this module
 
     cls = get_message_class(type_name)
     return object.__new__(cls)

@@ -1,7 +1,7 @@
 """Parameter values as YAML, with the rules of ROS 1's ``rosparam``.
 
 Reading (`load_value` for ``rosparam set``, `load_documents` for ``rosparam load``) is PyYAML's
-``safe_load`` (see `rosx.msg.yamlload`) plus what rosparam registers with it:
+``safe_load`` (see `rosx.msg.text.yamlload`) plus what rosparam registers with it:
 
 * ``!degrees X`` and a plain ``deg(X)`` are ``float(X) * pi / 180``; an ``X`` that is not a
   number is refused with ``invalid degree value: …``;
@@ -11,8 +11,8 @@ Reading (`load_value` for ``rosparam set``, `load_documents` for ``rosparam load
   ``+ - * / // % **`` and parentheses only);
 * ``!!binary`` gives bytes, sent to the master as XML-RPC base64.
 
-Writing (`dump_value`) is ``yaml.dump`` (`rosx.msg.yamldump`), whose resolver rosparam also taught
-``deg(…)``/``rad(…)``: strings of that shape are quoted so that they read back as strings.
+Writing (`dump_value`) is ``yaml.dump`` (`rosx.msg.text.yamldump`), whose resolver rosparam also
+taught ``deg(…)``/``rad(…)``: strings of that shape are quoted so that they read back as strings.
 
 `check_value` refuses what the Parameter Server cannot hold: null, dates, sets, integers outside
 32 bits, dictionaries with keys that are not strings.
@@ -26,10 +26,10 @@ import re
 from functools import cache
 from typing import Any
 
-from rosx.msg.yamldump import dump
+from rosx.msg.text.yamldump import dump
 
 # The PyYAML-compatible loader and PyYAML's wording of errors, extended below for rosparam.
-from rosx.msg.yamlload import YAMLLoadError, _describe, _loader_factory
+from rosx.msg.text.yamlload import YAMLLoadError, _describe, _loader_factory
 from rosx.names.resolution import ns_join
 
 _DEGREES = re.compile(r"^deg\([^\)]*\)$")
@@ -102,7 +102,7 @@ def check_value(value: object, name: str = "") -> None:
             path = ns_join(name, key) if name else key
             if item is None and ":" in key:
                 # The hint for ``{x:5}`` (the message-arguments module's, loaded only here).
-                from rosx.msg.yamlargs import _colon_hint  # noqa: PLC0415
+                from rosx.msg.text.yamlargs import _colon_hint  # noqa: PLC0415
 
                 raise ParamValueError(f"cannot set parameter [{path}]{_colon_hint(key, item)}")
             check_value(item, path)

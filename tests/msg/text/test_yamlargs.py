@@ -15,19 +15,19 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class
-from rosx.msg.echo import format_message
-from rosx.msg.message import MessageException
-from rosx.msg.rostime import Duration, Time
+from rosx.msg.codec.classes import get_message_class
+from rosx.msg.codec.message import MessageException
+from rosx.msg.codec.rostime import Duration, Time
 from rosx.msg.store import default_store
-from rosx.msg.yamlargs import (
+from rosx.msg.text.echo import format_message
+from rosx.msg.text.yamlargs import (
     call_error_text,
     fill_message_args,
     load_args,
     printable_args,
     publish_error_text,
 )
-from rosx.msg.yamlload import YAMLLoadError, load, load_all, load_stream, split_stream
+from rosx.msg.text.yamlload import YAMLLoadError, load, load_all, load_stream, split_stream
 from tests.support.ros1 import ROS1_PYTHON, ros1_python_imports
 
 NOW = Time(1700000000, 500)
@@ -113,9 +113,9 @@ def test_empty_words_for_rosservice() -> None:
 
 def test_ruamel_is_imported_only_when_loading() -> None:
     code = (
-        "import sys, rosx.msg.yamlargs, rosx.msg.echo;"
+        "import sys, rosx.msg.text.yamlargs, rosx.msg.text.echo;"
         "assert not [m for m in sys.modules if m.startswith('ruamel')];"
-        "rosx.msg.yamlargs.load_args(['1']);"
+        "rosx.msg.text.yamlargs.load_args(['1']);"
         "assert 'ruamel.yaml' in sys.modules"
     )
     subprocess.run([sys.executable, "-c", code], check=True, timeout=60)

@@ -18,8 +18,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from rosx.msg.introspect import field_types, has_header, is_message, plain
-from rosx.msg.rostime import Time, TVal
+from rosx.msg.codec.introspect import field_types, has_header, is_message, plain
+from rosx.msg.codec.rostime import Time, TVal
 
 _FieldFilter = Callable[[str], bool]
 

@@ -11,11 +11,11 @@ from __future__ import annotations
 import struct
 from typing import Any
 
-from rosx.msg.message import Message, SerializationError
-from rosx.msg.rostime import Duration, Time
-from rosx.msg.source import python_names
+from rosx.msg.codec.message import Message, SerializationError
+from rosx.msg.codec.rostime import Duration, Time
+from rosx.msg.codec.source import python_names
+from rosx.msg.codec.wiretypes import BYTE_ARRAY_TYPES, INTEGER_RANGES, PACK_CHARS, TIME_CHARS
 from rosx.msg.spec import HEADER_TYPE, Field
-from rosx.msg.wiretypes import BYTE_ARRAY_TYPES, INTEGER_RANGES, PACK_CHARS, TIME_CHARS
 
 _UNSIGNED = frozenset({"uint8", "char", "uint16", "uint32", "uint64"})
 

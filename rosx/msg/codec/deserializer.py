@@ -19,15 +19,15 @@ from __future__ import annotations
 import struct
 from collections.abc import Callable
 
-from rosx.msg.source import Source, python_names
-from rosx.msg.spec import Field, MsgSpec
-from rosx.msg.wiretypes import (
+from rosx.msg.codec.source import Source, python_names
+from rosx.msg.codec.wiretypes import (
     BYTE_ARRAY_TYPES,
     NUMPY_DTYPES,
     SIZES,
     TIME_CHARS,
     UNPACK_CHARS,
 )
+from rosx.msg.spec import Field, MsgSpec
 
 Lookup = Callable[[str], MsgSpec]
 ClassOf = Callable[[str], type]

@@ -7,16 +7,16 @@ before it, so a ``Header`` costs one ``pack`` and two writes. Values are taken a
 them: a string field holds ``str`` (written as UTF-8), ``uint8[]``/``char[]`` hold bytes or a
 list/tuple of ints, a fixed ``uint8[N]`` given bytes of another length is padded or cut as
 genpy's ``Ns`` packing does, and a fixed array of any other type must have exactly N elements.
-Anything that cannot be packed raises, and `rosx.msg.checks` names the field.
+Anything that cannot be packed raises, and `rosx.msg.codec.checks` names the field.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
-from rosx.msg.source import Source, python_names
+from rosx.msg.codec.source import Source, python_names
+from rosx.msg.codec.wiretypes import BYTE_ARRAY_TYPES, NUMPY_DTYPES, PACK_CHARS, TIME_CHARS
 from rosx.msg.spec import Field, MsgSpec
-from rosx.msg.wiretypes import BYTE_ARRAY_TYPES, NUMPY_DTYPES, PACK_CHARS, TIME_CHARS
 
 Lookup = Callable[[str], MsgSpec]
 

@@ -17,9 +17,9 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.yamldump import dump, format_float
-from rosx.msg.yamlload import YAMLLoadError
-from rosx.msg.yamlparams import (
+from rosx.msg.text.yamldump import dump, format_float
+from rosx.msg.text.yamlload import YAMLLoadError
+from rosx.msg.text.yamlparams import (
     AngleError,
     ParamValueError,
     check_value,

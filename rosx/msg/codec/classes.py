@@ -12,8 +12,8 @@ from __future__ import annotations
 import threading
 import weakref
 
-from rosx.msg.codegen import Resolver, build_message_class
-from rosx.msg.message import Message, ServiceDefinition
+from rosx.msg.codec.codegen import Resolver, build_message_class
+from rosx.msg.codec.message import Message, ServiceDefinition
 from rosx.msg.parser import InvalidMsgSpecError
 from rosx.msg.store import TypeStore, default_store
 

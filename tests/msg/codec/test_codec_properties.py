@@ -14,11 +14,11 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from rosx.msg.classes import get_message_class
-from rosx.msg.rostime import Duration, Time
+from rosx.msg.codec.classes import get_message_class
+from rosx.msg.codec.rostime import Duration, Time
+from rosx.msg.codec.wiretypes import INTEGER_RANGES
 from rosx.msg.spec import Field
 from rosx.msg.store import TypeStore
-from rosx.msg.wiretypes import INTEGER_RANGES
 
 STORE = TypeStore([])
 TYPES = STORE.types("msg")

@@ -17,20 +17,20 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class
-from rosx.msg.echo import (
+from rosx.msg.codec.classes import get_message_class
+from rosx.msg.codec.rostime import Duration, Time
+from rosx.msg.spec import PRIMITIVE_TYPES
+from rosx.msg.store import default_store
+from rosx.msg.text.echo import (
     CLEAR_SCREEN,
     SEPARATOR,
     echo_record,
     format_message,
     format_value,
 )
-from rosx.msg.echocsv import csv_header, csv_row
-from rosx.msg.fieldpath import FieldPathError, field_type, parse_field_path
-from rosx.msg.rostime import Duration, Time
-from rosx.msg.spec import PRIMITIVE_TYPES
-from rosx.msg.store import default_store
-from rosx.msg.yamlstr import quoted, string_list
+from rosx.msg.text.echocsv import csv_header, csv_row
+from rosx.msg.text.fieldpath import FieldPathError, field_type, parse_field_path
+from rosx.msg.text.yamlstr import quoted, string_list
 from tests.support.ros1 import ROS1_PYTHON, ros1_python_imports
 
 

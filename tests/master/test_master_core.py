@@ -16,7 +16,16 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from ros1_procs import ROS1_PYTHON, ROSCORE, free_port, ros1_available, ros_env, run_tool, stop
+
+from tests.interop.ros1_procs import (
+    ROS1_PYTHON,
+    ROSCORE,
+    free_port,
+    ros1_available,
+    ros_env,
+    run_tool,
+    stop,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -1,4 +1,4 @@
-"""Tests for the ROS 1 wire codec of generated classes (rosx.msg.serializer/deserializer).
+"""Tests for the ROS 1 wire codec of generated classes (rosx.msg.codec.serializer/deserializer).
 
 Golden bytes are written out by hand from the wire format (little-endian, no padding, uint32
 counts). Every standard type round-trips from its defaults. The last section serialises the
@@ -19,11 +19,11 @@ from typing import Any
 import pytest
 from test_msg_classes import EVERY_KIND, make_package
 
-from rosx.msg.classes import get_message_class
-from rosx.msg.message import DeserializationError, Message, SerializationError
-from rosx.msg.rostime import Duration, Time
+from rosx.msg.codec.classes import get_message_class
+from rosx.msg.codec.message import DeserializationError, Message, SerializationError
+from rosx.msg.codec.rostime import Duration, Time
+from rosx.msg.codec.wiretypes import INTEGER_RANGES
 from rosx.msg.store import TypeStore, default_store
-from rosx.msg.wiretypes import INTEGER_RANGES
 
 ROS1_PYTHON = Path("/usr/bin/python3")
 
@@ -147,7 +147,7 @@ def test_only_a_messages_own_times_are_canonicalised(store: TypeStore) -> None:
 
 
 def test_deserialize_fills_nested_values_in_place_as_genpy() -> None:
-    from rosx.msg.codegen import variant
+    from rosx.msg.codec.codegen import variant
 
     odometry = cls("nav_msgs/Odometry")
     sent = populate(odometry, random.Random(3))
@@ -553,7 +553,7 @@ def test_class_attributes_match_genpy(name: str, genpy_classes: dict[str, Any]) 
 
 @needs_genpy
 def test_service_md5_sums_match_genpy() -> None:
-    from rosx.msg.classes import get_service_class
+    from rosx.msg.codec.classes import get_service_class
 
     names = [n for n in default_store().types("srv") if n.partition("/")[0] in _GENPY_PACKAGES]
     theirs = _run_genpy({"dynamic": {}, "classes": names, "constants": {}, "messages": []})[

@@ -23,7 +23,7 @@ def _modules_after(code: str) -> set[str]:
     "code",
     [
         "import rosx.names, rosx.wire.xmlrpc, rosx.wire.tcpros, rosx.msg.store",
-        "from rosx.msg.classes import get_message_class; from rosx.msg.store import TypeStore\n"
+        "from rosx.msg.codec.classes import get_message_class; from rosx.msg.store import TypeStore\n"
         "TypeStore([]).msg('turtlesim/Pose'); get_message_class('turtlesim/Pose')().serialize",
     ],
 )
@@ -67,7 +67,7 @@ def test_service_and_param_tools_do_not_pay_for_typer(argv: list[str]) -> None:
 def test_client_and_workspace_layers_import_nothing_heavy_or_higher() -> None:
     loaded = _modules_after(
         "import rosx.client, rosx.client.script, rosx.client.modules\n"
-        "import rosx.workspace.build, rosx.workspace.index, rosx.workspace.create"
+        "import rosx.workspace.build, rosx.packages.index, rosx.workspace.create"
     )
     assert not {m for m in loaded if m.split(".")[0] in HEAVY}
     assert not {m for m in loaded if m.startswith(("rosx_commands", "rosx_turtle"))}

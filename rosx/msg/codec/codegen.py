@@ -13,12 +13,12 @@ import struct
 from collections.abc import Callable
 from typing import Any
 
-from rosx.msg import deserializer, serializer
-from rosx.msg.message import DeserializationError, Message, assign_fields
-from rosx.msg.rostime import Duration, Time
-from rosx.msg.source import Source, default_expression, python_name, python_names
+from rosx.msg.codec import deserializer, serializer
+from rosx.msg.codec.message import DeserializationError, Message, assign_fields
+from rosx.msg.codec.rostime import Duration, Time
+from rosx.msg.codec.source import Source, default_expression, python_name, python_names
+from rosx.msg.codec.wiretypes import BYTE_ARRAY_TYPES, TIME_CHARS
 from rosx.msg.spec import Field, MsgSpec
-from rosx.msg.wiretypes import BYTE_ARRAY_TYPES, TIME_CHARS
 
 Lookup = Callable[[str], MsgSpec]
 ClassOf = Callable[[str], type[Message]]
@@ -221,7 +221,7 @@ def _short(available: int, needed: int) -> None:
 
 
 def _serialization_error(msg: Message, exc: BaseException) -> Exception:
-    from rosx.msg.checks import serialization_error  # noqa: PLC0415 - only on the error path
+    from rosx.msg.codec.checks import serialization_error  # noqa: PLC0415 - only on the error path
 
     return serialization_error(msg, exc)
 

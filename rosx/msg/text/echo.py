@@ -26,9 +26,9 @@ import math
 from collections.abc import Sequence
 from typing import Any, NamedTuple
 
-from rosx.msg.introspect import field_types, is_message, plain
-from rosx.msg.rostime import Time, TVal
-from rosx.msg.yamlstr import quoted, string_list
+from rosx.msg.codec.introspect import field_types, is_message, plain
+from rosx.msg.codec.rostime import Time, TVal
+from rosx.msg.text.yamlstr import quoted, string_list
 
 #: The line rostopic prints after each message (YAML's document separator).
 SEPARATOR = "---"

@@ -27,11 +27,11 @@ import time
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
-from rosx.msg.introspect import field_types, is_message
-from rosx.msg.message import MessageException
-from rosx.msg.rostime import Duration, Time, TVal
+from rosx.msg.codec.introspect import field_types, is_message
+from rosx.msg.codec.message import MessageException
+from rosx.msg.codec.rostime import Duration, Time, TVal
 from rosx.msg.spec import HEADER_TYPE, PRIMITIVE_TYPES
-from rosx.msg.yamlload import load
+from rosx.msg.text.yamlload import load
 
 if TYPE_CHECKING:
     from rosx.msg.store import TypeStore
@@ -57,7 +57,7 @@ def load_args(words: Sequence[str], *, empty_is_string: bool = False) -> list[An
 def substitution_keys(now: Time, store: TypeStore | None = None) -> dict[str, object]:
     """The words that stand for values: ``now`` (a time) and ``auto`` (a header stamped now)."""
     # Classes come with the code generator, which loading arguments alone does not need.
-    from rosx.msg.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
 
     header = get_message_class(HEADER_TYPE, store)(stamp=now)
     return {"now": now, "auto": header}
@@ -85,7 +85,7 @@ def fill_message_args(
     if keys is None:
         now = clock() if clock is not None else Time.from_nsec(time.time_ns())
         keys = substitution_keys(now, store)
-    from rosx.msg.classes import get_message_class  # noqa: PLC0415 - as in substitution_keys
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - as in substitution_keys
 
     filler = _Filler(keys, lambda name: get_message_class(name, store))
     values = [] if args is None else args

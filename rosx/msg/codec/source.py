@@ -11,8 +11,8 @@ import linecache
 import struct
 from typing import Any
 
+from rosx.msg.codec.wiretypes import PACK_CHARS
 from rosx.msg.spec import MsgSpec
-from rosx.msg.wiretypes import PACK_CHARS
 
 _PYTHON_KEYWORDS = frozenset(
     {

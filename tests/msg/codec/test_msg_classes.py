@@ -1,4 +1,4 @@
-"""Tests for generated message and service classes (rosx.msg.classes, rosx.msg.message).
+"""Tests for generated message and service classes (rosx.msg.codec.classes, rosx.msg.codec.message).
 
 What a rospy script sees: class attributes as genpy sets them, constructors and their errors,
 defaults, equality, copying and pickling, service classes, the per-store cache, and what loading
@@ -18,9 +18,9 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class, get_service_class
-from rosx.msg.message import Message, ServiceDefinition
-from rosx.msg.rostime import Duration, Time
+from rosx.msg.codec.classes import get_message_class, get_service_class
+from rosx.msg.codec.message import Message, ServiceDefinition
+from rosx.msg.codec.rostime import Duration, Time
 from rosx.msg.store import TypeStore, UnknownTypeError
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -330,7 +330,7 @@ def test_types_embedding_each_other_are_refused(tmp_path: Path) -> None:
 
 _IMPORTS = """
 import json, sys
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.msg.store import TypeStore
 from pathlib import Path
 names = sys.argv[1:]

@@ -1,4 +1,4 @@
-"""Tests for rosx.msg.rostime: Time and Duration as genpy defines them.
+"""Tests for rosx.msg.codec.rostime: Time and Duration as genpy defines them.
 
 The last test evaluates a table of expressions with both rosx and genpy (Debian's
 /usr/bin/python3 in a subprocess) and compares the results; it is skipped where genpy is absent.
@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from rosx.msg.rostime import Duration, Time, TVal
+from rosx.msg.codec.rostime import Duration, Time, TVal
 
 ROS1_PYTHON = Path("/usr/bin/python3")
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
-from rosx.msg.rostime import TVal
+from rosx.msg.codec.rostime import TVal
 
 
 def is_message(value: object) -> bool:

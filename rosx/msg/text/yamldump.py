@@ -13,7 +13,7 @@ The layout rules, as PyYAML's emitter applies them:
   the key's column), a sequence or mapping inside a sequence starts on the ``- `` line;
 * empty collections are written in flow style, ``{}`` and ``[]``;
 * a scalar is plain unless a YAML reader would take it for something else or its characters
-  forbid it, then single-quoted, then double-quoted (`rosx.msg.yamlstr` decides and writes);
+  forbid it, then single-quoted, then double-quoted (`rosx.msg.text.yamlstr` decides and writes);
   long plain and quoted scalars fold at 80 columns, keys never do; a key over 128 characters,
   empty or multi-line becomes a complex key (``? key`` / ``: value``);
 * floats print as ``repr`` in lower case with ``.0`` added before an exponent that lacks a
@@ -31,7 +31,7 @@ import math
 from collections.abc import Callable
 from typing import Any
 
-from rosx.msg.yamlstr import Writer, analyze, resolves_as_non_str
+from rosx.msg.text.yamlstr import Writer, analyze, resolves_as_non_str
 
 _INDENT = 2
 _SIMPLE_KEY_LIMIT = 128

@@ -7,7 +7,7 @@ types: ``yes``, ``1.5``, ``~``…), and where long scalars are folded at 80 colu
 reproduces those choices for ``str`` scalars with PyYAML's default settings (width 80, indent 2,
 ``allow_unicode=False``), without depending on PyYAML.
 
-`analyze`, `resolves_as_non_str` and `Writer` are the pieces `rosx.msg.yamldump` builds whole
+`analyze`, `resolves_as_non_str` and `Writer` are the pieces `rosx.msg.text.yamldump` builds whole
 documents from (``rosparam get``/``dump``).
 """
 
