@@ -276,20 +276,34 @@ def _stdin_file(env: Environment, files: list[str], keep: list[Path]) -> list[st
 
 
 def _print_option(
-    opts: dict[str, Any], files: list[str], cli_args: dict[str, str], env: Environment
+    opts: dict[str, Any],
+    files: list[str],
+    cli_args: dict[str, str],
+    argv: list[str],
+    env: Environment,
 ) -> int:
-    """The printing options: load the files and print what is asked."""
+    """The printing options: load the files as roslaunch loads them for it, and print."""
     from rosx.launch import errors, loader, printing  # noqa: PLC0415
-    from rosx.workspace.index import PackageIndex  # noqa: PLC0415
+    from rosx.launch.runner import provided_program  # noqa: PLC0415
+    from rosx.packages.index import PackageIndex  # noqa: PLC0415
 
     index = PackageIndex.from_environ(env.environ)
-    anon = not (opts["node_args"] or opts["node_list"] or opts["find_node"])
     try:
-        plan = loader.load_launch(files, cli_args, env.environ, index, resolve_anon=anon)
+        plan = loader.load_launch(
+            files,
+            cli_args,
+            env.environ,
+            index,
+            with_core=not opts["dump_params"],
+            args_only=opts["ros_args"] and not (opts["node_args"] or opts["find_node"]),
+            argv=argv,
+        )
         if opts["node_args"]:
-            text = printing.node_args_text(plan, opts["node_args"], env.environ, index)
+            text = printing.node_args_text(
+                plan, opts["node_args"], files, env.environ, index, provided_program
+            )
         elif opts["find_node"]:
-            text = printing.find_node_text(plan, opts["find_node"])
+            text = printing.find_node_text(plan, opts["find_node"], files, env.environ)
         elif opts["dump_params"]:
             text = printing.dump_params_text(plan)
         elif opts["file_list"]:
@@ -299,7 +313,7 @@ def _print_option(
         else:
             text = printing.nodes_text(plan)
     except errors.LaunchError as error:
-        raise CommandError(str(error), ExitStatus.ERROR) from None
+        raise CommandError(str(error), error.status) from None
     env.stdout.write(text)
     return ExitStatus.OK
 
@@ -340,6 +354,7 @@ def _launch(
     opts: dict[str, Any],
     files: list[str],
     cli_args: dict[str, str],
+    argv: list[str],
     env: Environment,
     port: int | None,
 ) -> int:
@@ -347,12 +362,12 @@ def _launch(
     from rosx.launch.errors import LaunchError  # noqa: PLC0415
     from rosx.launch.loader import load_launch  # noqa: PLC0415
     from rosx.launch.runner import LaunchFailedError, LaunchRun, LaunchSettings  # noqa: PLC0415
-    from rosx.workspace.index import PackageIndex  # noqa: PLC0415
+    from rosx.packages.index import PackageIndex  # noqa: PLC0415
     from rosx_commands.invocation import script_command  # noqa: PLC0415
 
     index = PackageIndex.from_environ(env.environ)
     try:
-        plan = load_launch(files, cli_args, env.environ, index, roscore_params=True)
+        plan = load_launch(files, cli_args, env.environ, index, argv=argv)
     except LaunchError as error:
         raise _rlexception(str(error)) from None
     settings = LaunchSettings(
@@ -395,7 +410,7 @@ def _roslaunch(argv: list[str], env: Environment) -> int:
 
     from rosx.launch.errors import LaunchError  # noqa: PLC0415
     from rosx.launch.loader import resolve_launch_arguments  # noqa: PLC0415
-    from rosx.workspace.index import PackageIndex  # noqa: PLC0415
+    from rosx.packages.index import PackageIndex  # noqa: PLC0415
 
     try:
         files, cli_args = resolve_launch_arguments(args, PackageIndex.from_environ(env.environ))
@@ -412,7 +427,7 @@ def _roslaunch(argv: list[str], env: Environment) -> int:
     if any(opts[name] for name in printing):
         if opts["node_args"] and not files:
             parser.error("please specify a launch file")
-        return _print_option(opts, files, cli_args, env)
+        return _print_option(opts, files, cli_args, args, env)
     if opts["wait_for_master"] and opts["core"]:
         parser.error("--wait cannot be used with roscore")
     pid_file = _write_pid(opts, env, port)
@@ -421,7 +436,7 @@ def _roslaunch(argv: list[str], env: Environment) -> int:
         if opts["core"]:
             return _run_core(env, port)
         files = _stdin_file(env, files, temporary)
-        return _launch(opts, files, cli_args, env, port)
+        return _launch(opts, files, cli_args, args, env, port)
     finally:
         for path in [*temporary, *([pid_file] if pid_file else [])]:
             path.unlink(missing_ok=True)

@@ -47,14 +47,14 @@ from rosx.transport.address import advertised_host, http_uri, is_local_host
 from rosx.transport.client import XmlRpcClient
 from rosx.transport.errors import FaultError, TransportError
 from rosx.workspace import logdir
-from rosx.workspace.executables import is_python_script
+from rosx.workspace.executables import bundled_program, is_python_script
 
 if TYPE_CHECKING:
     from collections.abc import Mapping, Sequence
 
     from rosx.launch.console import LaunchConsole
     from rosx.launch.model import LaunchPlan, Node
-    from rosx.workspace.index import PackageIndex
+    from rosx.packages.index import PackageIndex
 
 DEFAULT_MASTER_URI = "http://localhost:11311"
 #: The environment variable every launched node gets (see the module docstring).
@@ -96,6 +96,13 @@ class LaunchSettings:
         self.titles = titles
         self.sigint_timeout = sigint_timeout
         self.sigterm_timeout = sigterm_timeout
+
+
+def provided_program(package: str, node_type: str) -> list[str] | None:
+    """The program rosx ships for ``package``/``node_type`` (turtlesim's nodes), if any: it is
+    run instead of a same-named package's on ``ROS_PACKAGE_PATH``, as ``rosrun`` does."""
+    path = bundled_program(package, node_type)
+    return [str(path)] if path is not None else None
 
 
 def master_uri(environ: Mapping[str, str], port: int | None) -> str:
@@ -443,7 +450,7 @@ class LaunchRun:
     # -- parameters ------------------------------------------------------------------------
 
     def _run_rosparam_commands(self) -> None:
-        from rosx.msg.yamlparams import dump_value  # noqa: PLC0415
+        from rosx.msg.text.yamlparams import dump_value  # noqa: PLC0415
 
         for step in self.plan.rosparam_commands:
             if step.command == "delete":
@@ -494,15 +501,12 @@ class LaunchRun:
         from rosx.launch.process import node_command_line, node_environment  # noqa: PLC0415
 
         try:
-            command = node_command_line(node, self.package_index)
+            command = node_command_line(node, self.package_index, provided_program)
         except LaunchError as exc:
             kind = f"{node.package}/{node.type}"
             self.console.error(f"ERROR: cannot launch node of type [{kind}]: {exc}")
             return None
-        environ = dict(self.environ)
-        environ.pop("ROS_NAMESPACE", None)
-        environ.update(node_environment(node, self.environ, self.uri))
-        environ["ROS_MASTER_URI"] = self.uri
+        environ = node_environment(node, self.environ, self.uri)
         environ[HEADLESS] = "1"
         argv, executable = self._program(node, command)
         if executable is not None and is_python_script(executable):
@@ -557,5 +561,6 @@ __all__ = [
     "LaunchRun",
     "LaunchSettings",
     "master_uri",
+    "provided_program",
     "unify_clear_params",
 ]
