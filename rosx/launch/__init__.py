@@ -23,8 +23,9 @@ Typical use::
     plan = load_launch(files, cli_args, os.environ, index)
     print(summary_text(plan), end="")
 
-This layer imports `rosx.names`, `rosx.msg` (rosparam's YAML rules) and `rosx.workspace` (the
-package index for ``$(find)`` and the executables of nodes); nothing above.
+This layer imports `rosx.names`, `rosx.msg` (rosparam's YAML rules), `rosx.packages` (the
+package index, for ``$(find)``), `rosx.workspace` (how ``rosrun`` finds executables) and, for
+roscore's parameters, `rosx.master.core`'s constants; nothing above.
 """
 
 from __future__ import annotations

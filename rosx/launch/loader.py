@@ -49,7 +49,7 @@ if TYPE_CHECKING:
     from collections.abc import Callable, Iterator, Mapping, Sequence
 
     from rosx.launch.values import CommandRunner
-    from rosx.workspace.index import PackageIndex
+    from rosx.packages.index import PackageIndex
 
 _NODE_ATTRS = [
     "pkg",
@@ -163,7 +163,7 @@ def load_mappings(argv: Sequence[str]) -> dict[str, str]:
 
 
 def _find_in_package(package: str, name: str, package_index: PackageIndex) -> list[str]:
-    from rosx.workspace.index import PackageNotFoundError  # noqa: PLC0415
+    from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415
 
     try:
         root = package_index.find(package)
@@ -215,7 +215,7 @@ def load_launch(
 
     environ = os.environ if environ is None else environ
     if package_index is None:
-        from rosx.workspace.index import PackageIndex  # noqa: PLC0415
+        from rosx.packages.index import PackageIndex  # noqa: PLC0415
 
         package_index = PackageIndex.from_environ(environ)
     world = substitution.World(environ, package_index, anonymous or anonymous_name)

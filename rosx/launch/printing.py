@@ -24,7 +24,7 @@ if TYPE_CHECKING:
 
     from rosx.launch.model import LaunchPlan, Node
     from rosx.launch.process import Provided
-    from rosx.workspace.index import PackageIndex
+    from rosx.packages.index import PackageIndex
 
 _SUMMARY_WIDTH = 20
 
@@ -164,7 +164,7 @@ def files_text(plan: LaunchPlan) -> str:
 
 def dump_params_text(plan: LaunchPlan) -> str:
     """``--dump-params``: the parameters as YAML (``yaml.safe_dump`` of name -> value)."""
-    from rosx.msg.yamldump import dump  # noqa: PLC0415
+    from rosx.msg.text.yamldump import dump  # noqa: PLC0415
 
     return dump({name: p.value for name, p in plan.params.items()}) + "\n"
 

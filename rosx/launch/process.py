@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from pathlib import Path
 
     from rosx.launch.model import Node
-    from rosx.workspace.index import PackageIndex
+    from rosx.packages.index import PackageIndex
 
     #: A program rosx provides itself for ``(package, type)`` (turtlesim's nodes…): the
     #: command that runs it, or None to look for an executable file in the package.
@@ -36,8 +36,8 @@ def node_program(node: Node, package_index: PackageIndex) -> Path:
         LaunchError: roslaunch's ``Cannot locate node of type [T] in package [P]…``, or the
             package is not found; the error names the ``<node>`` tag.
     """
+    from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415
     from rosx.workspace.executables import find_executables  # noqa: PLC0415
-    from rosx.workspace.index import PackageNotFoundError  # noqa: PLC0415
 
     tag = "test" if hasattr(node, "test_name") else "node"
     try:

@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
 
-    from rosx.workspace.index import PackageIndex
+    from rosx.packages.index import PackageIndex
 
 _VALID = ["find", "env", "optenv", "dirname", "anon", "arg"]
 _FIRST_PASS = frozenset({"env", "optenv", "dirname", "anon", "arg"})
@@ -79,7 +79,7 @@ class World:
         return self.environ.get(name, default)
 
     def find(self, package: str) -> str:
-        from rosx.workspace.index import PackageNotFoundError  # noqa: PLC0415
+        from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415
 
         try:
             return str(self.package_index.find(package))

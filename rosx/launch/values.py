@@ -5,7 +5,7 @@
   ``true``/``false`` in any case, and a string of anything else; ``str``/``string``, ``int``,
   ``double``, ``bool``/``boolean`` (``true``, ``1``, ``false``, ``0``) and ``yaml``.
 * `text_value`, `binary_value`, `command_value`: ``textfile``, ``binfile``, ``command``.
-* `load_yaml`: the YAML of a ``<rosparam>`` (rosparam's rules, `rosx.msg.yamlparams`), and
+* `load_yaml`: the YAML of a ``<rosparam>`` (rosparam's rules, `rosx.msg.text.yamlparams`), and
   `flatten`, which unrolls dictionaries into one parameter per leaf as roslaunch does.
 """
 
@@ -124,7 +124,7 @@ def load_yaml(text: str) -> Any:
     Raises:
         ValueConversionError: The text is not YAML (PyYAML's description of the problem).
     """
-    from rosx.msg.yamlparams import load_value  # noqa: PLC0415
+    from rosx.msg.text.yamlparams import load_value  # noqa: PLC0415
 
     try:
         return load_value(text)

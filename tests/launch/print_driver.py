@@ -21,7 +21,7 @@ from rosx.launch import (
     resolve_launch_arguments,
     ros_args_text,
 )
-from rosx.workspace.index import PackageIndex
+from rosx.packages.index import PackageIndex
 
 
 def main(argv: list[str]) -> int:
