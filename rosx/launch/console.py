@@ -88,9 +88,14 @@ class LaunchConsole:
             self._write(self.stdout, text)
 
     def plain(self, text: str = "") -> None:
-        """A line on stdout that is not copied to the log (the SUMMARY, for instance)."""
+        """A line on stdout that is not copied to the log."""
         with self._lock:
             self._write(self.stdout, text)
+
+    def block(self, text: str) -> None:
+        """Text on stdout as it is, its own newlines included (the SUMMARY)."""
+        with self._lock:
+            self._write(self.stdout, text.removesuffix("\n"))
 
     def bold(self, text: str) -> None:
         """A bold line on stdout (``printlog_bold``)."""

@@ -269,7 +269,7 @@ class LaunchRun:
                     "LOCAL\nlocal only launch specified, will not launch remote nodes\nLOCAL\n"
                 )
             if self.settings.show_summary:
-                self.console.plain(summary_text(self.plan))
+                self.console.block(summary_text(self.plan))
             for warning in self.plan.warnings:
                 self.console.error(f"WARNING: {warning}")
             try:
@@ -423,7 +423,7 @@ class LaunchRun:
         assert self.core is not None
         self.console.bold(f"process[master]: started with pid [{os.getpid()}]")
         try:
-            self.uri = self.core.start()
+            self.core.start()
         except PortInUseError:
             self.core = None
             self.console.line(
@@ -434,7 +434,6 @@ class LaunchRun:
             self.core = None
             self.console.line(f"ERROR: Unable to start XML-RPC server: {exc.strerror or exc}")
             raise LaunchFailedError(f"ERROR: could not contact master [{self.uri}]") from None
-        self._master.uri = self.uri
 
     def _check_run_id(self) -> None:
         code, _, present = self._master.call("hasParam", "/run_id")
