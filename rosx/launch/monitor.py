@@ -267,8 +267,9 @@ class ProcessMonitor:
         self._respawns: list[LocalProcess] = []
         self._wakeup = _Wakeup()
         self._stop_requested = False
-        #: Whether the core this launch started still runs (None: it started none).
-        self.core_alive: Callable[[], bool] | None = None
+        #: Whether the core this launch started was asked to shut down (None: it started
+        #: none). A core keeps the launch going when every node has ended.
+        self.core_ended: Callable[[], bool] | None = None
         self.shutdown_errors: list[str] = []
 
     def start(self, process: LocalProcess) -> bool:
@@ -329,10 +330,9 @@ class ProcessMonitor:
             ended = self._check_processes()
             if self._stop_requested:
                 break
-            core_running = self.core_alive() if self.core_alive is not None else False
-            if self.core_alive is not None and not core_running:
-                break  # the core this launch started was shut down
-            if ended and not self.procs and not self._respawns and not core_running:
+            if self.core_ended is not None and self.core_ended():
+                break
+            if ended and not self.procs and not self._respawns and self.core_ended is None:
                 self.console.line("all processes on machine have died, roslaunch will exit")
                 break
             self._restart_due()

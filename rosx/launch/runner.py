@@ -293,10 +293,24 @@ class LaunchRun:
             self._shut_down(started_core=False, print_done=False)
             return 0
         if started_core:
-            self.monitor.core_alive = lambda: not self.core.wait(0)
+            self.monitor.core_ended = lambda: self.core.wait(0) is not None
         self.monitor.spin()
+        if started_core and self.core.wait(0) is not None:
+            self._core_shut_down(self.core.wait(0))
         self._shut_down(started_core=started_core, print_done=True)
         return 0
+
+    def _core_shut_down(self, message: str) -> None:
+        """A ``shutdown`` call stopped the master: what ROS 1 prints when its master process
+        (a required one) ends that way."""
+        # rosmaster's words, misspelling included, for a call without a message.
+        self.console.plain(f"shutdown request: {message}" if message else "shutdown requst")
+        rule = "=" * 80
+        log = f"\nlog file: {self.log_dir / 'master'}*.log" if self.log_dir else ""
+        self.console.error(
+            f"{rule}REQUIRED process [master] has died!\nprocess has finished cleanly{log}\n"
+            f"Initiating shutdown!\n{rule}"
+        )
 
     def _shut_down(self, *, started_core: bool, print_done: bool) -> None:
         self.monitor.stop_all()
@@ -424,15 +438,11 @@ class LaunchRun:
         self.console.bold(f"process[master]: started with pid [{os.getpid()}]")
         try:
             self.core.start()
-        except PortInUseError:
+        except PortInUseError as exc:
             self.core = None
-            self.console.line(
-                f"ERROR: Unable to start XML-RPC server, port {port} is already in use"
-            )
-            raise LaunchFailedError(f"ERROR: could not contact master [{self.uri}]") from None
-        except OSError as exc:
-            self.core = None
-            self.console.line(f"ERROR: Unable to start XML-RPC server: {exc.strerror or exc}")
+            if exc.another_master:  # one started since this launch looked
+                raise LaunchFailedError(exc.message.removeprefix("RLException: ")) from None
+            self.console.line(exc.message)
             raise LaunchFailedError(f"ERROR: could not contact master [{self.uri}]") from None
 
     def _check_run_id(self) -> None:

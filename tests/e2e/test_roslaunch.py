@@ -25,6 +25,7 @@ import pytest
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
+from rosx.transport.client import call as xmlrpc_call
 from tests.support.cli import clean_environ
 from tests.support.procs import free_port, port_open, running, stop, wait_for
 from tests.support.ros1 import needs_ros1, run_ros1
@@ -71,6 +72,39 @@ import rospy
 
 rospy.init_node("spinner")
 rospy.spin()
+"""
+
+#: A node that ignores SIGINT.
+STUBBORN = """\
+#!/usr/bin/env python
+import signal
+
+import rospy
+
+rospy.init_node("stubborn")
+signal.signal(signal.SIGINT, signal.SIG_IGN)
+print("stubborn up", flush=True)
+rospy.spin()
+"""
+
+STUB = """\
+<launch>
+  <node name="stub" pkg="labl" type="stubborn.py" output="screen"/>
+</launch>
+"""
+
+MISSING = """\
+<launch>
+  <node name="nowhere" pkg="labl" type="nowhere.py"/>
+  <node name="spin" pkg="labl" type="spinner.py"/>
+</launch>
+"""
+
+BROKEN = """\
+<launch>
+  <node name="spin" pkg="labl" type="spinner.py"/>
+  <param name="x" value="$(arg undefined)"/>
+</launch>
 """
 
 RESPAWN = """\
@@ -188,9 +222,13 @@ def world(tmp_path: Path) -> Iterator[dict[str, Any]]:
         "respawn.launch": RESPAWN,
         "required.launch": REQUIRED,
         "clean.launch": CLEAN,
+        "stub.launch": STUB,
+        "missing.launch": MISSING,
+        "broken.launch": BROKEN,
     }.items():
         (package / "launch" / name).write_text(text)
-    for name, text in {"quitter.py": QUITTER, "spinner.py": SPINNER}.items():
+    scripts = {"quitter.py": QUITTER, "spinner.py": SPINNER, "stubborn.py": STUBBORN}
+    for name, text in scripts.items():
         script = package / "scripts" / name
         script.write_text(text)
         script.chmod(0o755)
@@ -219,6 +257,21 @@ def launched(args: list[str], env: dict[str, str]) -> Iterator[Launch]:
 def _node_names(node: Node) -> set[str]:
     state = node.master.call("getSystemState")
     return {n for group in state for _, names in group for n in names}
+
+
+def _wait_registered(uri: str, *names: str) -> None:
+    """Wait until the master knows every one of ``names`` (a node Ctrl-C'd while Python is
+    still starting up cannot end cleanly, with ROS 1 either)."""
+
+    def known() -> bool:
+        with contextlib.suppress(Exception):
+            code, _, state = xmlrpc_call(uri, "getSystemState", "/test")
+            if code == 1:
+                found = {n for group in state for _, members in group for n in members}
+                return set(names) <= found
+        return False
+
+    wait_for(known, timeout=60, what=f"{names} registered")
 
 
 def test_turtlemimic_starts_a_core_two_turtlesims_and_mimic_and_ctrl_c_ends_all(
@@ -291,6 +344,7 @@ def test_the_start_up_text_is_roslaunchs(world: dict[str, Any]) -> None:
             timeout=60,
             what="turtlesim's first log line",
         )
+        _wait_registered(world["uri"], "/turtlesim1/sim", "/turtlesim2/sim", "/mimic")
         assert launch.interrupt() == 0
     server = re.search(r"started roslaunch server (\S+)", launch.out)
     assert server is not None
@@ -430,3 +484,73 @@ def test_ros1_tools_see_the_launched_graph(world: dict[str, Any]) -> None:
         info = run_ros1(["rosnode", "info", "/mimic"], ROS_MASTER_URI=uri).stdout
         assert "/turtlesim1/turtle1/pose" in info and "/turtlesim2/turtle1/cmd_vel" in info
         assert launch.interrupt() == 0
+
+
+def test_a_node_that_ignores_sigint_gets_sigterm_after_the_timeout(world: dict[str, Any]) -> None:
+    args = ["--sigint-timeout", "0.5", "labl", "stub.launch"]
+    with launched(args, world["env"]) as launch:
+        launch.wait_for_text("stubborn up\n")
+        _wait_registered(world["uri"], "/stub")
+        assert launch.interrupt() == 0
+    assert launch.err == "[stub-2] escalating to SIGTERM\n"
+    assert "[stub-2] killing on exit\n[rosout-1] killing on exit\n" in launch.out
+    assert not _alive(launch.pids()["stub-2"][0])
+
+
+def test_a_node_that_cannot_be_found_is_reported_and_the_others_start(
+    world: dict[str, Any],
+) -> None:
+    with launched(["labl", "missing.launch"], world["env"]) as launch:
+        launch.wait_for_text("process[spin-3]: started with pid")
+        _wait_registered(world["uri"], "/spin")
+        assert launch.interrupt() == 0
+    where = world["home"] / "src" / "labl" / "launch" / "missing.launch"
+    assert launch.err == (
+        f"ERROR: cannot launch node of type [labl/nowhere.py]: {where}:2: <node>: Cannot locate "
+        "node of type [nowhere.py] in package [labl]. Make sure file exists in package path and "
+        "permission is set to executable (chmod +x)\n"
+    )
+    assert "nowhere-2" not in launch.pids()
+
+
+def test_a_broken_launch_file_starts_nothing(world: dict[str, Any]) -> None:
+    with launched(["labl", "broken.launch"], world["env"]) as launch:
+        assert launch.finish() == 1
+    where = world["home"] / "src" / "labl" / "launch" / "broken.launch"
+    assert launch.out == ""
+    assert launch.err.startswith(f"RLException: {where}:3: <param>: ")
+    assert "undefined" in launch.err and len(launch.err.splitlines()) == 1
+    assert not (world["home"] / "ros_home" / "log").exists()
+
+
+def test_a_port_held_by_something_else_is_roslaunchs_error(world: dict[str, Any]) -> None:
+    import socket
+
+    with socket.socket() as holder:
+        holder.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        holder.bind(("127.0.0.1", world["port"]))
+        holder.listen()
+        with launched(["labl", "clean.launch"], world["env"]) as launch:
+            assert launch.finish() == 1
+    assert (
+        f"auto-starting new master\nprocess[master]: started with pid [{launch.process.pid}]\n"
+        f"ERROR: Unable to start XML-RPC server, port {world['port']} is already in use\n"
+        "shutting down processing monitor...\n"
+        "... shutting down processing monitor complete\n"
+    ) in launch.out
+    assert launch.err == f"RLException: ERROR: could not contact master [{world['uri']}]\n"
+    assert "process[once" not in launch.out
+
+
+def test_wait_waits_for_a_master(world: dict[str, Any]) -> None:
+    env, port = world["env"], world["port"]
+    with launched(["--wait", "labl", "clean.launch"], env) as launch:
+        launch.wait_for_text("roscore/master is not yet running, will wait for it to start\n")
+        core = [sys.executable, "-m", "rosx_commands", "roscore", "-p", str(port)]
+        with running(core, env):
+            assert launch.finish(timeout=90) == 0
+    assert launch.out.startswith(
+        "roscore/master is not yet running, will wait for it to start\n"
+        "master has started, initiating launch\n... logging to "
+    )
+    assert "[once-1] process has finished cleanly\n" in launch.out
