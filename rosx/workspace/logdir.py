@@ -5,7 +5,8 @@ ROS 1 (rospkg, rosgraph.roslogging) keeps logs under ``ROS_LOG_DIR`` if set, els
 (``/run_id``), and a ``latest`` symbolic link in the log folder points at the newest one.
 roslaunch (and roscore, which is a roslaunch) writes ``roslaunch-<host>-<pid>.log`` there, a
 node launched with its output logged writes ``<name>-<n>-stdout.log``, and every node gets
-``__log:=<run folder>/<name>-<n>.log``. ``roscd log`` goes to the current run's folder.
+``__log:=<run folder>/<name>-<n>.log``. ``roscd log`` goes to the current run's folder
+(`current_log_dir`), as rosbash's does through ``roslaunch-logs``.
 
 Everything takes the environment as a mapping; nothing here reads `os.environ`.
 """
@@ -65,6 +66,31 @@ def prepare_run_log_dir(environ: Mapping[str, str], run_id: str) -> Path:
     return folder
 
 
+def current_run_id(environ: Mapping[str, str], timeout: float = 2.0) -> str | None:
+    """The ``/run_id`` of the master at ``ROS_MASTER_URI``, or None when none answers."""
+    from rosx.transport.client import XmlRpcClient  # noqa: PLC0415
+    from rosx.transport.errors import FaultError, TransportError  # noqa: PLC0415
+
+    uri = environ.get("ROS_MASTER_URI") or "http://localhost:11311"
+    with XmlRpcClient(timeout=timeout) as client:
+        try:
+            reply = client.call(uri, "getParam", "/roslaunch", "/run_id")
+        except (TransportError, FaultError, OSError, ValueError):
+            return None
+    if isinstance(reply, list) and len(reply) == 3 and reply[0] == 1 and reply[2]:
+        return str(reply[2])
+    return None
+
+
+def current_log_dir(environ: Mapping[str, str]) -> tuple[Path, bool]:
+    """Where ``roscd log`` goes, as ``roslaunch-logs`` says: the running core's run folder, or
+    the log folder itself when no master answers; and whether a master answered."""
+    run_id = current_run_id(environ)
+    if run_id is None:
+        return log_dir(environ), False
+    return run_log_dir(environ, run_id), True
+
+
 def launcher_log_name(pid: int | None = None) -> str:
     """``roslaunch-<host>-<pid>.log``: the log file of roslaunch (and roscore)."""
     return f"roslaunch-{socket.gethostname()}-{os.getpid() if pid is None else pid}.log"
@@ -84,6 +110,8 @@ def disk_usage(folder: Path) -> int:
 
 __all__ = [
     "DISK_USAGE_WARNING",
+    "current_log_dir",
+    "current_run_id",
     "disk_usage",
     "launcher_log_name",
     "log_dir",

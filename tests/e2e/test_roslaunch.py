@@ -26,7 +26,7 @@ import pytest
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx.transport.client import call as xmlrpc_call
-from tests.support.cli import clean_environ
+from tests.support.cli import clean_environ, rosx
 from tests.support.procs import free_port, port_open, running, stop, wait_for
 from tests.support.ros1 import needs_ros1, run_ros1
 
@@ -345,7 +345,13 @@ def test_the_start_up_text_is_roslaunchs(world: dict[str, Any]) -> None:
             what="turtlesim's first log line",
         )
         _wait_registered(world["uri"], "/turtlesim1/sim", "/turtlesim2/sim", "/mimic")
+        # roscd log goes to the running core's log folder.
+        where = rosx("roscd", "--where", "log", environ=env)
+        assert (where.status, where.out, where.err) == (0, f"{log_dir}\n", "")
         assert launch.interrupt() == 0
+    where = rosx("roscd", "--where", "log", environ=env)
+    assert (where.status, where.out) == (0, f"{log_dir.parent}\n")
+    assert where.err == "No active roscore\n"
     server = re.search(r"started roslaunch server (\S+)", launch.out)
     assert server is not None
     pids = launch.pids()
