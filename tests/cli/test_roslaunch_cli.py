@@ -88,3 +88,15 @@ def test_child_mode_is_refused_clearly() -> None:
 @needs_ros1
 def test_help_matches_debian_roslaunch() -> None:
     assert rosx("roslaunch", "-h").out == run_ros1(["/usr/bin/roslaunch", "-h"]).stdout
+
+
+def test_turtlesims_multisim_launch_comes_with_rosx() -> None:
+    result = rosx("roslaunch", "--nodes", "turtlesim", "multisim.launch", environ=clean_environ())
+    assert (result.status, result.out, result.err) == (0, "/turtlesim1/sim\n/turtlesim2/sim\n", "")
+    environ = clean_environ(ROS_MASTER_URI="http://localhost:11311")
+    args = rosx(
+        "roslaunch", "--args", "/turtlesim2/sim", "turtlesim", "multisim.launch", environ=environ
+    )
+    assert args.status == 0
+    assert args.out.startswith('ROS_NAMESPACE="/turtlesim2" ')
+    assert args.out.endswith("/bin/turtlesim_node __name:=sim\n")
