@@ -165,7 +165,7 @@ class MasterSettings:
             default) or ``restart``.
     """
 
-    uri: str = "http://localhost:11311"
+    uri: str = "http://localhost:11311/"
     auto: MasterAuto = "start"
 
 

@@ -46,7 +46,8 @@ def node_program(node: Node, package_index: PackageIndex) -> Path:
         raise LaunchError(
             node.source.file, node.source.line, tag, f"Resource not found: {node.package}"
         ) from None
-    found = find_executables(directory, node.type).executables if node.type else []
+    # roslaunch looks for a file *named* type: a type holding "/" is never found.
+    found = find_executables(directory, node.type).executables if "/" not in node.type else []
     if not found:
         raise LaunchError(
             node.source.file,

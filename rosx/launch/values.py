@@ -62,7 +62,7 @@ def convert_value(value: str, type_: str) -> Any:
             return False
         raise ValueConversionError(f"{text} is not a '{kind}' type")
     if kind == "yaml":
-        return load_yaml(value)
+        return load_yaml(value, rosparam=False)
     raise ValueConversionError(f"Unknown type '{kind}'")
 
 
@@ -118,16 +118,21 @@ def run_command(argv: list[str]) -> tuple[int, str]:
     return done.returncode, done.stdout.decode("utf-8", errors="replace")
 
 
-def load_yaml(text: str) -> Any:
-    """One YAML document, with rosparam's additions (``!degrees``, ``rad()``, ``!!binary``).
+def load_yaml(text: str, *, rosparam: bool = True) -> Any:
+    """One YAML document, as ``yaml.safe_load`` reads it.
+
+    With ``rosparam`` (for ``<rosparam>``), rosparam's additions too: ``!degrees``/``deg()``,
+    ``!radians``/``rad()``. Without (for ``<param type="yaml">``), plain YAML, as roslaunch
+    reads it when it has not loaded rosparam: ``deg(180)`` stays a string.
 
     Raises:
         ValueConversionError: The text is not YAML (PyYAML's description of the problem).
     """
+    from rosx.msg.text.yamlload import load  # noqa: PLC0415
     from rosx.msg.text.yamlparams import load_value  # noqa: PLC0415
 
     try:
-        return load_value(text)
+        return load_value(text) if rosparam else load(text)
     except ValueError as error:
         raise ValueConversionError(str(error)) from None
 

@@ -4,7 +4,8 @@
 defaults: block style (``default_flow_style=False``), keys sorted, indent 2, width 80, no
 unicode (non-ASCII characters are escaped in double quotes). This module reproduces that output
 for the values the Parameter Server holds: dicts with string keys, lists and tuples, strings,
-ints, floats, bools, ``None`` and bytes (binary values).
+ints, floats, bools, ``None`` and bytes (binary values), and for the dates and times YAML files
+may hold (``--dump-params`` of roslaunch writes them back as PyYAML does).
 
 The layout rules, as PyYAML's emitter applies them:
 
@@ -27,6 +28,7 @@ The layout rules, as PyYAML's emitter applies them:
 from __future__ import annotations
 
 import binascii
+import datetime as dt
 import math
 from collections.abc import Callable
 from typing import Any
@@ -197,6 +199,10 @@ def _scalar_text(value: object) -> str:
         return format_float(value)
     if isinstance(value, str):
         return value
+    if isinstance(value, dt.datetime):
+        return value.isoformat(" ")
+    if isinstance(value, dt.date):
+        return value.isoformat()
     raise TypeError(f"cannot write a {type(value).__name__} as YAML: {value!r}")
 
 
