@@ -123,11 +123,16 @@ class LocalProcess:
             return [*kept, f"__log:={self.log_dir / (self.log_name + '.log')}"]
         return list(self.base_argv)
 
-    def _stdout(self) -> IO[bytes] | None:
+    @property
+    def stdout_path(self) -> Path | None:
+        """Where stdout is logged (appended to across respawns); None: the terminal."""
         if not self.log_output or self.log_dir is None:
             return None
-        path = self.log_dir / f"{self.log_name}-stdout.log"
-        return path.open("ab" if self.respawn else "wb")
+        return self.log_dir / f"{self.log_name}-stdout.log"
+
+    def _stdout(self) -> IO[bytes] | None:
+        path = self.stdout_path
+        return None if path is None else path.open("ab" if self.respawn else "wb")
 
     def start(self) -> None:
         """Start the program.
@@ -172,6 +177,10 @@ class LocalProcess:
             self.exit_code = code
             self.time_of_death = time.monotonic()
         return False
+
+    def running(self) -> bool:
+        """Whether the process has been started and has not ended (records nothing)."""
+        return self.popen is not None and self.popen.poll() is None
 
     def exit_description(self) -> str:
         """ROS 1's words for how the process ended, with its log files."""
@@ -291,6 +300,10 @@ class ProcessMonitor:
             return False
         self.console.bold(f"process[{process.name}]: started with pid [{process.pid}]")
         return True
+
+    def wake(self) -> None:
+        """Make the monitor look at its processes now (any thread)."""
+        self._wakeup.poke()
 
     def sleep(self, seconds: float) -> None:
         """Sleep up to ``seconds``; a signal ends the sleep early."""
@@ -426,13 +439,13 @@ class ProcessMonitor:
     def _wait(self, processes: list[LocalProcess], timeout: float) -> list[LocalProcess]:
         """Wait up to ``timeout`` seconds for ``processes`` to end; those still running."""
         deadline = time.monotonic() + timeout
-        running = [p for p in processes if p.popen is not None and p.popen.poll() is None]
+        running = [p for p in processes if p.running()]
         while running:
             left = deadline - time.monotonic()
             if left <= 0:
                 break
             self._wakeup.wait(min(left, 0.05))
-            running = [p for p in running if p.popen is not None and p.popen.poll() is None]
+            running = [p for p in running if p.running()]
         return running
 
     def close(self) -> None:

@@ -54,6 +54,7 @@ if TYPE_CHECKING:
 
     from rosx.launch.console import LaunchConsole
     from rosx.launch.model import LaunchPlan, Node
+    from rosx.launch.zygote import ZygoteClient
     from rosx.packages.index import PackageIndex
 
 DEFAULT_MASTER_URI = "http://localhost:11311"
@@ -230,6 +231,10 @@ class LaunchRun:
         self.log_dir: Path | None = None
         self._counter = 0
         self._master = _MasterLink(self.uri)
+        #: Python nodes are forks of a process that has loaded rosx's rospy (see
+        #: `rosx.launch.zygote`); False starts each as a new Python process.
+        self.fork_python_nodes = True
+        self.zygote: ZygoteClient | None = None
 
     # -- the run ---------------------------------------------------------------------------
 
@@ -240,10 +245,18 @@ class LaunchRun:
             LaunchFailedError: the launch could not start (nothing is left running).
         """
         self._check_plan()
+        if self.plan.nodes and self.fork_python_nodes:
+            from rosx.launch.zygote import ZygoteClient  # noqa: PLC0415
+
+            # Started first, so that it loads Python's side of the nodes while the launcher
+            # starts the core.
+            self.zygote = ZygoteClient(self.environ, on_exit=self.monitor.wake)
         with self.monitor.signals():
             try:
                 return self._run()
             finally:
+                if self.zygote is not None:
+                    self.zygote.close()
                 self._master.close()
                 self.monitor.close()
                 self.console.close()
@@ -529,18 +542,28 @@ class LaunchRun:
             output = "screen"
         if self.settings.force_log:
             output = "log"
-        return LocalProcess(
-            name,
-            argv,
-            environ,
-            self._cwd(node, executable),
-            log_dir=self.log_dir,
-            log_output=output != "screen",
-            respawn=node.respawn,
-            respawn_delay=node.respawn_delay,
-            required=node.required or self.settings.force_required,
-            package=node.package,
-        )
+        options: dict[str, Any] = {
+            "log_dir": self.log_dir,
+            "log_output": output != "screen",
+            "respawn": node.respawn,
+            "respawn_delay": node.respawn_delay,
+            "required": node.required or self.settings.force_required,
+            "package": node.package,
+        }
+        cwd = self._cwd(node, executable)
+        if self.zygote is not None and argv[: len(self.script_command)] == self.script_command:
+            from rosx.launch.zygote import ForkedProcess  # noqa: PLC0415
+
+            return ForkedProcess(
+                name,
+                argv,
+                environ,
+                cwd,
+                zygote=self.zygote,
+                script_index=len(self.script_command),
+                **options,
+            )
+        return LocalProcess(name, argv, environ, cwd, **options)
 
     def _program(self, node: Node, command: list[str]) -> tuple[list[str], Path | None]:
         """The command line to run and the node's executable: a Python script's runs with

@@ -107,6 +107,25 @@ BROKEN = """\
 </launch>
 """
 
+#: A node that draws a random number.
+DICE = """\
+#!/usr/bin/env python
+import random
+
+import rospy
+
+rospy.init_node("dice")
+print("drew", random.random(), flush=True)
+rospy.spin()
+"""
+
+TWO_DICE = """\
+<launch>
+  <node name="d1" pkg="labl" type="dice.py" output="screen"/>
+  <node name="d2" pkg="labl" type="dice.py" output="screen"/>
+</launch>
+"""
+
 RESPAWN = """\
 <launch>
   <node name="resp" pkg="labl" type="quitter.py" respawn="true" respawn_delay="0.2">
@@ -225,9 +244,15 @@ def world(tmp_path: Path) -> Iterator[dict[str, Any]]:
         "stub.launch": STUB,
         "missing.launch": MISSING,
         "broken.launch": BROKEN,
+        "dice.launch": TWO_DICE,
     }.items():
         (package / "launch" / name).write_text(text)
-    scripts = {"quitter.py": QUITTER, "spinner.py": SPINNER, "stubborn.py": STUBBORN}
+    scripts = {
+        "quitter.py": QUITTER,
+        "spinner.py": SPINNER,
+        "stubborn.py": STUBBORN,
+        "dice.py": DICE,
+    }
     for name, text in scripts.items():
         script = package / "scripts" / name
         script.write_text(text)
@@ -560,3 +585,14 @@ def test_wait_waits_for_a_master(world: dict[str, Any]) -> None:
         "master has started, initiating launch\n... logging to "
     )
     assert "[once-1] process has finished cleanly\n" in launch.out
+
+
+def test_python_nodes_do_not_share_their_random_numbers(world: dict[str, Any]) -> None:
+    """Python nodes start as forks of one loaded process: each still draws its own numbers
+    (Python reseeds ``random`` in a fork), and so its own anonymous names."""
+    with launched(["labl", "dice.launch"], world["env"]) as launch:
+        wait_for(lambda: launch.out.count("drew ") == 2, timeout=60, what="two draws")
+        _wait_registered(world["uri"], "/d1", "/d2")
+        assert launch.interrupt() == 0
+    draws = re.findall(r"drew (\S+)", launch.out)
+    assert len(set(draws)) == 2, draws
