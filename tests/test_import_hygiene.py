@@ -93,6 +93,15 @@ def test_workspace_tools_do_not_pay_for_typer(argv: list[str]) -> None:
     assert "dataclasses" not in loaded and "textual" not in loaded
 
 
+def test_rosbag_info_loads_no_tui_numpy_or_typer() -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        "run_tool(['rosbag', 'info', '/nonexistent.bag'], Environment(stdout=io.StringIO(),"
+        " stderr=io.StringIO(), environ={}))"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in ("typer", "pydantic", "rich", *HEAVY)}
+
+
 def test_rqt_graph_text_output_loads_no_tui() -> None:
     loaded = _modules_after(
         "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
@@ -100,3 +109,25 @@ def test_rqt_graph_text_output_loads_no_tui() -> None:
         " environ={'ROS_MASTER_URI': 'http://localhost:9'}))"
     )
     assert not {m for m in loaded if m.split(".")[0] in ("textual", "typer", "numpy")}
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [["rostopic", "list"], ["rosnode", "info", "/x"], ["rosservice", "call", "/x"]],
+)
+def test_master_and_service_clients_do_not_load_the_node_runtime(argv: list[str]) -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        f"run_tool({argv!r}, Environment(stdout=io.StringIO(), stderr=io.StringIO(),"
+        " environ={'ROS_MASTER_URI': 'http://localhost:9'}))"
+    )
+    service_client = {"rosx.node.errors", "rosx.node.service_client"}
+    assert not {m for m in loaded if m.startswith("rosx.node.")} - service_client
+    assert not {"asyncio", "threading", "rosx.node.node", "rosx.node.loop"} & loaded
+
+
+def test_rosx_node_loads_its_modules_on_first_use() -> None:
+    loaded = _modules_after("import rosx.node")
+    assert "rosx.node.node" not in loaded and "asyncio" not in loaded
+    loaded = _modules_after("from rosx.node import Node, ServiceClient")
+    assert {"rosx.node.node", "rosx.node.service_client"} <= loaded

@@ -59,8 +59,11 @@ def commands_overview(
     return "\n".join(lines)
 
 
-def run_command(command: object, argv: list[str], env: Environment) -> int:
-    """Run one sub-command function ``command(argv, env) -> status`` with error mapping."""
+def run_command(
+    command: object, argv: list[str], env: Environment, *, error_status: int = ExitStatus.ERROR
+) -> int:
+    """Run one sub-command function ``command(argv, env) -> status`` with error mapping: the
+    core's errors (`rosx_commands.errors`) exit with ``error_status``."""
     try:
         status = command(argv, env)  # type: ignore[operator]
     except HelpShown:
@@ -73,4 +76,12 @@ def run_command(command: object, argv: list[str], env: Environment) -> int:
         return ExitStatus.ERROR
     except KeyboardInterrupt:
         return ExitStatus.OK
+    except Exception as error:
+        from rosx_commands.errors import command_error  # noqa: PLC0415 - only on failure
+
+        mapped = command_error(error, env, error_status)
+        if mapped is None:
+            raise
+        env.err(mapped.message)
+        return mapped.status
     return int(status or 0)

@@ -6,7 +6,13 @@ import os
 import sys
 from collections.abc import Mapping
 from enum import IntEnum
-from typing import TextIO
+from typing import TYPE_CHECKING, TextIO
+
+if TYPE_CHECKING:
+    from rosx.master.client import MasterClient
+
+#: Seconds a tool waits for the master before saying it is not there (ROS 1 may take minutes).
+MASTER_TIMEOUT = 2.0
 
 
 class ExitStatus(IntEnum):
@@ -37,8 +43,24 @@ class Environment:
 
     @property
     def stdout_isatty(self) -> bool:
-        isatty = getattr(self.stdout, "isatty", None)
-        return bool(isatty and isatty())
+        return _isatty(self.stdout)
+
+    @property
+    def stderr_isatty(self) -> bool:
+        return _isatty(self.stderr)
+
+    @property
+    def master_uri(self) -> str:
+        """The master the command talks to (``ROS_MASTER_URI``, or the default)."""
+        from rosx.master.client import master_uri  # noqa: PLC0415 - only tools that need it
+
+        return master_uri(self.environ)
+
+    def master(self, caller_id: str) -> MasterClient:
+        """A client of the master, calling as ``caller_id``."""
+        from rosx.master.client import MasterClient  # noqa: PLC0415 - only tools that need it
+
+        return MasterClient(self.master_uri, caller_id, timeout=MASTER_TIMEOUT)
 
     def out(self, text: str = "") -> None:
         """Print a line to stdout."""
@@ -47,6 +69,11 @@ class Environment:
     def err(self, text: str = "") -> None:
         """Print a line to stderr."""
         self.stderr.write(text + "\n")
+
+
+def _isatty(stream: TextIO) -> bool:
+    isatty = getattr(stream, "isatty", None)
+    return bool(isatty and isatty())
 
 
 class CommandError(Exception):

@@ -27,6 +27,10 @@ TOOLS: dict[str, tuple[str, str]] = {
         "rosx_commands.roslaunch:roslaunch",
         "Start the nodes and parameters of launch files (and a core when none runs).",
     ),
+    "rosbag": (
+        "rosx_commands.rosbag:rosbag",
+        "Record, play back and inspect bag files (ROS 1's format 2.0).",
+    ),
     "rqt_graph": (
         "rosx_commands.rqt_graph:rqt_graph",
         "Show the ROS graph of nodes and topics, live.",

@@ -21,7 +21,7 @@ import itertools
 import socket
 from typing import TYPE_CHECKING, Any, Protocol
 
-from rosx.node.errors import MasterError
+from rosx.master.client import MasterError
 from rosx.transport.errors import ConnectError, TransportError
 from rosx.wire.errors import ProtocolError
 from rosx.wire.framing import DEFAULT_MAX_FRAME_SIZE, DEFAULT_MAX_HEADER_SIZE, FrameReader

@@ -25,7 +25,7 @@ from rosx.node.errors import NodeError
 if TYPE_CHECKING:
     from collections.abc import Mapping
 
-    from rosx.node.master_proxy import MasterProxy
+    from rosx.master.client import MasterClient
 
 
 class ParamArgsError(NodeError, ValueError):
@@ -67,7 +67,7 @@ def private_param_keys(
 
 
 def set_private_params(
-    master: MasterProxy,
+    master: MasterClient,
     args: RemapArgs | Mapping[str, str],
     *,
     node_name: str,
@@ -85,7 +85,7 @@ def set_private_params(
 
     Raises:
         ParamArgsError: a value cannot be set (nothing is set then).
-        MasterError, TransportError: the master refused or cannot be reached.
+        MasterError, MasterUnreachable: the master refused or cannot be reached.
     """
     raw = args.params if isinstance(args, RemapArgs) else args
     keyed = private_param_keys(

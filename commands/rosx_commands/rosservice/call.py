@@ -19,8 +19,6 @@ from typing import TYPE_CHECKING, Any
 from rosx.names.anonymous import anonymous_node_name
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
-from rosx_commands.master import MasterError
-from rosx_commands.rosservice.rpc import CallError, ServiceIOError, call, probe
 from rosx_commands.rosservice.services import SERVICE_ERROR, Services
 from rosx_commands.yamltext import one_line
 
@@ -112,14 +110,10 @@ def _load_args(words: list[str]) -> list[Any]:
 
 def _wait_for_service(services: Services, name: str, timeout: float | None) -> None:
     """Block until ``name`` is advertised and answers a probe (rospy's ``wait_for_service``)."""
+    from rosx.node.service_client import contact_service  # noqa: PLC0415 - call only
+
     deadline = None if timeout is None else time.monotonic() + timeout
-    while True:
-        try:
-            uri = services.master.call("lookupService", name)
-            probe(name, str(uri))
-            return
-        except (MasterError, ServiceIOError):
-            pass
+    while not contact_service(services.master, name):
         if deadline is not None and time.monotonic() >= deadline:
             raise CommandError(
                 f"ERROR: timeout exceeded while waiting for service {name}", SERVICE_ERROR
@@ -142,7 +136,10 @@ class _Caller:
         self.name = name
         self.service_class = service_class
         self.options = options
-        self.caller_id = "/" + anonymous_node_name("rosservice", pid=os.getpid())
+        from rosx.node.service_client import ServiceClient  # noqa: PLC0415 - call only
+
+        caller_id = "/" + anonymous_node_name("rosservice", pid=os.getpid())
+        self.client = ServiceClient(services.master, name, service_class, caller_id=caller_id)
 
     def call(self, args: list[Any]) -> None:
         """Fill a request from ``args``, call the service, print the response.
@@ -152,20 +149,7 @@ class _Caller:
         """
         request = self._fill(args)
         payload = self._serialize(request)
-        uri = self.services.uri_of(self.name)
-        if uri is None:
-            raise CommandError(f"ERROR: service [{self.name}] unavailable", SERVICE_ERROR)
-        try:
-            data = call(
-                self.name,
-                uri,
-                md5sum=self.service_class._md5sum,
-                request=payload,
-                caller_id=self.caller_id,
-                timeout=self.options.timeout,
-            )
-        except (CallError, ServiceIOError) as error:
-            raise CommandError(f"ERROR: {error}", SERVICE_ERROR) from None
+        data = self.client.call_serialized(payload, timeout=self.options.timeout)
         response = self._deserialize(data)
         if self.options.verbose:
             self.env.out(self._format(request))

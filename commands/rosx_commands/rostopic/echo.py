@@ -18,6 +18,8 @@ from rosx_commands.rostopic.listing import resolve
 from rosx_commands.rostopic.session import MessageFilter, Session, wait_until
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from rosx.msg.text.fieldpath import FieldPath
 
 
@@ -114,6 +116,7 @@ class Printer:
         noarr: bool = False,
         nostr: bool = False,
         width: int | None = None,
+        clock: Callable[[], Any] | None = None,
     ) -> None:
         self.env = env
         self.topic = topic
@@ -138,7 +141,7 @@ class Printer:
 
         self._format, self._record = format_value, echo_record
         self._csv_header, self._csv_row = csv_header, csv_row
-        self._path_error, self._now = FieldPathError, now
+        self._path_error, self._now = FieldPathError, clock or now
 
     def __call__(self, msg: object) -> None:
         if self.message_filter is not None and not self.message_filter(msg, self.topic):
@@ -211,8 +214,18 @@ def echo(argv: list[str], env: Environment) -> int:
     width = _integer(parser, options.fixed_numeric_width, "NUM_WIDTH must be an integer")
     if width is not None and width < 2:
         parser.error("Fixed width for numeric values must be at least 2")
+    printing = {
+        "path": None,
+        "plot": options.plot,
+        "message_filter": message_filter,
+        "clear": options.clear,
+        "count": count,
+        "noarr": options.noarr,
+        "nostr": options.nostr,
+        "width": width,
+    }
     if options.bag:
-        raise CommandError("ERROR: rosx does not read .bag files")
+        return _echo_bag(env, options.bag, topic, options.all_topics, printing)
     with Session(env) as session:
         session.check_master()
         node = session.start_node()
@@ -241,6 +254,33 @@ def echo(argv: list[str], env: Environment) -> int:
         if sim_time:
             _warn_without_clock(env, session, printer)
         wait_until(session, printer.done)
+    return ExitStatus.OK
+
+
+def _echo_bag(
+    env: Environment, bag: str, topic: str, every_topic: bool, printing: dict[str, Any]
+) -> int:
+    """``rostopic echo -b BAG``: the bag's messages of ``topic`` (or all), in time order, with
+    the bag's times where a time is printed."""
+    from pathlib import Path  # noqa: PLC0415
+
+    from rosx.bag.api import Bag, ROSBagException  # noqa: PLC0415
+
+    if not Path(bag).exists():
+        raise CommandError(f"ERROR: bag file [{bag}] does not exist")
+    stamp: list[Any] = [None]
+    printer = Printer(env, topic, clock=lambda: stamp[0], **printing)
+    try:
+        with Bag(bag) as reader:
+            wanted = None if every_topic else [topic]
+            for name, msg, when in reader.read_messages(topics=wanted):
+                stamp[0] = when
+                printer.topic = name
+                printer(msg)
+                if printer.done.is_set():
+                    break
+    except (ROSBagException, OSError) as exc:
+        raise CommandError(f"ERROR: unable to read bag file [{bag}]: {exc}") from None
     return ExitStatus.OK
 
 

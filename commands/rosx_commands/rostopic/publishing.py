@@ -20,8 +20,9 @@ from __future__ import annotations
 import time
 from typing import TYPE_CHECKING, Any
 
+from rosx.master.client import MasterError
 from rosx.msg.codec.message import MessageException
-from rosx_commands.context import CommandError
+from rosx.transport.errors import TransportError
 from rosx_commands.rostopic.session import fail
 
 if TYPE_CHECKING:
@@ -207,7 +208,7 @@ class Publishing:
         """The nodes the master lists as subscribers of the topic (None if it cannot say)."""
         try:
             _, subscribers, _ = self.session.master.system_state()
-        except CommandError:
+        except (TransportError, MasterError):
             return None
         me = self.publisher.node.name
         topic = self.publisher.name
