@@ -378,6 +378,7 @@ def _launch(
         force_log=opts["force_log"],
         force_required=opts["force_required"],
         show_summary=not opts["no_summary"],
+        verbose=opts["verbose"],
         skip_log_check=opts["skip_log_check"],
         titles=not opts["disable_title"],
         sigint_timeout=opts["sigint_timeout"],

@@ -474,11 +474,21 @@ def test_with_a_master_running_the_launch_ends_when_its_nodes_end(
         wait_for(lambda: port_open(port), what="roscore")
         with launched(["labl", "clean.launch"], env) as launch:
             assert launch.finish(timeout=90) == 0
+        with launched(["-v", "--skip-log-check", "labl", "clean.launch"], env) as verbose:
+            assert verbose.finish(timeout=90) == 0
         with Node("/checker", master_uri=world["uri"], environ={}) as checker:
             run_id = checker.master.call("getParam", "/run_id")
             assert checker.master.call("getParam", "/answer") == 42
     assert f"logging to {world['home'] / 'ros_home' / 'log' / run_id}/" in launch.out
     assert "auto-starting new master" not in launch.out
+    where = world["home"] / "src" / "labl" / "launch" / "clean.launch"
+    assert (
+        f"... loading XML file [{where}]\n"
+        "Added parameter [/answer]\n"
+        "Added parameter [/once/code]\n"
+        "Added node of type [labl/quitter.py] in namespace [/]\n"
+        "started roslaunch server "
+    ) in verbose.out
     assert (
         f"ROS_MASTER_URI=http://localhost:{port}\nprocess[once-1]: started with pid" in launch.out
     )
