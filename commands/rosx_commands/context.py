@@ -6,9 +6,11 @@ import os
 import sys
 from collections.abc import Mapping
 from enum import IntEnum
-from typing import TYPE_CHECKING, TextIO
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import TextIO
+
     from rosx.master.client import MasterClient
 
 #: Seconds a tool waits for the master before saying it is not there (ROS 1 may take minutes).

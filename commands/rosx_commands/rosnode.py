@@ -5,8 +5,6 @@ from __future__ import annotations
 import contextlib
 import socket
 import time
-from typing import TYPE_CHECKING, NoReturn
-from urllib.parse import urlparse
 
 from rosx.master.client import MasterError
 from rosx.names.resolution import make_global_ns
@@ -15,8 +13,10 @@ from rosx.transport.errors import CallTimeoutError, ConnectError, FaultError, Tr
 from rosx_commands.cli import ToolParser, commands_overview, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     from collections.abc import Sequence
+    from typing import NoReturn
 
     from rosx.master.client import MasterClient
 
@@ -227,6 +227,8 @@ def machine(argv: list[str], env: Environment) -> int:
     _, names = parser.parse(argv)
     if len(names) > 1:
         parser.error("please enter only one machine name")
+    from urllib.parse import urlparse  # noqa: PLC0415 - only machine needs it
+
     master = env.master(CALLER_ID)
     hosts: dict[str, str] = {}
     for node in node_names(master):

@@ -10,10 +10,10 @@ quiets the error reports.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
 
 from rosx_commands.context import Environment, ExitStatus
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     from rosx.packages.index import PackageIndex
 

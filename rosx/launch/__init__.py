@@ -1,6 +1,6 @@
 """roslaunch's launch files as a plan: parse, resolve, print (layer 7b, "launch").
 
-Pure: nothing here starts a process or opens a socket. The runner (``rosx roslaunch``) builds a
+Pure: nothing here opens a socket or starts a node. The runner (``rosx roslaunch``) builds a
 `model.LaunchPlan` with `load_launch` and then runs it; the printing options are functions of a
 plan.
 
@@ -9,7 +9,9 @@ Modules:
 * `model`: the plan's dataclasses (`LaunchPlan`, `Node`, `Test`, `Param`, `Machine`…).
 * `errors`: `LaunchError` (file, line, tag, message; one-line ``str()``).
 * `loader`: `load_launch` (XML → plan), `resolve_launch_arguments` (``PKG FILE`` / paths,
-  ``name:=value``).
+  ``name:=value``), `roscore_params`; built on `xmldoc` (XML with line numbers), `context`
+  (the scope rules), `substitution` and `evaluate` (substitution args, ``$(eval)``) and
+  `values` (``<param>`` typing, ``textfile``/``binfile``/``command``, rosparam YAML).
 * `printing`: `summary_text` (the SUMMARY block), `nodes_text` (``--nodes``),
   `node_args_text` (``--args NODE``), `files_text` (``--files``), `dump_params_text`
   (``--dump-params``), `find_node_text` (``--find-node NODE``), `ros_args_text` (``--ros-args``).
@@ -20,8 +22,15 @@ Typical use::
 
     index = PackageIndex.from_environ(os.environ)
     files, cli_args = resolve_launch_arguments(argv, index)
-    plan = load_launch(files, cli_args, os.environ, index)
+    plan = load_launch(files, cli_args, os.environ, index, argv=argv)
     print(summary_text(plan), end="")
+
+The printing options load as roslaunch does for each: ``with_core=False`` for ``--dump-params``
+(roscore's part is not read), ``args_only=True`` for ``--ros-args``, ``core_params={}`` for all
+(they do not show roscore's parameters).
+
+The one exception to "pure": ``<param command="…">`` runs its command while loading, as
+roslaunch does (`values.run_command`, replaceable through ``load_launch(run=…)``).
 
 This layer imports `rosx.names`, `rosx.msg` (rosparam's YAML rules), `rosx.packages` (the
 package index, for ``$(find)``), `rosx.workspace` (how ``rosrun`` finds executables) and, for
@@ -35,7 +44,7 @@ import importlib
 TYPE_CHECKING = False
 if TYPE_CHECKING:
     from rosx.launch.errors import LaunchError
-    from rosx.launch.loader import load_launch, resolve_launch_arguments
+    from rosx.launch.loader import load_launch, resolve_launch_arguments, roscore_params
     from rosx.launch.model import LaunchPlan, Machine, MasterSettings, Node, Param, Source, Test
     from rosx.launch.printing import (
         dump_params_text,
@@ -66,6 +75,7 @@ _HOMES = {
     "node_environment": "rosx.launch.process",
     "nodes_text": "rosx.launch.printing",
     "resolve_launch_arguments": "rosx.launch.loader",
+    "roscore_params": "rosx.launch.loader",
     "ros_args_text": "rosx.launch.printing",
     "summary_text": "rosx.launch.printing",
 }
@@ -97,5 +107,6 @@ __all__ = [
     "nodes_text",
     "resolve_launch_arguments",
     "ros_args_text",
+    "roscore_params",
     "summary_text",
 ]

@@ -100,10 +100,21 @@ _BUILTINS: dict[str, Any] = {
         "zip",
     ]
 }
+_MAX_SIZE = 10_000_000
+
+
+def _range(*args: int) -> range:
+    """``range``, refused beyond `_MAX_SIZE` items (a runaway loop would hang the launch)."""
+    span = range(*args)
+    if len(span) > _MAX_SIZE:
+        raise ValueError("range too large")
+    return span
+
+
+_BUILTINS["range"] = _range
 _MATH = {name: value for name, value in vars(math).items() if not name.startswith("_")}
 _SAFE_TYPES = (str, int, float, bool, list, tuple, dict, set, frozenset, range, bytes)
 _UNSAFE_METHODS = frozenset({"format", "format_map"})
-_MAX_SIZE = 10_000_000
 
 
 class EvalError(substitution.SubstitutionError):

@@ -186,6 +186,7 @@ def load_launch(
     package_index: PackageIndex | None = None,
     *,
     with_core: bool = True,
+    core_params: Mapping[str, Any] | None = None,
     args_only: bool = False,
     anonymous: Callable[[str], str] | None = None,
     run: CommandRunner | None = None,
@@ -200,8 +201,10 @@ def load_launch(
             (default: ``os.environ``).
         package_index: For ``$(find)`` (default: built from ``environ``).
         with_core: Read roscore's part first, as every roslaunch except ``--dump-params``
-            does: the ``/rosversion`` and ``/rosdistro`` parameters, and ``/rosout``'s name
-            taken.
+            does: its parameters (``core_params``), and ``/rosout``'s name taken.
+        core_params: The parameters roscore sets from ``roscore.xml`` (name -> value); None
+            for rosx's core's ``/rosversion`` and ``/rosdistro`` (`roscore_params`). The
+            printing options, which do not show them, pass ``{}`` and skip importing the core.
         args_only: Read ``<arg>`` tags only (``--ros-args``).
         anonymous: Makes ``$(anon id)`` names (default: rosgraph's ``anonymous_name``).
         run: Runs ``<param command=…>`` commands (default: a subprocess).
@@ -223,7 +226,7 @@ def load_launch(
     plan.master = MasterSettings(environ.get("ROS_MASTER_URI") or plan.master.uri)
     reader = _Reader(plan, world, run or run_command, args_only)
     if with_core:
-        reader.add_core()
+        reader.add_core(roscore_params() if core_params is None else core_params)
     try:
         namespace = ros_namespace(environ, argv)
     except ValueError as error:
@@ -234,6 +237,13 @@ def load_launch(
         except _AbortError as abort:
             raise abort.error from None
     return plan
+
+
+def roscore_params() -> dict[str, Any]:
+    """What roslaunch's ``roscore.xml`` sets: ``/rosversion`` and ``/rosdistro``, as rosx's core."""
+    from rosx.master.core import ROSDISTRO, ROSVERSION  # noqa: PLC0415
+
+    return {"/rosversion": ROSVERSION, "/rosdistro": ROSDISTRO}
 
 
 class _Reader:
@@ -247,6 +257,7 @@ class _Reader:
         self.run = run
         self.args_only = args_only
         self.node_names: list[str] = []
+        self.including: list[str] = []  # the chain of files being read, outermost first
 
     # -- errors ---------------------------------------------------------------------------
 
@@ -329,11 +340,9 @@ class _Reader:
 
     # -- files ----------------------------------------------------------------------------
 
-    def add_core(self) -> None:
-        from rosx.master.core import ROSDISTRO, ROSVERSION  # noqa: PLC0415
-
+    def add_core(self, params: Mapping[str, Any]) -> None:
         source = Source("roscore.xml")
-        for name, value in (("/rosversion", ROSVERSION), ("/rosdistro", ROSDISTRO)):
+        for name, value in params.items():
             self.plan.params[name] = Param(name, value, source)
         self.node_names.append("/rosout")
 
@@ -351,6 +360,7 @@ class _Reader:
     def load_file(self, filename: str, namespace: str, cli_args: dict[str, str]) -> None:
         context = LoadContext(namespace, filename)
         context.subst.args = cli_args
+        self.including = [os.path.normpath(Path(filename).absolute())]
         launch = self.parse(context, None, filename)
         self.plan.files.append(filename)
         self.launch_tag(context, launch)
@@ -712,9 +722,15 @@ class _Reader:
         except ContextError as error:
             raise self.fail(context, element, str(error)) from None
         launch = self.parse(context, element, filename)
+        path = os.path.normpath(Path(filename).absolute())
+        if path in self.including:
+            chain = " -> ".join([*self.including, path])
+            raise self.fail(context, element, f"the file includes itself: {chain}")
         self.plan.files.append(filename)
         self.launch_tag(child, launch)
+        self.including.append(path)
         machine = self.recurse(child, launch.children, machine)
+        self.including.pop()
         if not pass_all and child.unused_args():
             unused = ", ".join(child.unused_args())
             raise self.fail(context, element, f"unused args [{unused}] for include of [{filename}]")
@@ -795,7 +811,12 @@ class _Reader:
         }
         if is_test:
             test = Test(
-                output="log", test_name=test_name, time_limit=time_limit, retry=retry, **fields
+                output="log",
+                clear_params=cleared,
+                test_name=test_name,
+                time_limit=time_limit,
+                retry=retry,
+                **fields,
             )
             self.plan.tests.append(test)
             return
@@ -941,4 +962,4 @@ def _descendants(element: Element) -> Iterator[Element]:
         yield from _descendants(child)
 
 
-__all__ = ["load_launch", "load_mappings", "resolve_launch_arguments"]
+__all__ = ["load_launch", "load_mappings", "resolve_launch_arguments", "roscore_params"]

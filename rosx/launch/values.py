@@ -134,7 +134,18 @@ def load_yaml(text: str, *, rosparam: bool = True) -> Any:
     try:
         return load_value(text) if rosparam else load(text)
     except ValueError as error:
-        raise ValueConversionError(str(error)) from None
+        raise ValueConversionError(_one_line(str(error))) from None
+
+
+def _one_line(description: str) -> str:
+    # PyYAML's description quotes the offending lines with a caret below; the words and the
+    # positions say it on one line.
+    words = [
+        line.strip()
+        for line in description.splitlines()
+        if line.strip() and not line.startswith("    ") and line.strip() != "^"
+    ]
+    return " ".join(words).replace('in "<unicode string>", ', "at ").rstrip(":")
 
 
 def flatten(name: str, value: Any) -> Iterator[tuple[str, Any]]:

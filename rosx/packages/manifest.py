@@ -14,7 +14,8 @@ from __future__ import annotations
 import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
-from typing import NamedTuple
+
+from rosx.record import Record
 
 MANIFEST = "package.xml"
 
@@ -53,14 +54,34 @@ class ManifestError(Exception):
         return head + self.message
 
 
-class Person(NamedTuple):
+class Person(Record):
+    """A maintainer or author."""
+
+    __match_args__ = ("name", "email")
+    __slots__ = __match_args__
     name: str
     email: str | None
 
+    def __init__(self, name: str, email: str | None) -> None:
+        super().__init__(name=name, email=email)
 
-class Manifest(NamedTuple):
+
+class Manifest(Record):
     """What rosx needs of a ``package.xml``."""
 
+    __match_args__ = (
+        "path",
+        "format",
+        "name",
+        "version",
+        "description",
+        "maintainers",
+        "authors",
+        "licenses",
+        "depends",
+        "metapackage",
+    )
+    __slots__ = __match_args__
     path: Path
     format: str
     name: str
@@ -71,6 +92,33 @@ class Manifest(NamedTuple):
     licenses: tuple[str, ...]
     depends: dict[str, tuple[str, ...]]
     metapackage: bool
+
+    def __init__(
+        self,
+        *,
+        path: Path,
+        format: str,
+        name: str,
+        version: str,
+        description: str,
+        maintainers: tuple[Person, ...],
+        authors: tuple[Person, ...],
+        licenses: tuple[str, ...],
+        depends: dict[str, tuple[str, ...]],
+        metapackage: bool,
+    ) -> None:
+        super().__init__(
+            path=path,
+            format=format,
+            name=name,
+            version=version,
+            description=description,
+            maintainers=maintainers,
+            authors=authors,
+            licenses=licenses,
+            depends=depends,
+            metapackage=metapackage,
+        )
 
     @property
     def directory(self) -> Path:

@@ -53,7 +53,7 @@ class Pond:
         def settled() -> bool:
             pose = self.pose
             prev, last[0] = last[0], (pose.x, pose.y, pose.theta, pose.linear_velocity)
-            return prev == last[0] and pose.linear_velocity == 0.0
+            return bool(prev == last[0] and pose.linear_velocity == 0.0)
 
         wait_for(settled, timeout=20, what="the turtle to stop")
         return self.pose

@@ -1,14 +1,15 @@
-"""``roslaunch``'s printing options over `rosx.launch`, for tests until ``rosx roslaunch`` has them.
+"""roslaunch's printing options over `rosx.launch`, for tests until ``rosx roslaunch`` has them.
 
-Usage: ``python print_driver.py --nodes|--files|--dump-params|--ros-args|--args NODE|
---find-node NODE [PKG] FILE... [name:=value...]``. Prints what roslaunch prints; errors go to
-stderr with roslaunch's exit status.
+``main(argv, environ)`` takes what follows ``roslaunch`` (``--nodes|--files|--dump-params|
+--ros-args|--args NODE|--find-node NODE [PKG] FILE… [name:=value…]``) and returns roslaunch's
+exit status, stdout and stderr. Run as a script, it prints them.
 """
 
 from __future__ import annotations
 
 import os
 import sys
+from collections.abc import Mapping
 
 from rosx.launch import (
     LaunchError,
@@ -24,20 +25,22 @@ from rosx.launch import (
 from rosx.packages.index import PackageIndex
 
 
-def main(argv: list[str]) -> int:
+def main(argv: list[str], environ: Mapping[str, str]) -> tuple[int, str, str]:
+    """``roslaunch ARGV…`` for one printing option: (status, stdout, stderr)."""
     option, rest = argv[0], argv[1:]
     node = ""
     if option in ("--args", "--find-node"):
         node, rest = rest[0], rest[1:]
-    index = PackageIndex.from_environ(os.environ)
+    index = PackageIndex.from_environ(environ)
     try:
         files, cli_args = resolve_launch_arguments(rest, index)
         plan = load_launch(
             files,
             cli_args,
-            os.environ,
+            environ,
             index,
             with_core=option != "--dump-params",
+            core_params={},
             args_only=option == "--ros-args",
             argv=rest,
         )
@@ -50,15 +53,16 @@ def main(argv: list[str]) -> int:
         elif option == "--ros-args":
             text = ros_args_text(plan)
         elif option == "--args":
-            text = node_args_text(plan, node, files, os.environ, index)
+            text = node_args_text(plan, node, files, environ, index)
         else:
-            text = find_node_text(plan, node, files, os.environ)
+            text = find_node_text(plan, node, files, environ)
     except LaunchError as error:
-        sys.stderr.write(f"{error}\n")
-        return error.status
-    sys.stdout.write(text)
-    return 0
+        return error.status, "", f"{error}\n"
+    return 0, text, ""
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    status, out, err = main(sys.argv[1:], os.environ)
+    sys.stdout.write(out)
+    sys.stderr.write(err)
+    sys.exit(status)

@@ -162,3 +162,48 @@ def test_self_embedding_type_is_an_error_not_a_hang(tmp_path: Path) -> None:
     _package(tmp_path, "loop", {"A": "B b\n", "B": "A a\n"})
     with pytest.raises(InvalidMsgSpecError):
         TypeStore([tmp_path]).md5("loop/A")
+
+
+def _fresh_standard_texts() -> dict[str, str]:
+    from rosx.msg import standard
+
+    standard._texts.cache_clear()
+    try:
+        return dict(standard.standard_types())
+    finally:
+        standard._texts.cache_clear()
+
+
+def test_standard_texts_come_back_from_the_cache_unchanged(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    built = _fresh_standard_texts()
+    cache = tmp_path / "rosx" / "ros1_noetic_types.marshal"
+    assert cache.is_file()
+    assert _fresh_standard_texts() == built
+    assert (
+        built["geometry_msgs/Twist"]
+        == "geometry_msgs/Vector3 linear\ngeometry_msgs/Vector3 angular\n"
+    )
+
+
+@pytest.mark.parametrize("content", [b"", b"\x00garbage", b"\xe9\x02\x00\x00\x00"])
+def test_a_damaged_cache_is_built_again(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, content: bytes
+) -> None:
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    expected = _fresh_standard_texts()
+    cache = tmp_path / "rosx" / "ros1_noetic_types.marshal"
+    cache.write_bytes(content)
+    assert _fresh_standard_texts() == expected
+    assert cache.read_bytes() != content
+
+
+def test_an_unwritable_cache_folder_costs_only_time(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    (tmp_path / "rosx").write_text("a file where the folder would be")
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    assert "geometry_msgs/Twist" in _fresh_standard_texts()
+    assert list(tmp_path.iterdir()) == [tmp_path / "rosx"]

@@ -40,7 +40,6 @@ def build_parser(env: Environment) -> ToolParser:
     p = ToolParser(env, "rosbag", _HELP_USAGE)
     p.description = "Record a bag file with the contents of specified topics."
     p.formatter = optparse.IndentedHelpFormatter()
-    p.formatter.set_parser(p)
     add = p.add_option
     add("-a", "--all", dest="all", default=False, action="store_true", help="record all topics")
     add(

@@ -10,12 +10,15 @@ them, ``ERROR: <its status message>``, by the CLI's error mapping.
 from __future__ import annotations
 
 import os
-from typing import Any
 
 from rosx.msg.text.yamlparams import ParamValueError, check_value
 from rosx.names.resolution import ns_join
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.context import CommandError, Environment
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 NAME = "rosparam"
 

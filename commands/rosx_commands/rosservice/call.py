@@ -14,7 +14,6 @@ from __future__ import annotations
 import io
 import os
 import time
-from typing import TYPE_CHECKING, Any
 
 from rosx.names.anonymous import anonymous_node_name
 from rosx_commands.cli import ToolParser
@@ -22,7 +21,10 @@ from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.rosservice.services import SERVICE_ERROR, Services
 from rosx_commands.yamltext import one_line
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any
+
     from rosx.msg.codec.message import Message, ServiceDefinition
 
 #: How often rospy's ``wait_for_service`` looks for the service, in seconds.

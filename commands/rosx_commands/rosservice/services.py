@@ -8,13 +8,13 @@ core's errors are worded by `rosx_commands.errors`).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.context import CommandError, Environment
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+
     from rosx.msg.codec.message import ServiceDefinition
     from rosx.msg.store import TypeStore
 

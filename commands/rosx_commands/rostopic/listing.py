@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
-from urllib.parse import urlparse
-
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any
+
     from rosx.master.client import MasterClient
     from rosx.msg.store import TypeStore
 
@@ -160,6 +160,8 @@ def _print_by_host(
     subscribers_only: bool,
     verbose: bool,
 ) -> None:
+
+    from urllib.parse import urlparse  # noqa: PLC0415 - only list --host needs it
 
     uris: dict[str, str | None] = {}
 

@@ -31,9 +31,12 @@ import binascii
 import datetime as dt
 import math
 from collections.abc import Callable
-from typing import Any
 
 from rosx.msg.text.yamlstr import Writer, analyze, resolves_as_non_str
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 _INDENT = 2
 _SIMPLE_KEY_LIMIT = 128

@@ -14,11 +14,13 @@ document, as rostopic does). ``-f FILE`` is an ordinary YAML stream: `load_all`.
 
 from __future__ import annotations
 
-import datetime as dt
 import re
 from collections.abc import Callable, Iterable, Iterator
 from functools import cache
-from typing import Any
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 _BLANKS = "\0 \t\r\n\x85\u2028\u2029"
 
@@ -101,6 +103,8 @@ def _loader_factory() -> Any:
             return True
 
         def construct_yaml_timestamp(self, node: Any, values: Any = None) -> Any:
+            import datetime as dt  # noqa: PLC0415 - ruamel has imported it by now
+
             value = super().construct_yaml_timestamp(node, values)
             offset = value.utcoffset() if isinstance(value, dt.datetime) else None
             return value if offset is None else value.replace(tzinfo=dt.timezone(offset))

@@ -20,17 +20,19 @@ taught ``deg(…)``/``rad(…)``: strings of that shape are quoted so that they 
 
 from __future__ import annotations
 
-import datetime as dt
 import math
 import re
 from functools import cache
-from typing import Any
 
 from rosx.msg.text.yamldump import dump
 
 # The PyYAML-compatible loader and PyYAML's wording of errors, extended below for rosparam.
 from rosx.msg.text.yamlload import YAMLLoadError, _describe, _loader_factory
 from rosx.names.resolution import ns_join
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 _DEGREES = re.compile(r"^deg\([^\)]*\)$")
 _RADIANS = re.compile(r"^rad\([^\)]*\)$")
@@ -115,6 +117,8 @@ def check_value(value: object, name: str = "") -> None:
 def _describe_value(value: object) -> str:
     if value is None:
         return "null (an empty value)"
+    import datetime as dt  # noqa: PLC0415 - kept off rosparam get's start-up
+
     if isinstance(value, dt.date):
         return f"a date ({value}); quote it for a string"
     return f"a {type(value).__name__} ({value!r})"

@@ -16,7 +16,8 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 from functools import cache
-from typing import NamedTuple
+
+from rosx.record import Record
 
 _WIDTH = 80
 _INDENT = 2
@@ -78,14 +79,23 @@ def resolves_as_non_str(text: str) -> bool:
     return _implicit_non_str().match(text) is not None
 
 
-class Analysis(NamedTuple):
+class Analysis(Record):
     """Which styles PyYAML's emitter allows for a scalar (its ``ScalarAnalysis``, block context)."""
 
+    __match_args__ = ("empty", "multiline", "plain", "single_quoted", "block")
+    __slots__ = __match_args__
     empty: bool
     multiline: bool
     plain: bool
     single_quoted: bool
     block: bool
+
+    def __init__(
+        self, *, empty: bool, multiline: bool, plain: bool, single_quoted: bool, block: bool
+    ) -> None:
+        super().__init__(
+            empty=empty, multiline=multiline, plain=plain, single_quoted=single_quoted, block=block
+        )
 
 
 def quoted(text: str) -> str:

@@ -17,13 +17,13 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from test_msg_classes import EVERY_KIND, make_package
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.msg.codec.message import DeserializationError, Message, SerializationError
 from rosx.msg.codec.rostime import Duration, Time
 from rosx.msg.codec.wiretypes import INTEGER_RANGES
 from rosx.msg.store import TypeStore, default_store
+from tests.msg.codec.msgpackages import EVERY_KIND, make_package
 
 ROS1_PYTHON = Path("/usr/bin/python3")
 

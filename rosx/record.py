@@ -1,9 +1,9 @@
-"""`Record`, the base of the wire layer's events and values: immutable, compared by fields.
+"""`Record`: immutable values compared by fields (the wire layer's events, the message specs).
 
 A subclass names its fields, in order, in ``__match_args__`` (so ``case Fault(code, message)``
 works), reuses that tuple as ``__slots__``, declares their types, and has a typed ``__init__``
 that passes them by name to ``Record.__init__``. This is what a frozen, slotted dataclass gives;
-it is written out because command-line tools import this layer on start-up, where importing
+it is written out because command-line tools import these layers on start-up, where importing
 `dataclasses` costs about 12 ms and creating each dataclass about 0.4 ms more.
 """
 
