@@ -26,6 +26,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from functools import partial
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
@@ -60,6 +61,10 @@ def make_package(root: Path, nodes: int) -> Path:
         "<launch>\n" + "\n".join(lines) + "\n</launch>\n"
     )
     return package
+
+
+def _freed(port: int) -> bool:
+    return not port_open(port)
 
 
 def registered(client: XmlRpcClient, uri: str) -> set[str]:
@@ -139,7 +144,7 @@ def main() -> int:
                 if round_:
                     up[kind].append(a)
                     down[kind].append(b)
-                wait_for(lambda port=port: not port_open(port), what="the port freed")
+                wait_for(partial(_freed, port), what="the port freed")
         rows.append((f"{options.nodes} nodes + core: to all registered", up["ros1"], up["rosx"]))
         rows.append(("  then Ctrl-C to exit", down["ros1"], down["rosx"]))
 

@@ -18,6 +18,7 @@ import subprocess
 import sys
 import threading
 from collections.abc import Iterator
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -318,9 +319,7 @@ def test_turtlemimic_starts_a_core_two_turtlesims_and_mimic_and_ctrl_c_ends_all(
             poses: dict[str, Any] = {}
             pose_type = get_message_class("turtlesim/Pose")
             for ns in ("turtlesim1", "turtlesim2"):
-                watcher.subscribe(
-                    f"/{ns}/turtle1/pose", pose_type, lambda m, ns=ns: poses.__setitem__(ns, m)
-                )
+                watcher.subscribe(f"/{ns}/turtle1/pose", pose_type, partial(poses.__setitem__, ns))
             twist_type = get_message_class("geometry_msgs/Twist")
             cmd = watcher.advertise("/turtlesim1/turtle1/cmd_vel", twist_type, queue_size=1)
             twist = twist_type()
