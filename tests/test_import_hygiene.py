@@ -125,7 +125,7 @@ def test_master_and_service_clients_do_not_load_the_node_runtime(argv: list[str]
     loaded = _tool_modules(argv)
     service_client = {"rosx.node.errors", "rosx.node.service_client"}
     assert not {m for m in loaded if m.startswith("rosx.node.")} - service_client
-    assert not {"asyncio", "threading", "rosx.node.node", "rosx.node.loop"} & loaded
+    assert not {"asyncio", "threading", "rosx.node.node", "rosx.transport.loop_thread"} & loaded
 
 
 def test_rosx_node_loads_its_modules_on_first_use() -> None:

@@ -12,7 +12,8 @@ Modules, one concept each:
 
 - `node`: `Node`, the synchronous facade; `handles`: the `Publisher`, `Subscriber` and
   `ServiceHandle` it returns.
-- `loop`: the process's I/O loop thread. `tcpros_server`: a node's TCPROS port.
+- `tcpros_server`: a node's TCPROS port. Sockets are served on the process's event loop
+  (`rosx.transport.loop_thread`); handlers and callbacks run on the node's own threads.
 - `publication` and `outgoing`: publishing a topic and the per-subscriber frame streams.
 - `subscription`, `incoming` and `receiver`: subscribing, the per-publisher streams, the
   reader threads, the drop-oldest queue and the callbacks.
