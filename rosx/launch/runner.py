@@ -395,35 +395,16 @@ class LaunchRun:
         return str(self.core.run_id)
 
     def _start_logging(self) -> None:
-        try:
-            self.log_dir = logdir.prepare_run_log_dir(self.environ, self.run_id)
-        except OSError:
-            folder = logdir.run_log_dir(self.environ, self.run_id)
-            self.console.error(
-                f"WARNING: cannot create log directory [{folder}]. "
-                "Please set ROS_LOG_DIR to a writable location."
-            )
-            self.console.error(
-                "WARNING: unable to configure logging. No log files will be generated"
-            )
-            return
-        path = self.log_dir / logdir.launcher_log_name()
-        if self.console.open_log(path):
-            self.console.plain(f"... logging to {path}")
-        if self.settings.skip_log_check:
-            return
-        self.console.line(
-            "Checking log directory for disk usage. This may take a while.\n"
-            "Press Ctrl-C to interrupt"
+        path = logdir.announce_run_log(
+            self.environ,
+            self.run_id,
+            out=self.console.plain,
+            err=self.console.error,
+            check_disk=not self.settings.skip_log_check,
         )
-        folder = logdir.log_dir(self.environ)
-        if logdir.disk_usage(folder) > logdir.DISK_USAGE_WARNING:
-            self.console.error(
-                f"WARNING: disk usage in log directory [{folder}] is over 1GB.\n"
-                "It's recommended that you use the 'rosclean' command."
-            )
-        else:
-            self.console.line("Done checking log file disk usage. Usage is <1GB.")
+        if path is not None:
+            self.log_dir = path.parent
+            self.console.open_log(path)
 
     def _print_loading(self) -> None:
         """``-v``: what roslaunch says as it reads each file (rebuilt from the plan: each

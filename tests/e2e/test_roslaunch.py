@@ -605,3 +605,17 @@ def test_python_nodes_do_not_share_their_random_numbers(world: dict[str, Any]) -
         assert launch.interrupt() == 0
     draws = re.findall(r"drew (\S+)", launch.out)
     assert len(set(draws)) == 2, draws
+
+
+def test_core_runs_roscore(world: dict[str, Any]) -> None:
+    """``roslaunch --core`` is roscore, log folder included."""
+    args = ["--core", "-p", str(world["port"])]
+    with launched(args, world["env"]) as launch:
+        launch.wait_for_text("started core service [/rosout]\n")
+        assert launch.interrupt() == 0
+    run_id = re.findall(r"setting /run_id to (\S+)", launch.out)[0]
+    log_dir = world["home"] / "ros_home" / "log" / run_id
+    assert launch.out.startswith(f"... logging to {log_dir}/roslaunch-")
+    assert "ros_comm version 1.16.0\n" in launch.out
+    assert launch.out.endswith("... shutting down processing monitor complete\ndone\n")
+    assert (world["home"] / "ros_home" / "log" / "latest").resolve() == log_dir.resolve()
