@@ -66,8 +66,7 @@ def run_command(command: object, argv: list[str], env: Environment) -> int:
     except HelpShown:
         return ExitStatus.OK
     except CommandError as error:
-        if error.message:
-            env.err(error.message)
+        error.report(env)
         return error.status
     except BrokenPipeError:
         return ExitStatus.ERROR

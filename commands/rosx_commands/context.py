@@ -40,6 +40,11 @@ class Environment:
         isatty = getattr(self.stdout, "isatty", None)
         return bool(isatty and isatty())
 
+    @property
+    def stderr_isatty(self) -> bool:
+        isatty = getattr(self.stderr, "isatty", None)
+        return bool(isatty and isatty())
+
     def out(self, text: str = "") -> None:
         """Print a line to stdout."""
         self.stdout.write(text + "\n")
@@ -50,9 +55,21 @@ class Environment:
 
 
 class CommandError(Exception):
-    """A user's mistake: ``message`` goes to stderr as is, the command exits with ``status``."""
+    """A user's mistake: ``message`` goes to stderr as is, the command exits with ``status``.
 
-    def __init__(self, message: str, status: int = ExitStatus.ERROR) -> None:
+    ``hint`` (what to do about it) follows the message only when stderr is a terminal, so that
+    scripts and ROS 1's tests reading stderr see ROS 1's text alone.
+    """
+
+    def __init__(self, message: str, status: int = ExitStatus.ERROR, *, hint: str = "") -> None:
         super().__init__(message)
         self.message = message
         self.status = status
+        self.hint = hint
+
+    def report(self, env: Environment) -> None:
+        """Print the message (and, on a terminal, the hint) to ``env``'s stderr."""
+        if self.message:
+            env.err(self.message)
+        if self.hint and env.stderr_isatty:
+            env.err(self.hint)

@@ -18,11 +18,11 @@ def master_uri(env: Environment) -> str:
 
 
 def unreachable(uri: str) -> CommandError:
-    """ROS 1's line, then how to get a master."""
+    """ROS 1's line, then (on a terminal) how to get a master."""
     return CommandError(
-        "ERROR: Unable to communicate with master!\n"
-        f"No master answers at ROS_MASTER_URI={uri}: start one with `rosx roscore` "
-        "(or `rosx sim`) in another terminal, or point ROS_MASTER_URI at a running one."
+        "ERROR: Unable to communicate with master!",
+        hint=f"No master answers at ROS_MASTER_URI={uri}: start one with `rosx roscore` "
+        "(or `rosx sim`) in another terminal, or point ROS_MASTER_URI at a running one.",
     )
 
 
