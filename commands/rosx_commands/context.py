@@ -6,7 +6,10 @@ import os
 import sys
 from collections.abc import Mapping
 from enum import IntEnum
-from typing import TextIO
+from typing import TYPE_CHECKING, TextIO
+
+if TYPE_CHECKING:
+    from rosx.names.remap_args import RemapArgs
 
 
 class ExitStatus(IntEnum):
@@ -34,6 +37,9 @@ class Environment:
         self.stderr = sys.stderr if stderr is None else stderr
         self.stdin = sys.stdin if stdin is None else stdin
         self.environ = dict(os.environ) if environ is None else environ
+        #: The command line's remapping arguments (``__name:=``, ``from:=to``, ``_param:=``),
+        #: for a tool that runs as a node, as rospy's ``init_node`` reads them.
+        self.remap_args: RemapArgs | None = None
 
     @property
     def stdout_isatty(self) -> bool:

@@ -68,11 +68,19 @@ class Session:
         self.master.call("getPid")
 
     def start_node(self, *, rosout: bool = True) -> Node:
-        """Start the tool's node (``/rostopic_<pid>_<ms>`` in ``ROS_NAMESPACE``)."""
+        """Start the tool's node (``/rostopic_<pid>_<ms>`` in ``ROS_NAMESPACE``).
+
+        As rospy's ``init_node``, the command line's ``__name:=`` and ``__ns:=`` rename it,
+        its ``from:=to`` remap names, and its ``_param:=value`` set private parameters.
+        """
         from rosx.node import Node  # noqa: PLC0415 - only streaming commands need the runtime
 
+        args = self.env.remap_args
         node = Node(
-            anonymous_node_name("rostopic"),
+            (args and args.name) or anonymous_node_name("rostopic"),
+            namespace=args and args.ns,
+            remappings=args and args.remappings,
+            private_params=args and args.params,
             master_uri=master_uri(self.env),
             environ=self.env.environ,
             rosout_enabled=rosout,
