@@ -134,6 +134,11 @@ class XmlRpcServer:
         )
         self.port = self._server.sockets[0].getsockname()[1]
 
+    def stop_listening(self) -> None:
+        """Refuse new connections from now on; calls under way still get their replies."""
+        if self._server is not None:
+            self._server.close()
+
     async def close(self) -> None:
         """Stop listening and close every connection."""
         server, self._server = self._server, None
