@@ -96,7 +96,7 @@ _ROSX_PRELUDE = r"""
 import sys
 sys.path.insert(0, {root!r})
 sys.path.append({site!r})  # rosx's dependencies, when run by another interpreter
-from rosx.msg.classes import get_message_class as load
+from rosx.msg.codec.classes import get_message_class as load
 """
 
 _GENPY_PRELUDE = r"""

@@ -49,7 +49,7 @@ def msg_class(name):
 API_ROSX = """
 import os
 from rosx.node import Node
-from rosx.msg.classes import get_message_class as msg_class
+from rosx.msg.codec.classes import get_message_class as msg_class
 _node = []
 def make_node(name):
     _node.append(Node(name, master_uri=os.environ['ROS_MASTER_URI']).start())

@@ -7,10 +7,13 @@ from __future__ import annotations
 
 import argparse
 import sys
-from typing import Any, NoReturn
 
 from rosx_commands.cli import HelpShown
 from rosx_commands.context import CommandError, Environment
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any, NoReturn
 
 
 class ToolArgumentParser(argparse.ArgumentParser):

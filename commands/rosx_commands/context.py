@@ -6,10 +6,16 @@ import os
 import sys
 from collections.abc import Mapping
 from enum import IntEnum
-from typing import TYPE_CHECKING, TextIO
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import TextIO
+
+    from rosx.master.client import MasterClient
     from rosx.names.remap_args import RemapArgs
+
+#: Seconds a tool waits for the master before saying it is not there (ROS 1 may take minutes).
+MASTER_TIMEOUT = 2.0
 
 
 class ExitStatus(IntEnum):
@@ -43,13 +49,24 @@ class Environment:
 
     @property
     def stdout_isatty(self) -> bool:
-        isatty = getattr(self.stdout, "isatty", None)
-        return bool(isatty and isatty())
+        return _isatty(self.stdout)
 
     @property
     def stderr_isatty(self) -> bool:
-        isatty = getattr(self.stderr, "isatty", None)
-        return bool(isatty and isatty())
+        return _isatty(self.stderr)
+
+    @property
+    def master_uri(self) -> str:
+        """The master the command talks to (``ROS_MASTER_URI``, or the default)."""
+        from rosx.master.client import master_uri  # noqa: PLC0415 - only tools that need it
+
+        return master_uri(self.environ)
+
+    def master(self, caller_id: str) -> MasterClient:
+        """A client of the master, calling as ``caller_id``."""
+        from rosx.master.client import MasterClient  # noqa: PLC0415 - only tools that need it
+
+        return MasterClient(self.master_uri, caller_id, timeout=MASTER_TIMEOUT)
 
     def out(self, text: str = "") -> None:
         """Print a line to stdout."""
@@ -60,22 +77,15 @@ class Environment:
         self.stderr.write(text + "\n")
 
 
+def _isatty(stream: TextIO) -> bool:
+    isatty = getattr(stream, "isatty", None)
+    return bool(isatty and isatty())
+
+
 class CommandError(Exception):
-    """A user's mistake: ``message`` goes to stderr as is, the command exits with ``status``.
+    """A user's mistake: ``message`` goes to stderr as is, the command exits with ``status``."""
 
-    ``hint`` (what to do about it) follows the message only when stderr is a terminal, so that
-    scripts and ROS 1's tests reading stderr see ROS 1's text alone.
-    """
-
-    def __init__(self, message: str, status: int = ExitStatus.ERROR, *, hint: str = "") -> None:
+    def __init__(self, message: str, status: int = ExitStatus.ERROR) -> None:
         super().__init__(message)
         self.message = message
         self.status = status
-        self.hint = hint
-
-    def report(self, env: Environment) -> None:
-        """Print the message (and, on a terminal, the hint) to ``env``'s stderr."""
-        if self.message:
-            env.err(self.message)
-        if self.hint and env.stderr_isatty:
-            env.err(self.hint)

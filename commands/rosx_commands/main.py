@@ -23,10 +23,23 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rosnode": ("rosx_commands.rosnode:rosnode", "Print information about ROS nodes."),
     "rosservice": ("rosx_commands.rosservice:rosservice", "List, inspect and call ROS services."),
     "rosparam": ("rosx_commands.rosparam:rosparam", "Get and set ROS parameters."),
+    "rosbag": (
+        "rosx_commands.rosbag:rosbag",
+        "Record, play back and inspect bag files (ROS 1's format 2.0).",
+    ),
     "rqt_graph": (
         "rosx_commands.rqt_graph:rqt_graph",
         "Show the ROS graph of nodes and topics, live.",
     ),
+    "rqt_plot": (
+        "rosx_commands.rqt_plot:rqt_plot",
+        "Plot numeric fields of topics live (TOPIC/FIELD...).",
+    ),
+    "rqt_topic": (
+        "rosx_commands.rqt_topic:rqt_topic",
+        "Monitor topics: type, bandwidth, rate and the latest message.",
+    ),
+    "rqt": ("rosx_commands.rqt:rqt", "The rqt tools as tabs of one terminal app."),
     "sim": ("rosx_commands.sim:sim", "Run a master, turtlesim and teleop in one terminal UI."),
     "catkin_create_pkg": (
         "rosx_commands.catkin_create_pkg:catkin_create_pkg",

@@ -57,7 +57,7 @@ def run_typer(app: typer.Typer, argv: Sequence[str], env: Environment, prog: str
     try:
         result = command.main(args=list(argv), prog_name=prog, standalone_mode=False, obj=env)
     except CommandError as error:
-        error.report(env)
+        env.err(error.message)
         return error.status
     except UsageError as error:
         text = str(getattr(error, "format_message", error.__str__)())

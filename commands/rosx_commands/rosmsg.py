@@ -154,7 +154,8 @@ def _show(tool: _Tool, argv: list[str], alias: str) -> int:
             "Please refer to msg/srv types as 'package_name/Type'."
         )
     if getattr(options, "bag", None):
-        raise CommandError("ERROR: rosx does not read .bag files")
+        bag = str(getattr(options, "bag", ""))
+        return _show_from_bag(tool, bag, type_name, bool(getattr(options, "raw", False)))
     full_names = tool.matches(type_name)
     if not full_names:
         raise CommandError(f"Could not find msg '{type_name}'")
@@ -166,6 +167,30 @@ def _show(tool: _Tool, argv: list[str], alias: str) -> int:
         if "/" not in type_name:
             tool.env.out(f"[{full_name}]:")
         tool.env.out(text)
+    return ExitStatus.OK
+
+
+def _show_from_bag(tool: _Tool, bag: str, type_name: str, raw: bool) -> int:
+    """``rosmsg show -b BAG TYPE``: the definition the bag recorded for ``TYPE``."""
+    from pathlib import Path  # noqa: PLC0415
+
+    from rosx.bag.errors import BagError  # noqa: PLC0415
+    from rosx.bag.reader import BagReader  # noqa: PLC0415
+    from rosx.bag.types import DefinitionStore, split_definition  # noqa: PLC0415
+
+    if not Path(bag).exists():
+        raise CommandError(f"ERROR: bag file [{bag}] does not exist")
+    try:
+        with BagReader(bag) as reader:
+            found = next((c for c in reader.connections.values() if c.type == type_name), None)
+    except (BagError, OSError) as exc:
+        raise CommandError(f"ERROR: unable to read bag file [{bag}]: {exc}") from None
+    if found is not None:
+        if raw:
+            tool.env.out(found.message_definition)
+        else:
+            store = DefinitionStore(split_definition(found.type, found.message_definition))
+            tool.env.out(describe_msg(store.msg(found.type), store.msg))
     return ExitStatus.OK
 
 

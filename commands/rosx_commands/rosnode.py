@@ -1,23 +1,27 @@
 """``rosx rosnode``: list, info, ping, kill, machine, cleanup, as ROS 1's rosnode."""
 
+from __future__ import annotations
+
 import contextlib
-import re
 import socket
 import time
-from collections.abc import Sequence
-from typing import Any
-from urllib.parse import urlparse
 
+from rosx.master.client import MasterError
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx.transport.errors import CallTimeoutError, ConnectError, FaultError, TransportError
 from rosx_commands.cli import ToolParser, commands_overview, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
-from rosx_commands.master import Master
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from collections.abc import Sequence
+    from typing import NoReturn
+
+    from rosx.master.client import MasterClient
 
 CALLER_ID = "/rosnode"
 PING_TIMEOUT = 3.0
-_CONNECTION = re.compile(r"\w+ connection on port (\d+) to \[(.*) on socket (\d+)\]")
 
 COMMANDS = [
     ("ping", "test connectivity to node"),
@@ -42,7 +46,7 @@ def _resolve(env: Environment, name: str) -> str:
     return script_resolve_name("rosnode", name, ros_namespace(env.environ))
 
 
-def node_names(master: Master, namespace: str | None = None) -> list[str]:
+def node_names(master: MasterClient, namespace: str | None = None) -> list[str]:
     """Every node the master knows through a registration, sorted."""
     nodes: set[str] = set()
     prefix = make_global_ns(namespace) if namespace else None
@@ -72,7 +76,7 @@ def list_nodes(argv: list[str], env: Environment) -> int:
     if len(names) > 1:
         parser.error("invalid args: you may only specify one namespace")
     ns = script_resolve_name("rostopic", names[0], ros_namespace(env.environ)) if names else None
-    master = Master(env, CALLER_ID)
+    master = env.master(CALLER_ID)
     nodes = node_names(master, ns)
     if list_all:
         env.out("\n".join(f"{master.lookup_node(n) or 'unknown address'} \t{n}" for n in nodes))
@@ -81,83 +85,6 @@ def list_nodes(argv: list[str], env: Environment) -> int:
     else:
         env.out("\n".join(nodes))
     return ExitStatus.OK
-
-
-def _topic_type(topic: str, published: dict[str, str]) -> str:
-    return published.get(topic, "unknown type")
-
-
-def node_description(master: Master, node: str) -> str:
-    """The master's view of ``node``: publications, subscriptions, services."""
-    pubs_state, subs_state, srvs_state = master.system_state()
-    published = master.published_topics("/")
-    pubs = sorted(t for t, nodes in pubs_state if node in nodes)
-    subs = sorted(t for t, nodes in subs_state if node in nodes)
-    srvs = sorted(s for s, nodes in srvs_state if node in nodes)
-    text = f"Node [{node}]"
-    for title, topics in (("Publications", pubs), ("Subscriptions", subs)):
-        if topics:
-            text += (
-                f"\n{title}: \n"
-                + "\n".join(f" * {t} [{_topic_type(t, published)}]" for t in topics)
-                + "\n"
-            )
-        else:
-            text += f"\n{title}: None\n"
-    if srvs:
-        text += "\nServices: \n" + "\n".join(f" * {s}" for s in srvs) + "\n"
-    else:
-        text += "\nServices: None\n"
-    return text
-
-
-def _peer(master: Master, state: Any, topic: str, dest: str, cache: dict[str, str | None]) -> str:
-    for section in state[:2]:
-        for name, nodes in section:
-            if name != topic:
-                continue
-            for node in nodes:
-                if node not in cache:
-                    cache[node] = master.lookup_node(node)
-                if cache[node] == dest:
-                    return f"{node} ({dest})"
-    return dest
-
-
-def connection_description(master: Master, node: str, uri: str) -> str:
-    """What the node says of itself: its PID and its live connections (``getBusInfo``)."""
-    state = master.system_state()
-    try:
-        pid = _succeed(master.node_call(uri, "getPid", timeout=5.0))
-        text = f"Pid: {pid}\n"
-        bus_info = _succeed(master.node_call(uri, "getBusInfo", timeout=5.0))
-    except (TransportError, FaultError):
-        raise CommandError(f"ERROR: Communication with node[{uri}] failed!") from None
-    if bus_info:
-        text += "Connections:\n"
-        cache: dict[str, str | None] = {}
-        for info in bus_info:
-            dest, direction, transport, topic = info[1], info[2], info[3], info[4]
-            if len(info) > 5 and not info[5]:
-                continue
-            text += f" * topic: {topic}\n"
-            text += f"    * to: {_peer(master, state, topic, dest, cache)}\n"
-            text += {"i": "    * direction: inbound", "o": "    * direction: outbound"}.get(
-                direction, "    * direction: unknown"
-            )
-            if len(info) > 6:
-                match = _CONNECTION.match(info[6])
-                if match is not None:
-                    text += " ({} - {}) [{}]".format(*match.groups())
-            text += f"\n    * transport: {transport}\n"
-    return text
-
-
-def _succeed(reply: Any) -> Any:
-    code, status, value = reply
-    if code != 1:
-        raise CommandError(f"ERROR: remote call failed: {status}")
-    return value
 
 
 def info(argv: list[str], env: Environment) -> int:
@@ -175,7 +102,9 @@ def info(argv: list[str], env: Environment) -> int:
     quiet = options.quiet
     if not nodes:
         parser.error("You must specify at least one node name")
-    master = Master(env, CALLER_ID)
+    from rosx.graph.describe import node_connections, node_description  # noqa: PLC0415
+
+    master = env.master(CALLER_ID)
     for raw in nodes:
         node = _resolve(env, raw)
         env.out("-" * 80)
@@ -186,12 +115,12 @@ def info(argv: list[str], env: Environment) -> int:
             continue
         if not quiet:
             env.out(f"\ncontacting node {uri} ...")
-            env.out(connection_description(master, node, uri))
+            env.out(node_connections(master, uri))
     return ExitStatus.OK
 
 
 def ping_node(
-    env: Environment, master: Master, node: str, count: int | None, verbose: bool
+    env: Environment, master: MasterClient, node: str, count: int | None, verbose: bool
 ) -> bool:
     """Ping ``node`` through ``getPid`` ``count`` times (forever when None), once a second."""
     uri = master.lookup_node(node)
@@ -224,6 +153,8 @@ def ping_node(
             except (TransportError, FaultError):
                 env.err(f"connection to [{node}] failed")
                 return False
+            except MasterError as error:
+                raise MasterError(error.code, f"remote call failed: {error.status}") from None
             elapsed = (time.time() - start) * 1000.0
             total += elapsed
             done += 1
@@ -254,7 +185,7 @@ def ping(argv: list[str], env: Environment) -> int:
     )
     options, names = parser.parse(argv)
     ping_all, count = options.ping_all, options.ping_count
-    master = Master(env, CALLER_ID)
+    master = env.master(CALLER_ID)
     if ping_all:
         if names:
             parser.error(f"Invalid arguments '{' '.join(names)}' used with --all")
@@ -266,8 +197,7 @@ def ping(argv: list[str], env: Environment) -> int:
             ping_node(env, master, node, 1, True)
         return ExitStatus.OK
     if not names:
-        listing = "\n".join(node_names(master))
-        parser.error("Please enter a node to ping. Available nodes are:\n" + listing)
+        _no_node_to_ping(env, parser, master)
     if len(names) > 1:
         parser.error("you may only specify one input node")
     node = _resolve(env, names[0])
@@ -276,12 +206,30 @@ def ping(argv: list[str], env: Environment) -> int:
     return ExitStatus.OK
 
 
+def _no_node_to_ping(env: Environment, parser: ToolParser, master: MasterClient) -> NoReturn:
+    """rosnode's usage error for ``ping`` without a node, as ROS 1 gives it: the list of nodes
+    when the master answers, then (its first exit caught by its own bare ``except``) the short
+    error, which alone is printed when there is no master."""
+    try:
+        listing = "\n".join(node_names(master))
+    except (TransportError, MasterError):
+        listing = None
+    if listing is not None:
+        try:
+            parser.error("Please enter a node to ping. Available nodes are:\n" + listing)
+        except CommandError as listed:
+            env.err(listed.message)
+    parser.error("Please enter a node to ping")
+
+
 def machine(argv: list[str], env: Environment) -> int:
     parser = ToolParser(env, "rosnode", "usage: %prog machine [machine-name]")
     _, names = parser.parse(argv)
     if len(names) > 1:
         parser.error("please enter only one machine name")
-    master = Master(env, CALLER_ID)
+    from urllib.parse import urlparse  # noqa: PLC0415 - only machine needs it
+
+    master = env.master(CALLER_ID)
     hosts: dict[str, str] = {}
     for node in node_names(master):
         uri = master.lookup_node(node)
@@ -313,7 +261,7 @@ def kill(argv: list[str], env: Environment) -> int:
     )
     options, names = parser.parse(argv)
     kill_all = options.kill_all
-    master = Master(env, CALLER_ID)
+    master = env.master(CALLER_ID)
     if kill_all:
         if names:
             parser.error("invalid arguments with kill all (-a) option")
@@ -369,7 +317,7 @@ def _read_choice(env: Environment, limit: int) -> int:
 
 def cleanup(argv: list[str], env: Environment) -> int:
     ToolParser(env, "rosnode", "usage: %prog cleanup").parse(argv)
-    master = Master(env, CALLER_ID)
+    master = env.master(CALLER_ID)
     dead = []
     for node in node_names(master):
         uri = master.lookup_node(node)
@@ -400,7 +348,7 @@ def cleanup(argv: list[str], env: Environment) -> int:
     for node in dead:
         env.out(f"Unregistering {node}")
         uri = master.lookup_node(node)
-        as_node = Master(env, node)
+        as_node = master.as_caller(node)
         for topic, nodes in pubs:
             if node in nodes:
                 as_node.call("unregisterPublisher", topic, uri)

@@ -10,12 +10,12 @@ quiets the error reports.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
 
 from rosx_commands.context import Environment, ExitStatus
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from rosx.workspace.index import PackageIndex
+    from rosx.packages.index import PackageIndex
 
 USAGE = """\
 USAGE: rospack <command> [options] [package]
@@ -52,7 +52,7 @@ class _Failed(Exception):  # noqa: N818 - a report, worded by rospack
 
 
 def _package_here(env: Environment) -> str | None:
-    from rosx.workspace.manifest import ManifestError, read_manifest  # noqa: PLC0415
+    from rosx.packages.manifest import ManifestError, read_manifest  # noqa: PLC0415
     from rosx_commands.invocation import working_directory  # noqa: PLC0415
 
     here = working_directory(env)
@@ -62,9 +62,16 @@ def _package_here(env: Environment) -> str | None:
         return None
 
 
+def _provided(package: str) -> bool:
+    """Whether rosx provides ``package``'s types without a directory (``std_msgs``…)."""
+    from rosx.msg.store import default_store  # noqa: PLC0415 - standard types load lazily
+
+    return default_store().has_package(package)
+
+
 def _answer(command: str, package: str, index: PackageIndex) -> list[str]:
-    from rosx.workspace.index import PackageNotFoundError  # noqa: PLC0415
-    from rosx.workspace.manifest import ManifestError  # noqa: PLC0415
+    from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415
+    from rosx.packages.manifest import ManifestError  # noqa: PLC0415
 
     if command == "find":
         try:
@@ -113,9 +120,9 @@ def rospack(argv: Sequence[str], env: Environment) -> int:
         env.stdout.write(USAGE)
         return ExitStatus.OK
 
-    from rosx.workspace.index import PackageIndex  # noqa: PLC0415
+    from rosx.packages.index import PackageIndex  # noqa: PLC0415
 
-    index = PackageIndex.from_environ(env.environ)
+    index = PackageIndex.from_environ(env.environ, provides=_provided)
     if command in _LIST_COMMANDS:
         if rest:
             return fail("invalid option(s) given")

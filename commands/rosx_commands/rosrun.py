@@ -41,6 +41,9 @@ _TOOL_EXECUTABLES = {
     ("rosservice", "rosservice"): "rosservice",
     ("rosparam", "rosparam"): "rosparam",
     ("rqt_graph", "rqt_graph"): "rqt_graph",
+    ("rqt_plot", "rqt_plot"): "rqt_plot",
+    ("rqt_topic", "rqt_topic"): "rqt_topic",
+    ("rqt_gui", "rqt_gui"): "rqt",
 }
 
 
@@ -102,8 +105,8 @@ def _options(argv: list[str]) -> tuple[list[str], bool, list[str]] | None:
 def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
     """What ``rosrun ARGV…`` does: a program to become, one to run here, or an exit status."""
     from rosx.client.script import shim_environ  # noqa: PLC0415
+    from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
     from rosx.workspace.executables import find_executables, is_python_script  # noqa: PLC0415
-    from rosx.workspace.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
 
     options = _options(argv)
     if options is None:

@@ -22,8 +22,9 @@ This package imports `rosx.node`, `rosx.msg` and `rosx.names`, nothing above the
 
 from __future__ import annotations
 
-import importlib
 from typing import Any
+
+from rosx._lazy import lazy_names
 
 _HOMES = {
     "AnyMsg": "rosx.client.anymsg",
@@ -32,7 +33,7 @@ _HOMES = {
     "ERROR": "rosx.client.lifecycle",
     "FATAL": "rosx.client.lifecycle",
     "INFO": "rosx.client.lifecycle",
-    "Message": "rosx.msg.message",
+    "Message": "rosx.msg.codec.message",
     "Publisher": "rosx.client.topics",
     "ROSException": "rosx.client.exceptions",
     "ROSInitException": "rosx.client.exceptions",
@@ -56,7 +57,7 @@ _HOMES = {
     "delete_param": "rosx.client.params",
     "get_caller_id": "rosx.client.lifecycle",
     "get_master": "rosx.client.lifecycle",
-    "get_message_class  # noqa: PLC0415": "rosx.msg.classes",
+    "get_message_class  # noqa: PLC0415": "rosx.msg.codec.classes",
     "get_name": "rosx.client.lifecycle",
     "get_namespace": "rosx.client.lifecycle",
     "get_node_uri": "rosx.client.lifecycle",
@@ -105,18 +106,16 @@ _HOMES = {
 }
 
 
+_load = lazy_names(__name__, _HOMES)
+
+
 def __getattr__(name: str) -> Any:
     # std_msgs/Header needs the standard type store, loaded only when a script asks for it.
     if name == "Header":
-        from rosx.msg.classes import get_message_class  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
 
         return get_message_class("std_msgs/Header")
-    home = _HOMES.get(name)
-    if home is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(home), name)
-    globals()[name] = value
-    return value
+    return _load(name)
 
 
 __all__ = [

@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from rosx.client.exceptions import ROSException
-from rosx.msg.message import Message, Writable
+from rosx.msg.codec.message import Message, Writable
 
 ANYTYPE = "*"
 

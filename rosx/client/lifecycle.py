@@ -35,8 +35,8 @@ if TYPE_CHECKING:
     from collections.abc import Callable
     from types import FrameType
 
+    from rosx.master.client import MasterClient
     from rosx.node import Node
-    from rosx.node.master_proxy import MasterProxy
 
 DEBUG = 1
 INFO = 2
@@ -160,7 +160,7 @@ def _start_node(
         state.CLIENT.shutdown_event.wait(_RETRY_PERIOD)
 
 
-def _master_answers(master: MasterProxy) -> bool:
+def _master_answers(master: MasterClient) -> bool:
     from rosx.transport.errors import TransportError  # noqa: PLC0415
 
     try:
@@ -275,7 +275,7 @@ def get_node_uri() -> str | None:
     return node.uri if node is not None else None
 
 
-def get_master(env: object = None) -> MasterProxy:
+def get_master(env: object = None) -> MasterClient:
     """The master, called as this node: ``get_master().getSystemState()`` gives the value."""
     return state.CLIENT.master()
 

@@ -6,7 +6,7 @@ message class (and ``<package>/msg/_<Type>.py`` per type), the same for ``srv`` 
 finders in place that give the same layout without any generated file, so that
 ``from geometry_msgs.msg import Twist``, ``import std_msgs.msg`` and
 ``from std_srvs.srv import Empty, EmptyResponse`` give rosx's classes
-(`rosx.msg.classes`), for the standard packages, turtlesim and the packages on
+(`rosx.msg.codec.classes`), for the standard packages, turtlesim and the packages on
 ``ROS_PACKAGE_PATH``:
 
 * ``<package>.msg``, ``<package>.srv`` and ``<package>.msg._<Type>``: served first, before any
@@ -60,7 +60,7 @@ def _exports(package: str, kind: str, names: Sequence[str]) -> list[str]:
 
 
 def _lookup(package: str, kind: str, name: str) -> type:
-    from rosx.msg.classes import get_message_class, get_service_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class, get_service_class  # noqa: PLC0415
 
     if kind == "srv":
         for suffix in ("Request", "Response"):

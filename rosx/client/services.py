@@ -21,7 +21,7 @@ from rosx.client.exceptions import (
 )
 from rosx.client.logs import loginfo, logwarn_throttle
 from rosx.client.topics import args_kwds_to_message
-from rosx.msg.message import SerializationError, ServiceDefinition
+from rosx.msg.codec.message import SerializationError, ServiceDefinition
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -150,23 +150,6 @@ class ServiceProxy:
             self._client.close()
 
 
-def _contact(name: str) -> bool | None:
-    """True when the service answers a probe; None when the master does not know it;
-    False when it is registered but does not answer."""
-    from rosx.node.service_client import lookup_service, probe_service  # noqa: PLC0415
-
-    master = state.CLIENT.master()
-    try:
-        lookup_service(master, name)
-    except ServiceException:
-        return None
-    try:
-        probe_service(master, name, timeout=_PROBE_TIMEOUT)
-    except ServiceException:
-        return False
-    return True
-
-
 def wait_for_service(service: str, timeout: float | None = None) -> None:
     """Block until ``service`` is registered and answers.
 
@@ -175,6 +158,8 @@ def wait_for_service(service: str, timeout: float | None = None) -> None:
         ROSException: ``timeout`` seconds (or a `Duration`) passed first.
         ROSInterruptException: the node shut down meanwhile.
     """
+    from rosx.node.service_client import contact_service  # noqa: PLC0415
+
     seconds = None if timeout is None else getattr(timeout, "to_sec", lambda: timeout)()
     if seconds is not None and float(seconds) == 0.0:
         raise ValueError("timeout must be non-zero")
@@ -182,7 +167,7 @@ def wait_for_service(service: str, timeout: float | None = None) -> None:
     deadline = None if seconds is None else time.monotonic() + float(seconds)
     failed = False
     while not state.CLIENT.is_shutdown() and (deadline is None or time.monotonic() < deadline):
-        answered = _contact(resolved)
+        answered = contact_service(state.CLIENT.master(), resolved, timeout=_PROBE_TIMEOUT)
         if answered:
             if failed:
                 loginfo(f"wait_for_service({resolved}): finally were able to contact service")

@@ -34,8 +34,8 @@ from rosx.names import (
 if TYPE_CHECKING:
     from collections.abc import Callable
 
+    from rosx.master.client import MasterClient
     from rosx.node import Node
-    from rosx.node.master_proxy import MasterProxy
 
 #: How long the interpreter's exit waits for a shutdown that another thread is running.
 _EXIT_WAIT = 10.0
@@ -63,7 +63,7 @@ class Client:
         self.pending: list[Attachable] = []
         self._args: RemapArgs | None = None
         self._argv: list[str] | None = None
-        self._master: MasterProxy | None = None
+        self._master: MasterClient | None = None
 
     # -- the command line --------------------------------------------------------------------
 
@@ -127,18 +127,16 @@ class Client:
 
     # -- the master before the node exists ---------------------------------------------------
 
-    def master(self) -> MasterProxy:
+    def master(self) -> MasterClient:
         """The master, called as the node (or as ``/unnamed`` before `init_node`)."""
         if self.node is not None:
             return self.node.master
         with self.lock:
             if self._master is None:
-                from rosx.node.master_proxy import MasterProxy  # noqa: PLC0415
-                from rosx.node.node import DEFAULT_MASTER_URI  # noqa: PLC0415
-                from rosx.transport.client import XmlRpcClient  # noqa: PLC0415
+                from rosx.master.client import MasterClient, master_uri  # noqa: PLC0415
 
-                uri = self.args.master or os.environ.get("ROS_MASTER_URI") or DEFAULT_MASTER_URI
-                self._master = MasterProxy(uri, self.caller_id(), XmlRpcClient())
+                uri = master_uri(os.environ, self.args.master)
+                self._master = MasterClient(uri, self.caller_id())
             return self._master
 
     # -- registrations made before the node ---------------------------------------------------

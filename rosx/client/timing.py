@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 from rosx.client import state
 from rosx.client.exceptions import ROSInitException, ROSInterruptException
-from rosx.msg import rostime
+from rosx.msg.codec import rostime
 from rosx.node.clock import Rate as _NodeRate
 from rosx.node.clock import sleep as _node_sleep
 from rosx.node.errors import NodeShutdownError

@@ -20,7 +20,7 @@ from rosx.client import state
 from rosx.client.anymsg import AnyMsg
 from rosx.client.exceptions import ROSException, ROSInterruptException, ROSSerializationException
 from rosx.client.logs import logerr
-from rosx.msg.message import Message, SerializationError
+from rosx.msg.codec.message import Message, SerializationError
 
 if TYPE_CHECKING:
     from collections.abc import Callable

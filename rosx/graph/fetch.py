@@ -2,15 +2,16 @@
 
 ``getSystemState`` and ``getTopicTypes`` from the master, ``lookupNode`` and ``getBusInfo`` for
 each node (ROS wiki Master_API and Slave_API), nodes asked in parallel with a short timeout so
-one hung node cannot stall a refresh. A node that does not answer is recorded as unreachable.
+one hung node cannot stall a refresh. A node that does not answer is recorded as unreachable;
+a master that does not answer raises `rosx.master.client.MasterUnreachable`.
 """
 
 from __future__ import annotations
 
 from concurrent.futures import ThreadPoolExecutor
-from typing import Any
 
 from rosx.graph.state import BusLink, GraphState
+from rosx.master.client import MasterClient, MasterError
 from rosx.transport.client import XmlRpcClient
 from rosx.transport.errors import FaultError, TransportError
 
@@ -19,50 +20,39 @@ NODE_TIMEOUT = 1.0
 WORKERS = 16
 
 
-class MasterUnreachable(Exception):  # noqa: N818 - the name says what happened
-    """The master did not answer or refused the call."""
-
-
-def _value(reply: Any) -> Any:
-    if not isinstance(reply, list) or len(reply) != 3 or reply[0] != 1:
-        raise FaultError(0, f"call failed: {reply!r}")
-    return reply[2]
-
-
 def fetch_state(master_uri: str, caller_id: str, *, bus_info: bool = True) -> GraphState:
-    """The graph as the master and (when ``bus_info``) the nodes report it."""
-    client = XmlRpcClient(timeout=2.0)
+    """The graph as the master and (when ``bus_info``) the nodes report it.
+
+    Raises:
+        MasterUnreachable: the master does not answer.
+        MasterError: the master refused a call.
+    """
+    master = MasterClient(master_uri, caller_id, XmlRpcClient(timeout=2.0))
     try:
-        try:
-            system = _value(client.call(master_uri, "getSystemState", caller_id))
-            types = dict(_value(client.call(master_uri, "getTopicTypes", caller_id)))
-        except (TransportError, FaultError, OSError) as error:
-            raise MasterUnreachable(str(error)) from None
+        system = master.call("getSystemState")
+        types = master.topic_types()
         state = GraphState.from_system_state(system, types)
         if not bus_info:
             return state
         nodes = state.nodes
         with ThreadPoolExecutor(max_workers=min(WORKERS, max(1, len(nodes)))) as pool:
-            answers = list(pool.map(lambda n: _ask_node(master_uri, caller_id, n), nodes))
+            answers = list(pool.map(lambda n: _ask_node(master, n), nodes))
     finally:
-        client.close()
+        master.close()
     uris = {node: uri for node, (uri, _) in zip(nodes, answers, strict=True) if uri}
     links = {node: found for node, (_, found) in zip(nodes, answers, strict=True)}
     return GraphState(state.publishers, state.subscribers, state.services, types, uris, links)
 
 
-def _ask_node(
-    master_uri: str, caller_id: str, node: str
-) -> tuple[str | None, tuple[BusLink, ...] | None]:
-    with XmlRpcClient(timeout=NODE_TIMEOUT) as client:
-        try:
-            uri = str(_value(client.call(master_uri, "lookupNode", caller_id, node)))
-        except (TransportError, FaultError, OSError):
-            return None, None
-        try:
-            info = _value(client.call(uri, "getBusInfo", caller_id))
-        except (TransportError, FaultError, OSError):
-            return uri, None
+def _ask_node(master: MasterClient, node: str) -> tuple[str | None, tuple[BusLink, ...] | None]:
+    try:
+        uri = str(master.call("lookupNode", node, timeout=NODE_TIMEOUT))
+    except (TransportError, MasterError):
+        return None, None
+    try:
+        info = master.node_call(uri, "getBusInfo", timeout=NODE_TIMEOUT)
+    except (TransportError, FaultError, MasterError):
+        return uri, None
     found = []
     for row in info:
         if len(row) > 5 and not row[5]:

@@ -10,7 +10,6 @@ order, after a line of 80 ``=`` and ``MSG: pkg/Type``.
 
 from __future__ import annotations
 
-import hashlib
 from collections.abc import Callable
 
 from rosx.msg.spec import MsgSpec, SrvSpec
@@ -33,10 +32,14 @@ def md5_text(spec: MsgSpec, lookup: Lookup, md5_of: Callable[[str], str] | None 
 
 
 def message_md5(spec: MsgSpec, lookup: Lookup, md5_of: Callable[[str], str] | None = None) -> str:
+    import hashlib  # noqa: PLC0415 - loads OpenSSL (2 ms), which rosmsg show does not need
+
     return hashlib.md5(md5_text(spec, lookup, md5_of).encode()).hexdigest()
 
 
 def service_md5(spec: SrvSpec, lookup: Lookup, md5_of: Callable[[str], str] | None = None) -> str:
+    import hashlib  # noqa: PLC0415
+
     digest = hashlib.md5(md5_text(spec.request, lookup, md5_of).encode())
     digest.update(md5_text(spec.response, lookup, md5_of).encode())
     return digest.hexdigest()

@@ -9,7 +9,6 @@ splits at the first line starting with ``---``.
 
 from __future__ import annotations
 
-import ast
 import re
 
 from rosx.msg.spec import (
@@ -154,6 +153,8 @@ def _constant_value(type_name: str, text: str) -> bool | int | float | str:
         except ValueError:
             raise InvalidMsgSpecError(f"Invalid constant value: {text}") from None
     if type_name == "bool":
+        import ast  # noqa: PLC0415 - bool constants are rare; ast costs a start-up 2 ms
+
         try:
             return bool(ast.literal_eval(text))
         except (ValueError, SyntaxError):

@@ -8,7 +8,7 @@ parser builds them, the type store holds them, and the codec, md5 and YAML code 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from rosx.record import Record
 
 #: Built-in field types of ROS 1 messages. ``char`` and ``byte`` are the deprecated aliases of
 #: ``uint8`` and ``int8``; they keep their own names in definitions and md5 texts.
@@ -39,18 +39,24 @@ CONSTANT_TYPES = PRIMITIVE_TYPES - {"time", "duration"}
 HEADER_TYPE = "std_msgs/Header"
 
 
-@dataclass(frozen=True)
-class Field:
+class Field(Record):
     """One field: ``base_type`` is a primitive or a full ``pkg/Type`` name.
 
     ``is_array`` marks ``T[]`` and ``T[N]``; ``array_len`` is N for fixed-size arrays and
     None for variable-length ones (and for scalars).
     """
 
+    __match_args__ = ("name", "base_type", "is_array", "array_len")
+    __slots__ = __match_args__
     name: str
     base_type: str
-    is_array: bool = False
-    array_len: int | None = None
+    is_array: bool
+    array_len: int | None
+
+    def __init__(
+        self, name: str, base_type: str, is_array: bool = False, array_len: int | None = None
+    ) -> None:
+        super().__init__(name=name, base_type=base_type, is_array=is_array, array_len=array_len)
 
     @property
     def type(self) -> str:
@@ -64,24 +70,38 @@ class Field:
         return self.base_type in PRIMITIVE_TYPES
 
 
-@dataclass(frozen=True)
-class Constant:
+class Constant(Record):
     """A constant: ``text`` is the value as written (what rosmsg shows and md5 hashes)."""
 
+    __match_args__ = ("type", "name", "value", "text")
+    __slots__ = __match_args__
     type: str
     name: str
     value: bool | int | float | str
     text: str
 
+    def __init__(self, type: str, name: str, value: bool | int | float | str, text: str) -> None:
+        super().__init__(type=type, name=name, value=value, text=text)
 
-@dataclass(frozen=True)
-class MsgSpec:
+
+class MsgSpec(Record):
     """A message type. ``text`` is its definition text (what ``rosmsg show -r`` prints)."""
 
+    __match_args__ = ("full_name", "constants", "fields", "text")
+    __slots__ = __match_args__
     full_name: str
     constants: tuple[Constant, ...]
     fields: tuple[Field, ...]
     text: str
+
+    def __init__(
+        self,
+        full_name: str,
+        constants: tuple[Constant, ...],
+        fields: tuple[Field, ...],
+        text: str,
+    ) -> None:
+        super().__init__(full_name=full_name, constants=constants, fields=fields, text=text)
 
     @property
     def package(self) -> str:
@@ -102,14 +122,18 @@ class MsgSpec:
         )
 
 
-@dataclass(frozen=True)
-class SrvSpec:
+class SrvSpec(Record):
     """A service type: ``request`` and ``response`` are named ``pkg/TypeRequest``/``…Response``."""
 
+    __match_args__ = ("full_name", "request", "response", "text")
+    __slots__ = __match_args__
     full_name: str
     request: MsgSpec
     response: MsgSpec
     text: str
+
+    def __init__(self, full_name: str, request: MsgSpec, response: MsgSpec, text: str) -> None:
+        super().__init__(full_name=full_name, request=request, response=response, text=text)
 
     @property
     def package(self) -> str:

@@ -4,50 +4,129 @@ rosbags keeps field lists, not the original files, so each type's definition tex
 from them (``type name`` lines, constants first as ``type NAME=value``) and then parsed like any
 other ``.msg`` text. Comments of the original files are therefore absent; md5 sums are not
 affected, since ROS 1 hashes neither comments nor layout.
+
+Importing rosbags' store costs a command about 60 ms (hundreds of dataclasses), more than the
+rest of ``rosmsg show`` or of a rospy script's start-up. So the texts, once built, are kept in
+the user's cache folder (``$XDG_CACHE_HOME/rosx``, else ``~/.cache/rosx``) as one
+`marshal` file, tagged with the size and time of rosbags' store module and Python's
+version: another rosbags or Python builds it anew. Nothing else is written; where the folder
+cannot be written, each run reads rosbags as before.
 """
 
 from __future__ import annotations
 
+import contextlib
+import os
 from functools import cache
-from typing import Any
+from pathlib import Path
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 #: rosbags gives empty ROS 1 messages this one field (an IDL rule); ROS 1 has no such field.
 _PLACEHOLDER = "structure_needs_at_least_one_member"
 _TIME_TYPES = {"builtin_interfaces/msg/Time": "time", "builtin_interfaces/msg/Duration": "duration"}
+_CACHE_FILE = "ros1_noetic_types.marshal"
+
+#: rosbags' store module (path, size, modification time) and Python's major and minor version.
+Tag = tuple[str, int, int, int, int]
+
+
+def standard_types() -> dict[str, str]:
+    """The definition text of each standard ``pkg/Type``, by name."""
+    return _texts()
+
+
+def standard_text(full_name: str) -> str | None:
+    """The definition text of standard type ``full_name``, or None when rosbags lacks it."""
+    return _texts().get(full_name)
 
 
 @cache
-def _fielddefs() -> dict[str, Any]:
-    from rosbags.typesys import Stores, get_typestore  # 80 ms: only when needed
+def _texts() -> dict[str, str]:
+    tag = _store_tag()
+    cache_path = _cache_path()
+    if tag is not None and cache_path is not None:
+        texts = _read_cache(cache_path, tag)
+        if texts is not None:
+            return texts
+    texts = _texts_from_rosbags()
+    if tag is not None and cache_path is not None:
+        _write_cache(cache_path, tag, texts)
+    return texts
 
-    defs: dict[str, Any] = get_typestore(Stores.ROS1_NOETIC).fielddefs
-    return defs
+
+def _store_tag() -> Tag | None:
+    """What identifies rosbags' Noetic store and this Python, found without importing rosbags."""
+    import importlib.util  # noqa: PLC0415
+    import sys  # noqa: PLC0415
+
+    spec = importlib.util.find_spec("rosbags")
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    path = Path(spec.submodule_search_locations[0], "typesys", "stores", "ros1_noetic.py")
+    try:
+        stat = path.stat()
+    except OSError:
+        return None
+    return (str(path), stat.st_size, stat.st_mtime_ns, *sys.version_info[:2])
+
+
+def _cache_path() -> Path | None:
+    folder = os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache")  # noqa: PTH111
+    if not Path(folder).is_absolute():
+        return None
+    return Path(folder, "rosx", _CACHE_FILE)
+
+
+def _read_cache(path: Path, tag: Tag) -> dict[str, str] | None:
+    import marshal  # noqa: PLC0415
+
+    try:
+        content = marshal.loads(path.read_bytes())
+    except (OSError, EOFError, ValueError, TypeError):
+        return None
+    if type(content) is tuple and len(content) == 2 and content[0] == tag:
+        texts = content[1]
+        if type(texts) is dict:
+            return texts
+    return None
+
+
+def _write_cache(path: Path, tag: Tag, texts: dict[str, str]) -> None:
+    import marshal  # noqa: PLC0415
+
+    partial = path.with_name(f"{path.name}.{os.getpid()}")
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        partial.write_bytes(marshal.dumps((tag, texts)))
+        partial.replace(path)
+    except OSError:
+        with contextlib.suppress(OSError):
+            partial.unlink()
+
+
+def _texts_from_rosbags() -> dict[str, str]:
+    from rosbags.typesys import Stores, get_typestore  # 60 ms, see above
+
+    fielddefs: dict[str, Any] = get_typestore(Stores.ROS1_NOETIC).fielddefs
+    return {
+        _ros1_name(name): _text(*fielddefs[name])
+        for name in fielddefs
+        if "/msg/" in name and not name.startswith("builtin_interfaces/")
+    }
+
+
+def _text(constants: list[Any], fields: list[Any]) -> str:
+    lines = [f"{type_} {name}={_constant_text(value)}" for name, type_, value in constants]
+    lines += [f"{_type_text(node)} {name}" for name, node in fields if name != _PLACEHOLDER]
+    return "".join(line + "\n" for line in lines)
 
 
 def _ros1_name(name: str) -> str:
     package, _, short = name.partition("/msg/")
     return f"{package}/{short}"
-
-
-@cache
-def standard_types() -> dict[str, str]:
-    """Map each standard ``pkg/Type`` to its rosbags name (``pkg/msg/Type``)."""
-    return {
-        _ros1_name(name): name
-        for name in _fielddefs()
-        if "/msg/" in name and not name.startswith("builtin_interfaces/")
-    }
-
-
-def standard_text(full_name: str) -> str | None:
-    """The definition text of standard type ``full_name``, or None when rosbags lacks it."""
-    source = standard_types().get(full_name)
-    if source is None:
-        return None
-    constants, fields = _fielddefs()[source]
-    lines = [f"{type_} {name}={_constant_text(value)}" for name, type_, value in constants]
-    lines += [f"{_type_text(node)} {name}" for name, node in fields if name != _PLACEHOLDER]
-    return "".join(line + "\n" for line in lines)
 
 
 def _constant_text(value: object) -> str:

@@ -6,7 +6,9 @@ Sources, first match wins per package, as rospack's search order does:
 2. the standard types: rosbags' ROS 1 Noetic messages, the standard packages' services that
    rosbags does not carry (``rosx/msg/interfaces``) and turtlesim's types (``rosx_turtle``).
 
-Nothing is parsed until asked for; listing every type reads directory names, not files.
+Packages are found through the package index (`rosx.packages.index`), the one crawl of the
+package path that ``rospack``, ``rosrun`` and ``roscd`` use too. Nothing is parsed until asked
+for; listing every type reads directory names, not files.
 """
 
 from __future__ import annotations
@@ -17,10 +19,11 @@ from functools import cached_property
 from pathlib import Path
 
 from rosx.msg.md5 import full_text, message_md5, service_md5
-from rosx.msg.packages import bundled_packages, find_packages, split_package_path
 from rosx.msg.parser import InvalidMsgSpecError, is_valid_type_name, parse_msg, parse_srv
 from rosx.msg.spec import MsgSpec, SrvSpec
 from rosx.msg.standard import standard_text, standard_types
+from rosx.packages.crawl import bundled_packages, split_package_path
+from rosx.packages.index import PackageIndex
 
 _INTERFACES = Path(__file__).parent / "interfaces"
 
@@ -39,7 +42,7 @@ class TypeStore:
     """Message and service specs by ``pkg/Type`` name, with their md5 sums and full texts."""
 
     def __init__(self, package_path: list[Path] | None = None) -> None:
-        self._package_path = package_path or []
+        self._index = PackageIndex(package_path or [])
         self._msgs: dict[str, MsgSpec] = {}
         self._srvs: dict[str, SrvSpec] = {}
         self._md5: dict[str, str] = {}
@@ -52,10 +55,10 @@ class TypeStore:
 
     # -- where definitions live -------------------------------------------------------------
 
-    @cached_property
+    @property
     def path_packages(self) -> dict[str, Path]:
         """Packages found on the package path, by name."""
-        return find_packages(self._package_path)
+        return self._index.path_packages
 
     @cached_property
     def _bundled_packages(self) -> dict[str, Path]:
@@ -74,7 +77,7 @@ class TypeStore:
 
     @property
     def package_path(self) -> list[Path]:
-        return list(self._package_path)
+        return list(self._index.package_path)
 
     def has_package(self, package: str) -> bool:
         """True when ``package`` is known, with or without types."""

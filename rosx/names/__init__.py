@@ -13,7 +13,7 @@ This layer uses the standard library only and nothing else of rosx.
 
 from __future__ import annotations
 
-import importlib
+from rosx._lazy import lazy_names
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -79,12 +79,8 @@ _HOMES = {
 }
 
 
-def __getattr__(name: str) -> object:
-    # Loaded on first use, so a tool needing one helper does not import the whole layer.
-    home = _HOMES.get(name)
-    if home is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    return getattr(importlib.import_module(home), name)
+# Loaded on first use, so a tool needing one helper does not import the whole layer.
+__getattr__ = lazy_names(__name__, _HOMES)
 
 
 __all__ = [

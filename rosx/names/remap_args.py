@@ -19,7 +19,8 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping, Sequence
-from typing import NamedTuple
+
+from rosx.record import Record
 
 __all__ = [
     "REMAP",
@@ -46,7 +47,7 @@ def strip_remap_args(argv: Sequence[str]) -> list[str]:
     return [arg for arg in argv if not is_legal_remap(arg)]
 
 
-class RemapArgs(NamedTuple):
+class RemapArgs(Record):
     """What a command line's remapping arguments say.
 
     Attributes:
@@ -58,12 +59,31 @@ class RemapArgs(NamedTuple):
             side (``foo:=``) or more than one ``:=``.
     """
 
-    # A named tuple rather than a dataclass: importing dataclasses costs every tool ~15 ms.
-    remappings: Mapping[str, str] = {}
-    special: Mapping[str, str] = {}
-    params: Mapping[str, str] = {}
-    argv: Sequence[str] = ()
-    ignored: Sequence[str] = ()
+    # A Record rather than a dataclass or a NamedTuple: importing dataclasses (~15 ms) or typing
+    # (~2 ms) would cost every tool's start-up.
+    __match_args__ = ("remappings", "special", "params", "argv", "ignored")
+    __slots__ = __match_args__
+    remappings: Mapping[str, str]
+    special: Mapping[str, str]
+    params: Mapping[str, str]
+    argv: Sequence[str]
+    ignored: Sequence[str]
+
+    def __init__(
+        self,
+        remappings: Mapping[str, str] | None = None,
+        special: Mapping[str, str] | None = None,
+        params: Mapping[str, str] | None = None,
+        argv: Sequence[str] = (),
+        ignored: Sequence[str] = (),
+    ) -> None:
+        super().__init__(
+            remappings={} if remappings is None else remappings,
+            special={} if special is None else special,
+            params={} if params is None else params,
+            argv=argv,
+            ignored=ignored,
+        )
 
     @property
     def name(self) -> str | None:

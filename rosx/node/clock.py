@@ -13,7 +13,7 @@ import threading
 import time
 from typing import TYPE_CHECKING
 
-from rosx.msg.rostime import Duration, Time
+from rosx.msg.codec.rostime import Duration, Time
 from rosx.node.errors import NodeShutdownError
 
 if TYPE_CHECKING:

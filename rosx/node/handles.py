@@ -14,7 +14,7 @@ from rosx.node.publication import serialize_frame
 from rosx.wire.framing import length_prefix
 
 if TYPE_CHECKING:
-    from rosx.msg.message import Message
+    from rosx.msg.codec.message import Message
     from rosx.node.node import Node
     from rosx.node.publication import Publication
     from rosx.node.receiver import Entry

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from rosx.msg.classes import get_message_class, get_service_class
+from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import rosout
 from rosx.node.clock import now
 

@@ -1,9 +1,9 @@
 """`Node`: a ROS 1 node with a synchronous facade, any number of them in one process.
 
-A node owns a Slave API server (XML-RPC) and a TCPROS server, both on the process's I/O loop
-(`rosx.node.loop`), and registers its publications, subscriptions and services with the master
-(ROS wiki ROS/Master_API, ROS/Slave_API). Like a rospy node it publishes its log on
-``/rosout`` and serves ``~get_loggers`` and ``~set_logger_level``.
+A node owns a Slave API server (XML-RPC) and a TCPROS server, both on the process's event loop
+(`rosx.transport.loop_thread.process_loop`), and registers its publications, subscriptions and
+services with the master (ROS wiki ROS/Master_API, ROS/Slave_API). Like a rospy node it
+publishes its log on ``/rosout`` and serves ``~get_loggers`` and ``~set_logger_level``.
 
 Every public method may be called from any thread except the I/O loop's (user callbacks never
 run there). Calls to the master are made on the caller's thread with the blocking XML-RPC
@@ -18,26 +18,27 @@ import os
 import sys
 import threading
 from concurrent.futures import ThreadPoolExecutor
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
+from rosx.master.client import MasterClient, reply_value
+from rosx.master.client import master_uri as find_master_uri
 from rosx.names import make_global_ns, ns_join, resolve, resolve_remappings
 from rosx.node import rosout
 from rosx.node.errors import NodeShutdownError, ServiceError
 from rosx.node.handles import Publisher, ServiceHandle, Subscriber
 from rosx.node.log_services import RosoutPublisher, advertise_logger_services
-from rosx.node.loop import io_loop
-from rosx.node.master_proxy import MasterProxy, call_async
 from rosx.node.params import ParamCache, ParamClient
 from rosx.node.publication import Publication
 from rosx.node.service import ServiceServer
 from rosx.node.service_client import ServiceClient, probe_service
 from rosx.node.slave_api import SlaveApi
 from rosx.node.startup import set_private_params
-from rosx.node.subscription import Subscription
+from rosx.node.subscription import RawMessage, Subscription
 from rosx.node.tcpros_server import TcprosServer
 from rosx.transport.aclient import AsyncXmlRpcClient
 from rosx.transport.address import advertised_host, bind_host
 from rosx.transport.client import XmlRpcClient
+from rosx.transport.loop_thread import process_loop
 from rosx.transport.server import XmlRpcServer
 from rosx.wire.header import Refused
 from rosx.wire.rosrpc import accept_client, format_rosrpc_uri
@@ -48,11 +49,19 @@ if TYPE_CHECKING:
     import socket
     from collections.abc import Callable, Mapping
 
-    from rosx.msg.message import Message, ServiceDefinition
-    from rosx.node.loop import IoLoop
+    from rosx.msg.codec.message import Message, ServiceDefinition
+    from rosx.transport.loop_thread import LoopThread
     from rosx.wire.framing import FrameReader
 
-DEFAULT_MASTER_URI = "http://localhost:11311/"
+#: A node's worker threads: they run its service handlers and hand a latched message to a
+#: callback added after the message came. They start only when calls overlap and are shared by
+#: all the node's services. The bound is how many calls the node serves at once; more wait in
+#: line. One is too few: as in rospy (a thread per call) a handler may block, on I/O, a sleep or
+#: a call to another service of the same node, which would then wait for itself. Many are
+#: useless: Python handlers hold the GIL, so past a few threads only waiting handlers gain, and
+#: a process hosting many nodes (``rosx sim``, the tests) would keep each node's idle threads.
+#: 8 serves a few slow callers and a nested call or two at once; a ninth call waits its turn.
+WORKERS = 8
 _UNREGISTER_TIMEOUT = 2.0
 #: How long a second `Node.shutdown` caller waits for the first to finish.
 _FINISH_TIMEOUT = 15.0
@@ -75,24 +84,24 @@ class Node:
         rosout_enabled: bool = True,
         log_level: int = rosout.INFO,
         console: Callable[[int, str], None] | None = None,
-        io: IoLoop | None = None,
+        io: LoopThread | None = None,
         private_params: Mapping[str, str] | None = None,
     ) -> None:
         env = os.environ if environ is None else environ
         self.environ = env
         self.namespace = make_global_ns(namespace or env.get("ROS_NAMESPACE") or "/")
         self.name = name if name.startswith("/") else ns_join(self.namespace, name)
-        self.master_uri = master_uri or env.get("ROS_MASTER_URI") or DEFAULT_MASTER_URI
+        self.master_uri = find_master_uri(env, master_uri)
         self.remappings = resolve_remappings(
             remappings or {}, self.namespace, self.name, strict=False
         )
         self.host = advertised_host(env, host)
         self._bind = bind_host(env, host)
         self._ports = (xmlrpc_port, tcpros_port)
-        self.io = io or io_loop()
+        self.io = io or process_loop()
         self.uri = ""
         self.client = XmlRpcClient()
-        self.master = MasterProxy(self.master_uri, self.name, self.client)
+        self.master = MasterClient(self.master_uri, self.name, self.client)
         self.param_cache = ParamCache()
         self.params = ParamClient(self.master, self.resolve, lambda: self.uri, self.param_cache)
         self.publications: dict[str, Publication] = {}
@@ -107,7 +116,7 @@ class Node:
         self._aclient: AsyncXmlRpcClient | None = None
         self._xmlrpc: XmlRpcServer | None = None
         self._tcpros = TcprosServer(self.io, self._on_connection)
-        self._executor = ThreadPoolExecutor(32, thread_name_prefix=f"rosx-srv{self.name}")
+        self._workers = ThreadPoolExecutor(WORKERS, thread_name_prefix=f"rosx-worker{self.name}")
         self._rosout_enabled = rosout_enabled
         self.log_sink = rosout.NodeLog(self.name, level=log_level, console=console, environ=env)
         self.shutdown_reason = ""
@@ -121,7 +130,7 @@ class Node:
         services; returns self.
 
         Raises:
-            TransportError: the master cannot be reached.
+            MasterUnreachable: the master cannot be reached.
             MasterError: the master refused a registration.
             ParamArgsError: a private parameter's value cannot be set.
         """
@@ -206,7 +215,7 @@ class Node:
                 self.io.spawn(self._close_all())
             else:
                 self.io.run(self._close_all(), timeout=10.0)
-            self._executor.shutdown(wait=False, cancel_futures=True)
+            self._workers.shutdown(wait=False, cancel_futures=True)
             self.client.close()
         finally:
             self._closed.set()
@@ -275,31 +284,56 @@ class Node:
         ``queue_size``: per subscriber, drop-oldest; ``0`` unbounded; ``None`` blocks the
         publishing thread while a subscriber is far behind, as rospy's synchronous publishing.
         """
+        info = PublicationInfo(
+            self.resolve(topic), data_class._type, data_class._md5sum, data_class._full_text, latch
+        )
+        publication = self._publication(info, queue_size, data_class._has_header)
+        return Publisher(self, publication, data_class)
+
+    def advertise_raw(
+        self,
+        topic: str,
+        msg_type: str,
+        md5sum: str,
+        message_definition: str,
+        *,
+        queue_size: int | None = None,
+        latch: bool = False,
+    ) -> Publisher:
+        """Publish ``topic`` with messages already serialized (`Publisher.publish_serialized`),
+        announced with the given type, md5sum and definition (what ``rosbag play`` replays)."""
+        info = PublicationInfo(self.resolve(topic), msg_type, md5sum, message_definition, latch)
+        raw = cast("type[Message]", RawMessage)  # publishes RawMessage objects as they are
+        return Publisher(self, self._publication(info, queue_size, False), raw)
+
+    def _publication(
+        self, info: PublicationInfo, queue_size: int | None, has_header: bool
+    ) -> Publication:
         self._check_alive()
-        name = self.resolve(topic)
+        name = info.topic
         with self._lock:
             publication = self.publications.get(name)
             new = publication is None
             if publication is None:
-                info = PublicationInfo(
-                    name, data_class._type, data_class._md5sum, data_class._full_text, latch
-                )
                 publication = Publication(
-                    self.io, info, queue_size=queue_size, has_header=data_class._has_header
+                    self.io,
+                    PublicationInfo(name, info.type, info.md5sum, info.message_definition, False),
+                    queue_size=queue_size,
+                    has_header=has_header,
                 )
                 self.publications[name] = publication
-            elif publication.info.type != data_class._type:
+            elif publication.info.type != info.type:
                 raise ValueError(
                     f"topic [{name}] is already published with type [{publication.info.type}], "
-                    f"not [{data_class._type}]"
+                    f"not [{info.type}]"
                 )
-            publication.set_latching(latch)
+            publication.set_latching(info.latching)
             self._pub_handles[name] = self._pub_handles.get(name, 0) + 1
         if new:
-            self.master.call("registerPublisher", name, data_class._type, self.uri)
+            self.master.call("registerPublisher", name, info.type, self.uri)
             if self._shutdown.is_set():  # shut down meanwhile: do not leave it registered
                 self._call_quietly("unregisterPublisher", name, self.uri)
-        return Publisher(self, publication, data_class)
+        return publication
 
     def _release_publication(self, publication: Publication) -> None:
         name = publication.topic
@@ -344,6 +378,7 @@ class Node:
                     topic=name,
                     msg_class=data_class,
                     caller_id=self.name,
+                    workers=self._workers,
                     xmlrpc=self._call_peer,
                     queue_size=queue_size,
                     tcp_nodelay=tcp_nodelay,
@@ -373,7 +408,7 @@ class Node:
 
     async def _call_peer(self, uri: str, method: str, *params: object) -> Any:
         assert self._aclient is not None
-        return await call_async(self._aclient, uri, method, *params)
+        return reply_value(await self._aclient.call(uri, method, *params))
 
     def _release_subscriber(self, handle: Subscriber) -> None:
         subscription = handle.subscription
@@ -412,7 +447,7 @@ class Node:
                 name=resolved,
                 service_class=service_class,
                 handler=handler,
-                executor=self._executor,
+                executor=self._workers,
                 on_error=self._log_error,
             )
             server.uri = format_rosrpc_uri(self.host, self._tcpros.port)

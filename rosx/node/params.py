@@ -12,12 +12,12 @@ import contextlib
 import threading
 from typing import TYPE_CHECKING, Any
 
-from rosx.node.errors import MasterError
+from rosx.master.client import MasterError
 
 if TYPE_CHECKING:
     from collections.abc import Callable
 
-    from rosx.node.master_proxy import MasterProxy
+    from rosx.master.client import MasterClient
 
 _UNSET: Any = object()
 
@@ -98,7 +98,7 @@ class ParamClient:
 
     def __init__(
         self,
-        master: MasterProxy,
+        master: MasterClient,
         resolve: Callable[[str], str],
         node_uri: Callable[[], str],
         cache: ParamCache,

@@ -17,7 +17,7 @@ from __future__ import annotations
 import asyncio
 from typing import TYPE_CHECKING, Any
 
-from rosx.msg.message import Message
+from rosx.msg.codec.message import Message
 from rosx.node.errors import ServiceError
 from rosx.wire.framing import DEFAULT_MAX_FRAME_SIZE
 from rosx.wire.header import encode_header
@@ -28,8 +28,8 @@ if TYPE_CHECKING:
     from collections.abc import Callable
     from concurrent.futures import Executor
 
-    from rosx.msg.message import ServiceDefinition
-    from rosx.node.loop import IoLoop
+    from rosx.msg.codec.message import ServiceDefinition
+    from rosx.transport.loop_thread import LoopThread
     from rosx.wire.framing import FrameReader
     from rosx.wire.rosrpc import ServiceClientAccepted
 
@@ -66,7 +66,7 @@ class ServiceServer:
     def __init__(
         self,
         *,
-        io: IoLoop,
+        io: LoopThread,
         name: str,
         service_class: type[ServiceDefinition],
         handler: Callable[[Any], object],

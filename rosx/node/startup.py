@@ -3,7 +3,7 @@
 ROS 1 (rospy's ``init_node``) sets each ``_name:=value`` argument as the node's private
 parameter ``~name`` before the node's own code starts:
 
-* the value is YAML, read as PyYAML's ``safe_load`` reads it (`rosx.msg.yamlload`): ``1`` is an
+* the value is YAML, read as PyYAML's ``safe_load`` reads it (`rosx.msg.text.yamlload`): ``1`` is an
   int, ``1.0`` a float, ``true`` a bool, ``'1'`` and ``hello`` strings, ``[1, 2]`` a list,
   ``{a: 1}`` a dict (which replaces the namespace ``~name``);
 * ``~name`` resolves against the node's name, after ``__name:=``/``__ns:=``, and then through
@@ -25,7 +25,7 @@ from rosx.node.errors import NodeError
 if TYPE_CHECKING:
     from collections.abc import Mapping
 
-    from rosx.node.master_proxy import MasterProxy
+    from rosx.master.client import MasterClient
 
 
 class ParamArgsError(NodeError, ValueError):
@@ -38,8 +38,8 @@ def load_private_params(raw: Mapping[str, str]) -> dict[str, Any]:
     Raises:
         ParamArgsError: a value is not YAML, or not something the Parameter Server stores.
     """
-    from rosx.msg.yamlload import YAMLLoadError, load  # noqa: PLC0415 - ruamel loads lazily
-    from rosx.msg.yamlparams import ParamValueError, check_value  # noqa: PLC0415
+    from rosx.msg.text.yamlload import YAMLLoadError, load  # noqa: PLC0415 - ruamel loads lazily
+    from rosx.msg.text.yamlparams import ParamValueError, check_value  # noqa: PLC0415
 
     values: dict[str, Any] = {}
     for name, text in raw.items():
@@ -67,7 +67,7 @@ def private_param_keys(
 
 
 def set_private_params(
-    master: MasterProxy,
+    master: MasterClient,
     args: RemapArgs | Mapping[str, str],
     *,
     node_name: str,
@@ -85,7 +85,7 @@ def set_private_params(
 
     Raises:
         ParamArgsError: a value cannot be set (nothing is set then).
-        MasterError, TransportError: the master refused or cannot be reached.
+        MasterError, MasterUnreachable: the master refused or cannot be reached.
     """
     raw = args.params if isinstance(args, RemapArgs) else args
     keyed = private_param_keys(

@@ -26,10 +26,11 @@ from rosx.wire.tcpros import WILDCARD, subscriber_header
 
 if TYPE_CHECKING:
     from collections.abc import Awaitable, Callable
+    from concurrent.futures import Executor
 
-    from rosx.msg.message import Message
-    from rosx.node.loop import IoLoop
+    from rosx.msg.codec.message import Message
     from rosx.node.receiver import Decode, Entry
+    from rosx.transport.loop_thread import LoopThread
 
 
 class RawMessage:
@@ -77,7 +78,7 @@ def _raw(frame: bytes, header: dict[str, str]) -> RawMessage:
 
 def message_decoder(cls: type[Message]) -> Callable[[bytes, dict[str, str]], Message]:
     """Decode frames of ``cls``: a fresh instance per frame, ``_connection_header`` set."""
-    from rosx.msg.codegen import variant  # noqa: PLC0415 - generated on first use
+    from rosx.msg.codec.codegen import variant  # noqa: PLC0415 - generated on first use
 
     fresh = variant(cls, "deserialize_fresh")
     new = object.__new__
@@ -96,10 +97,11 @@ class Subscription:
     def __init__(
         self,
         *,
-        io: IoLoop,
+        io: LoopThread,
         topic: str,
         msg_class: type[Message] | None,
         caller_id: str,
+        workers: Executor,
         xmlrpc: Callable[..., Awaitable[Any]],
         queue_size: int | None = None,
         tcp_nodelay: bool = False,
@@ -123,7 +125,11 @@ class Subscription:
         )
         self.streams: dict[str, IncomingStream] = {}
         self.receiver = Receiver(
-            io, queue_size=queue_size, name=f"rosx-sub{topic}", on_error=self._callback_failed
+            io,
+            workers,
+            queue_size=queue_size,
+            name=f"rosx-sub{topic}",
+            on_error=self._callback_failed,
         )
         self.updates = 0
         self.closed = False

@@ -124,7 +124,12 @@ class XmlRpcClient:
 
     def _connect(self, uri: str, key: Key, deadline: float) -> socket.socket:
         try:
-            sock = socket.create_connection(key, timeout=_remaining(uri, deadline))
+            host, port = key
+            # create_connection hands the host to getaddrinfo, which takes bytes as well (typeshed
+            # says str only): a str host is encoded with the idna codec, whose first use imports
+            # unicodedata and stringprep, 3 ms of a one-shot tool's start-up; ASCII needs none.
+            address = (host.encode("ascii") if host.isascii() else host, port)
+            sock = socket.create_connection(address, timeout=_remaining(uri, deadline))  # type: ignore[arg-type]
         except TimeoutError:
             raise CallTimeoutError(uri, f"timed out connecting to {uri}") from None
         except OSError as exc:

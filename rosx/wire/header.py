@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import struct
 
-from rosx.wire._record import Record
+from rosx.record import Record
 from rosx.wire.errors import ProtocolError
 
 TYPE_CHECKING = False

@@ -8,7 +8,7 @@ is wrong (bad arguments, unknown name), `FAILURE` (0) when the call was valid bu
 
 from __future__ import annotations
 
-from rosx.wire._record import Record
+from rosx.record import Record
 from rosx.wire.errors import ProtocolError
 
 TYPE_CHECKING = False

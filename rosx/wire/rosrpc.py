@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import struct
 
-from rosx.wire._record import Record
+from rosx.record import Record
 from rosx.wire.errors import OversizedError, ProtocolError
 from rosx.wire.framing import DEFAULT_MAX_FRAME_SIZE, DEFAULT_MAX_HEADER_SIZE
 from rosx.wire.header import Refused, decode_header

@@ -18,7 +18,7 @@ match ROS 1's.
 
 from __future__ import annotations
 
-from rosx.wire._record import Record
+from rosx.record import Record
 from rosx.wire.header import Refused
 
 TYPE_CHECKING = False

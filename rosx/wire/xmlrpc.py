@@ -24,7 +24,7 @@ from __future__ import annotations
 import binascii
 from xml.parsers import expat
 
-from rosx.wire._record import Record
+from rosx.record import Record
 from rosx.wire.errors import ProtocolError
 
 TYPE_CHECKING = False

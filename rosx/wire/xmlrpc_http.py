@@ -17,7 +17,7 @@ exact text ``Content-length: `` (case-insensitively) and keeps a connection open
 
 from __future__ import annotations
 
-from rosx.wire._record import Record
+from rosx.record import Record
 from rosx.wire.errors import HttpError, ProtocolError
 
 #: Largest head (start line and headers) accepted, in bytes.

@@ -21,8 +21,8 @@ import os
 from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
+from rosx.packages.manifest import Manifest, ManifestError, check_manifest, read_manifest
 from rosx.workspace.errors import BuildError
-from rosx.workspace.manifest import Manifest, ManifestError, check_manifest, read_manifest
 from rosx.workspace.shell import setup_for_shell, setup_sh
 
 if TYPE_CHECKING:

@@ -23,7 +23,7 @@ import string
 from pathlib import Path
 from typing import NamedTuple
 
-from rosx.workspace.manifest import Manifest, Person
+from rosx.packages.manifest import Manifest, Person
 
 _TEMPLATES = Path(__file__).parent / "templates"
 

@@ -12,7 +12,7 @@ import os
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from rosx.workspace.index import PackageIndex, PackageNotFoundError
+from rosx.packages.index import PackageIndex, PackageNotFoundError
 
 if TYPE_CHECKING:
     from collections.abc import Mapping

@@ -14,14 +14,14 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
-from rosx.msg.classes import get_message_class, get_service_class
+from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.msg.parser import InvalidMsgSpecError, is_valid_type_name
 from rosx.msg.spec import HEADER_TYPE, PRIMITIVE_TYPES
 from rosx.msg.store import TypeStore, UnknownTypeError
 from rosx.workspace.errors import BuildError
 
 if TYPE_CHECKING:
-    from rosx.workspace.manifest import Manifest
+    from rosx.packages.manifest import Manifest
 
 _KIND_NAMES = {"msg": "message", "srv": "service"}
 

@@ -11,7 +11,7 @@ from typing import Any
 import pytest
 
 from rosx.master.server import MasterThread
-from rosx.msg.classes import get_service_class
+from rosx.msg.codec.classes import get_service_class
 from rosx.node import Node, ServiceError
 from tests.support.cli import Result, clean_environ, rosx
 from tests.support.procs import free_port

@@ -14,7 +14,7 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx.transport.client import XmlRpcClient
 from tests.support.cli import Result, clean_environ, rosx
@@ -496,9 +496,9 @@ def test_usage_errors(env: dict[str, str], argv: list[str], err: str) -> None:
     assert (result.status, result.out, result.err) == (2, "", err)
 
 
-def test_echo_from_a_bag_is_not_supported(env: dict[str, str]) -> None:
+def test_echo_from_a_missing_bag_says_so(env: dict[str, str]) -> None:
     result = rosx("rostopic", "echo", "-b", "x.bag", "/x", environ=env)
-    assert (result.status, result.err) == (1, "ERROR: rosx does not read .bag files\n")
+    assert (result.status, result.err) == (1, "ERROR: bag file [x.bag] does not exist\n")
 
 
 def test_ctrl_c_exits_quietly_and_unregisters(master: str) -> None:
@@ -525,3 +525,18 @@ def test_ctrl_c_exits_quietly_and_unregisters(master: str) -> None:
         "WARNING: topic [/c/never] does not appear to be published yet\n",
     )
     assert not tool_nodes(master)
+
+
+def test_pub_once_waits_its_time_when_the_master_goes_away() -> None:
+    """``rostopic pub -1`` asks the master who subscribes; a master gone meanwhile is no error
+    (it waits its full time, as with no subscriber listed)."""
+    from types import SimpleNamespace
+
+    from rosx_commands.context import Environment
+    from rosx_commands.rostopic.publishing import Publishing
+    from rosx_commands.rostopic.session import Session
+
+    env = Environment(environ=clean_environ(ROS_MASTER_URI=f"http://127.0.0.1:{free_port()}"))
+    publisher: Any = SimpleNamespace(data_class=None)
+    publishing = Publishing(env, Session(env), publisher)
+    assert publishing._known_subscribers() is None

@@ -66,7 +66,7 @@ import std_msgs.msg
 from std_srvs.srv import Empty, EmptyRequest, EmptyResponse
 from turtlesim.msg import Pose
 import geometry_msgs.msg._Vector3 as vector_module
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 print(json.dumps({
     "rospy": rospy.__file__,
     "same_class": Twist is get_message_class("geometry_msgs/Twist"),

@@ -9,7 +9,7 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class, get_service_class
+from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node
 from tests.support.procs import wait_for
 

@@ -10,7 +10,7 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from tests.support.procs import wait_for
 

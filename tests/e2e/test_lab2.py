@@ -20,7 +20,7 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class, get_service_class
+from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node
 from tests.e2e.lab2_scripts import PUB, STOP_AT_TEN
 from tests.support.cli import clean_environ

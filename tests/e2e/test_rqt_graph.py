@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from tests.support.cli import clean_environ
 from tests.support.procs import free_port, port_open, running, wait_for

@@ -30,7 +30,7 @@ def robot(depth: int, mode: Mode = Mode.ALL) -> Drawing:
 
 def inside(outer: object, inner: object) -> bool:
     o, i = outer, inner
-    return (
+    return bool(
         o.x < i.x  # type: ignore[attr-defined]
         and o.y < i.y  # type: ignore[attr-defined]
         and i.x + i.width < o.x + o.width  # type: ignore[attr-defined]

@@ -15,9 +15,9 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from ros1_procs import ROS1_PYTHON, ros1_available, ros_env, rosmaster, run_tool, stop
 
 from rosx.master.server import MasterThread
+from tests.interop.ros1_procs import ROS1_PYTHON, ros1_available, ros_env, rosmaster, run_tool, stop
 
 pytestmark = pytest.mark.skipif(not ros1_available(), reason="ROS 1 (roscore, rospy) is absent")
 

@@ -7,9 +7,9 @@ from typing import Any
 
 import pytest
 
+from rosx.master.client import MasterClient
 from rosx.names import parse_remap_args
 from rosx.node import Node
-from rosx.node.master_proxy import MasterProxy
 from rosx.node.startup import (
     ParamArgsError,
     load_private_params,
@@ -72,7 +72,7 @@ def test_names_resolve_privately_after_name_namespace_and_remapping() -> None:
     ],
 )
 def test_bad_values_stop_before_anything_is_set(master: str, arg: str, error: str) -> None:
-    proxy = MasterProxy(master, "/bad", XmlRpcClient(timeout=5.0))
+    proxy = MasterClient(master, "/bad", XmlRpcClient(timeout=5.0))
     with pytest.raises(ParamArgsError) as refused:
         set_private_params(proxy, parse_remap_args(["_ok:=1", arg]), node_name="/bad")
     assert str(refused.value).startswith(error)
@@ -82,7 +82,7 @@ def test_bad_values_stop_before_anything_is_set(master: str, arg: str, error: st
 
 
 def test_set_private_params_on_the_master(master: str) -> None:
-    proxy = MasterProxy(master, "/setter", XmlRpcClient(timeout=5.0))
+    proxy = MasterClient(master, "/setter", XmlRpcClient(timeout=5.0))
     args = parse_remap_args(["prog", "_speed:=2.5", "_name:=bob", "chatter:=/c", "__ns:=/x"])
     keyed = set_private_params(proxy, args, node_name="driver", namespace="/x")
     proxy.client.close()

@@ -17,7 +17,7 @@ import socket
 import threading
 from typing import Any
 
-from rosx.msg.classes import get_service_class
+from rosx.msg.codec.classes import get_service_class
 from rosx.transport.client import XmlRpcClient
 from rosx.wire.framing import FrameReader
 from rosx.wire.header import decode_header, encode_header

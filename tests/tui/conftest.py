@@ -13,12 +13,13 @@ from typing import Any, TypeVar
 
 import pytest
 
+from rosx.graph.state import GraphState
 from rosx.node import WARN, Node
 from rosx_turtle.engine import Simulation, wall_warning
 from rosx_turtle.engine.constants import DEFAULT_BACKGROUND, TICK_PERIOD
 from rosx_turtle.sim.host import SimHost
 from rosx_turtle.tui.feed import Feed
-from rosx_turtle.tui.graph import Graph, Topic
+from rosx_turtle.tui.graph import Graph
 from rosx_turtle.tui.log import LogRecord
 from rosx_turtle.view.adapt import SceneMaker
 from rosx_turtle.view.scene import Scene
@@ -73,15 +74,24 @@ def scripted_pond() -> Pond:
     return pond
 
 
-LAB1_GRAPH = Graph(
-    topics=(
-        Topic("/rosout", "rosgraph_msgs/Log", ("/teleop_turtle", "/turtlesim"), ("/rosout",)),
-        Topic("/rosout_agg", "rosgraph_msgs/Log", ("/rosout",), ()),
-        Topic("/turtle1/cmd_vel", "geometry_msgs/Twist", ("/teleop_turtle",), ("/turtlesim",)),
-        Topic("/turtle1/color_sensor", "turtlesim/Color", ("/turtlesim",), ()),
-        Topic("/turtle1/pose", "turtlesim/Pose", ("/turtlesim",), ()),
-    ),
-    nodes=("/rosout", "/teleop_turtle", "/turtlesim"),
+LAB1_GRAPH = Graph.of(
+    GraphState(
+        publishers={
+            "/rosout": ("/turtlesim", "/teleop_turtle"),
+            "/rosout_agg": ("/rosout",),
+            "/turtle1/cmd_vel": ("/teleop_turtle",),
+            "/turtle1/color_sensor": ("/turtlesim",),
+            "/turtle1/pose": ("/turtlesim",),
+        },
+        subscribers={"/rosout": ("/rosout",), "/turtle1/cmd_vel": ("/turtlesim",)},
+        topic_types={
+            "/rosout": "rosgraph_msgs/Log",
+            "/rosout_agg": "rosgraph_msgs/Log",
+            "/turtle1/cmd_vel": "geometry_msgs/Twist",
+            "/turtle1/color_sensor": "turtlesim/Color",
+            "/turtle1/pose": "turtlesim/Pose",
+        },
+    )
 )
 
 

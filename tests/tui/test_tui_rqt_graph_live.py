@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import threading
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from tests.tui.conftest import run
 from tests.tui.graph_pilot import talker_chatter_listener

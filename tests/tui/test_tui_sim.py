@@ -14,7 +14,7 @@ from typing import Any
 from textual.message import Message
 from textual.pilot import Pilot
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx_turtle.sim.host import SimHost
 from rosx_turtle.tui.factory import make_sim_app

@@ -16,7 +16,7 @@ from collections.abc import Iterator
 import pytest
 
 from rosx.master.server import MasterThread
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx.transport.client import XmlRpcClient
 from rosx_turtle.node import TurtlesimNode

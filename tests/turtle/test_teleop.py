@@ -19,7 +19,7 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx_turtle.teleop import HELP, run_teleop
 from tests.support.procs import stop, wait_for

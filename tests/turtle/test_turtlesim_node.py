@@ -12,7 +12,7 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class, get_service_class
+from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node, ServiceError
 from rosx_turtle.engine import CENTRE
 from rosx_turtle.node import run_turtlesim

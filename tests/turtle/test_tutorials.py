@@ -9,7 +9,7 @@ from typing import Any
 
 import pytest
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx_turtle.console import Console
 from rosx_turtle.engine import CENTRE

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import pytest
-from wirefeed import CHUNKINGS, pieces
 
 from rosx.wire.errors import OversizedError, ProtocolError
 from rosx.wire.header import Refused, encode_header
@@ -23,6 +22,7 @@ from rosx.wire.rosrpc import (
     parse_rosrpc_uri,
     server_header,
 )
+from tests.wire.wirefeed import CHUNKINGS, pieces
 
 ADD_MD5 = "6a2e34150c00229791cc89ff309fff21"
 ADD = ServiceInfo(

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import pytest
-from wirefeed import CHUNKINGS, pieces
 
 from rosx.wire.framing import FrameReader, frame
 from rosx.wire.header import Refused, decode_header, encode_header
@@ -18,6 +17,7 @@ from rosx.wire.tcpros import (
     publisher_header,
     subscriber_header,
 )
+from tests.wire.wirefeed import CHUNKINGS, pieces
 
 STRING_MD5 = "992ce8a1687cec8c8bd883ec73ca41d1"
 CHATTER = Publication("/chatter", "std_msgs/String", STRING_MD5, "string data\n", latching=True)

@@ -7,7 +7,6 @@ import io
 import xmlrpc.client
 
 import pytest
-from wirefeed import CHUNKINGS, pieces
 
 from rosx.wire.errors import HttpError, ProtocolError
 from rosx.wire.xmlrpc import MethodCall, decode_call, encode_call
@@ -21,6 +20,7 @@ from rosx.wire.xmlrpc_http import (
     build_response,
     parse_http_uri,
 )
+from tests.wire.wirefeed import CHUNKINGS, pieces
 
 BODY = b"<methodCall><methodName>getPid</methodName></methodCall>"
 

@@ -15,8 +15,8 @@ import threading
 from typing import TYPE_CHECKING, Protocol, TypeVar
 from urllib.parse import urlsplit
 
+from rosx.master.client import MasterClient, MasterError, master_uri
 from rosx.node import ERROR, INFO
-from rosx.transport.client import XmlRpcClient
 from rosx.transport.errors import TransportError
 
 if TYPE_CHECKING:
@@ -24,7 +24,6 @@ if TYPE_CHECKING:
 
     from rosx_turtle.console import Console
 
-DEFAULT_MASTER_URI = "http://localhost:11311/"
 _RETRY_PERIOD = 0.5
 
 
@@ -44,17 +43,21 @@ T = TypeVar("T", bound=Running)
 def master_address(override: str | None, environ: Mapping[str, str]) -> str:
     """``host:port`` of the master (``__master:=``, else ``ROS_MASTER_URI``, else the default),
     as roscpp names it in its messages."""
-    uri = override or environ.get("ROS_MASTER_URI") or DEFAULT_MASTER_URI
+    uri = master_uri(environ, override)
     return urlsplit(uri).netloc or uri
 
 
 def master_is_up(address: str) -> bool:
     """Whether the master at ``address`` (``host:port``) answers a call."""
+    master = MasterClient(f"http://{address}/", "/rosx_turtle", timeout=_RETRY_PERIOD * 4)
     try:
-        with XmlRpcClient(timeout=_RETRY_PERIOD * 4) as client:
-            client.call(f"http://{address}/", "getPid", "/rosx_turtle")
+        master.call("getPid")
+    except MasterError:
+        pass  # it answered
     except TransportError:
         return False
+    finally:
+        master.close()
     return True
 
 

@@ -28,7 +28,7 @@ from rosx.wire.rosrpc import encode_error, encode_response
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping, Sequence
 
-    from rosx.msg.message import ServiceDefinition
+    from rosx.msg.codec.message import ServiceDefinition
     from rosx.node import ServiceHandle
 
 _INT32 = re.compile(r"[+-]?[0-9]+")

@@ -22,7 +22,7 @@ import signal
 import threading
 from typing import TYPE_CHECKING, Any
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.keyboard import RawKeys

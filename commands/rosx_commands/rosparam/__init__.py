@@ -1,10 +1,10 @@
 """``rosx rosparam``: set, get, load, dump, delete, list, as ROS 1's rosparam."""
 
-from collections.abc import Callable, Sequence
+import importlib
+from collections.abc import Sequence
 
 from rosx_commands.cli import commands_overview, run_command
 from rosx_commands.context import Environment, ExitStatus
-from rosx_commands.rosparam import reading, writing
 
 COMMANDS = [
     ("set", "set parameter"),
@@ -14,6 +14,16 @@ COMMANDS = [
     ("delete", "delete parameter"),
     ("list", "list parameter names"),
 ]
+
+#: Sub-command → (module of this package, function).
+_HANDLERS = {
+    "set": ("writing", "set_param"),
+    "get": ("reading", "get"),
+    "load": ("writing", "load"),
+    "dump": ("reading", "dump"),
+    "delete": ("writing", "delete"),
+    "list": ("reading", "list_params"),
+}
 
 
 def overview() -> str:
@@ -29,15 +39,10 @@ def overview() -> str:
 def rosparam(argv: Sequence[str], env: Environment) -> int:
     """Run ``rosparam ARGV…`` (rosparam, unlike the other tools, keeps ``a:=b`` words)."""
     args = list(argv)
-    handlers: dict[str, Callable[[list[str], Environment], int]] = {
-        "set": writing.set_param,
-        "get": reading.get,
-        "load": writing.load,
-        "dump": reading.dump,
-        "delete": writing.delete,
-        "list": reading.list_params,
-    }
-    if not args or args[0] not in handlers:
+    if not args or args[0] not in _HANDLERS:
         env.out(overview())
         return ExitStatus.OK
-    return run_command(handlers[args[0]], args[1:], env)
+    # Only the sub-command's module is imported: reading needs no YAML loader, writing no dumper.
+    module, function = _HANDLERS[args[0]]
+    handler = getattr(importlib.import_module(f"rosx_commands.rosparam.{module}"), function)
+    return run_command(handler, args[1:], env)

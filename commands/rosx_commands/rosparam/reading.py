@@ -8,14 +8,15 @@ of a namespace to a file or stdout.
 
 from __future__ import annotations
 
-from pathlib import Path
-from typing import Any
-
-from rosx.msg.yamlparams import dump_value
+from rosx.msg.text.yamlparams import dump_value
 from rosx.names.resolution import make_global_ns
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.rosparam.server import ParamServer
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 _DOCUMENT_END = "\n...\n"
 
@@ -96,6 +97,8 @@ def dump(argv: list[str], env: Environment) -> int:
     if not filename:
         env.stdout.write(text)
         return ExitStatus.OK
+    from pathlib import Path  # noqa: PLC0415 - only dump writes a file
+
     try:
         Path(filename).write_text(text, encoding="utf-8")
     except OSError as error:

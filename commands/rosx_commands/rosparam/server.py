@@ -3,19 +3,22 @@
 Setting a dictionary *updates* a namespace: each leaf is set on its own (``rosparam set /a
 '{b: 1}'`` leaves ``/a/c`` alone, and an empty dictionary sets nothing), as rosparam does.
 Values are checked before the first one is sent, so a value the server cannot hold changes
-nothing.
+nothing. The master's refusals (`rosx.master.client.MasterError`) are printed as ROS 1 prints
+them, ``ERROR: <its status message>``, by the CLI's error mapping.
 """
 
 from __future__ import annotations
 
 import os
-from typing import Any
 
-from rosx.msg.yamlparams import ParamValueError, check_value
+from rosx.msg.text.yamlparams import ParamValueError, check_value
 from rosx.names.resolution import ns_join
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.context import CommandError, Environment
-from rosx_commands.master import Master, MasterError
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 NAME = "rosparam"
 
@@ -27,34 +30,25 @@ class ParamServer:
         self.env = env
         self.namespace = ros_namespace(env.environ)
         caller_id = ns_join(self.namespace, f"{NAME}-{os.getpid()}")
-        self.master = Master(env, caller_id)
+        self.master = env.master(caller_id)
 
     def resolve(self, name: str | None) -> str:
         """A parameter name typed by the user, resolved as rosparam does."""
         return script_resolve_name(NAME, name or "", self.namespace)
 
     def get(self, name: str) -> Any:
-        """The value (or namespace, as a dict) of ``name``; ``ERROR: …`` when it is not set."""
-        try:
-            return self.master.call("getParam", name)
-        except MasterError as error:
-            raise CommandError(f"ERROR: {error.status}") from None
+        """The value (or namespace, as a dict) of ``name``; `MasterError` when it is not set."""
+        return self.master.call("getParam", name)
 
     def names(self) -> list[str]:
         return [str(name) for name in self.master.call("getParamNames")]
 
     def delete(self, name: str) -> None:
-        try:
-            self.master.call("deleteParam", name)
-        except MasterError as error:
-            raise CommandError(f"ERROR: {error.status}") from None
+        self.master.call("deleteParam", name)
 
     def replace_root(self) -> None:
         """Empty the whole server (the root cannot be deleted, only set to ``{}``)."""
-        try:
-            self.master.call("setParam", "/", {})
-        except MasterError as error:
-            raise CommandError(f"ERROR: {error.status}") from None
+        self.master.call("setParam", "/", {})
 
     def set_raw(self, name: str, value: Any, *, verbose: bool = False) -> None:
         """Set ``name`` to ``value``; a dict sets each of its leaves (rosparam's update)."""
@@ -63,10 +57,7 @@ class ParamServer:
         except ParamValueError as error:
             raise CommandError(f"ERROR: {error}") from None
         for key, leaf in _leaves(name, value):
-            try:
-                self.master.call("setParam", key, leaf)
-            except MasterError as error:
-                raise CommandError(f"ERROR: {error.status}") from None
+            self.master.call("setParam", key, leaf)
             if verbose:
                 self.env.out(f"set parameter [{key}] to [{py_str(leaf)}]")
 

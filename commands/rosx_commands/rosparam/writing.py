@@ -109,7 +109,7 @@ def _read_file(filename: str, *, text: bool) -> str | bytes:
 
 
 def _load_value(text: str) -> Any:
-    from rosx.msg.yamlparams import AngleError, YAMLLoadError, load_value  # noqa: PLC0415
+    from rosx.msg.text.yamlparams import AngleError, YAMLLoadError, load_value  # noqa: PLC0415
 
     try:
         return load_value(text)
@@ -164,7 +164,7 @@ def _read_source(env: Environment, filename: str, verbose: bool) -> str:
 
 
 def _load_documents(text: str, filename: str) -> list[Any]:
-    from rosx.msg.yamlparams import AngleError, YAMLLoadError, load_documents  # noqa: PLC0415
+    from rosx.msg.text.yamlparams import AngleError, YAMLLoadError, load_documents  # noqa: PLC0415
 
     try:
         return load_documents(text)

@@ -7,6 +7,7 @@ from rosx_commands.cli import commands_overview, run_command
 from rosx_commands.context import Environment, ExitStatus
 from rosx_commands.rosservice import query
 from rosx_commands.rosservice.call import call_command
+from rosx_commands.rosservice.services import SERVICE_ERROR
 
 COMMANDS = [
     ("args", "print service arguments"),
@@ -44,4 +45,4 @@ def rosservice(argv: Sequence[str], env: Environment) -> int:
     if not args or args[0] not in handlers:
         env.out(overview())
         return ExitStatus.EX_USAGE
-    return run_command(handlers[args[0]], args[1:], env)
+    return run_command(handlers[args[0]], args[1:], env, error_status=SERVICE_ERROR)

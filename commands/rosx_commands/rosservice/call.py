@@ -1,7 +1,7 @@
 """``rosservice call``: fill a request from YAML arguments (or stdin), call, print the response.
 
 As ROS 1's: the service's type comes from a probe; each argument is one YAML document
-(`rosx.msg.yamlargs`), an empty one the empty string; with no argument and a request that has
+(`rosx.msg.text.yamlargs`), an empty one the empty string; with no argument and a request that has
 fields, YAML documents separated by ``---`` lines are read from stdin (unless it is a terminal)
 and the service is called once per document. ``-v`` prints the request and a ``---`` line
 first. ``--wait`` waits for the service to be advertised. Beyond ROS 1: ``--timeout SECS`` bounds
@@ -14,18 +14,18 @@ from __future__ import annotations
 import io
 import os
 import time
-from typing import TYPE_CHECKING, Any
 
 from rosx.names.anonymous import anonymous_node_name
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
-from rosx_commands.master import MasterError
-from rosx_commands.rosservice.rpc import CallError, ServiceIOError, call, probe
 from rosx_commands.rosservice.services import SERVICE_ERROR, Services
 from rosx_commands.yamltext import one_line
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from rosx.msg.message import Message, ServiceDefinition
+    from typing import Any
+
+    from rosx.msg.codec.message import Message, ServiceDefinition
 
 #: How often rospy's ``wait_for_service`` looks for the service, in seconds.
 WAIT_PERIOD = 0.3
@@ -89,7 +89,7 @@ def call_command(argv: list[str], env: Environment) -> int:
         return ExitStatus.OK
     if env.stdin.isatty():
         parser.error("Please specify service arguments")
-    from rosx.msg.yamlload import load_stream  # noqa: PLC0415 - ruamel loads lazily
+    from rosx.msg.text.yamlload import load_stream  # noqa: PLC0415 - ruamel loads lazily
 
     def invalid(error: Exception) -> None:
         env.err(f"Invalid YAML: {one_line(str(error))}")
@@ -101,8 +101,8 @@ def call_command(argv: list[str], env: Environment) -> int:
 
 
 def _load_args(words: list[str]) -> list[Any]:
-    from rosx.msg.yamlargs import load_args  # noqa: PLC0415 - ruamel loads lazily
-    from rosx.msg.yamlload import YAMLLoadError  # noqa: PLC0415
+    from rosx.msg.text.yamlargs import load_args  # noqa: PLC0415 - ruamel loads lazily
+    from rosx.msg.text.yamlload import YAMLLoadError  # noqa: PLC0415
 
     try:
         return load_args(words, empty_is_string=True)
@@ -112,14 +112,10 @@ def _load_args(words: list[str]) -> list[Any]:
 
 def _wait_for_service(services: Services, name: str, timeout: float | None) -> None:
     """Block until ``name`` is advertised and answers a probe (rospy's ``wait_for_service``)."""
+    from rosx.node.service_client import contact_service  # noqa: PLC0415 - call only
+
     deadline = None if timeout is None else time.monotonic() + timeout
-    while True:
-        try:
-            uri = services.master.call("lookupService", name)
-            probe(name, str(uri))
-            return
-        except (MasterError, ServiceIOError):
-            pass
+    while not contact_service(services.master, name):
         if deadline is not None and time.monotonic() >= deadline:
             raise CommandError(
                 f"ERROR: timeout exceeded while waiting for service {name}", SERVICE_ERROR
@@ -142,7 +138,10 @@ class _Caller:
         self.name = name
         self.service_class = service_class
         self.options = options
-        self.caller_id = "/" + anonymous_node_name("rosservice", pid=os.getpid())
+        from rosx.node.service_client import ServiceClient  # noqa: PLC0415 - call only
+
+        caller_id = "/" + anonymous_node_name("rosservice", pid=os.getpid())
+        self.client = ServiceClient(services.master, name, service_class, caller_id=caller_id)
 
     def call(self, args: list[Any]) -> None:
         """Fill a request from ``args``, call the service, print the response.
@@ -152,20 +151,7 @@ class _Caller:
         """
         request = self._fill(args)
         payload = self._serialize(request)
-        uri = self.services.uri_of(self.name)
-        if uri is None:
-            raise CommandError(f"ERROR: service [{self.name}] unavailable", SERVICE_ERROR)
-        try:
-            data = call(
-                self.name,
-                uri,
-                md5sum=self.service_class._md5sum,
-                request=payload,
-                caller_id=self.caller_id,
-                timeout=self.options.timeout,
-            )
-        except (CallError, ServiceIOError) as error:
-            raise CommandError(f"ERROR: {error}", SERVICE_ERROR) from None
+        data = self.client.call_serialized(payload, timeout=self.options.timeout)
         response = self._deserialize(data)
         if self.options.verbose:
             self.env.out(self._format(request))
@@ -174,8 +160,8 @@ class _Caller:
         self.env.stdout.flush()
 
     def _fill(self, args: list[Any]) -> Message:
-        from rosx.msg.message import MessageException  # noqa: PLC0415
-        from rosx.msg.yamlargs import call_error_text, fill_message_args  # noqa: PLC0415
+        from rosx.msg.codec.message import MessageException  # noqa: PLC0415
+        from rosx.msg.text.yamlargs import call_error_text, fill_message_args  # noqa: PLC0415
 
         request = self.service_class._request_class()
         try:
@@ -187,8 +173,8 @@ class _Caller:
         return request
 
     def _serialize(self, request: Message) -> bytes:
+        from rosx.msg.codec.message import SerializationError  # noqa: PLC0415
         from rosx.msg.describe import describe_srv  # noqa: PLC0415
-        from rosx.msg.message import SerializationError  # noqa: PLC0415
 
         buff = io.BytesIO()
         try:
@@ -204,7 +190,7 @@ class _Caller:
         return buff.getvalue()
 
     def _deserialize(self, data: bytes) -> Message:
-        from rosx.msg.message import DeserializationError  # noqa: PLC0415
+        from rosx.msg.codec.message import DeserializationError  # noqa: PLC0415
 
         try:
             return self.service_class._response_class().deserialize(data)
@@ -214,6 +200,6 @@ class _Caller:
             ) from None
 
     def _format(self, msg: Message) -> str:
-        from rosx.msg.echo import format_message  # noqa: PLC0415
+        from rosx.msg.text.echo import format_message  # noqa: PLC0415
 
         return format_message(msg, nostr=self.options.nostr, noarr=self.options.noarr)

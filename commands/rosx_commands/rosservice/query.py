@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
-from rosx_commands.rosservice.rpc import ServiceIOError, probe
 from rosx_commands.rosservice.services import Services, request_args
 
 
@@ -111,6 +110,9 @@ def find(argv: list[str], env: Environment) -> int:
         parser.error("please specify a message type")
     if len(args) > 1:
         parser.error("you may only specify one message type")
+    from rosx.node.errors import ServiceError  # noqa: PLC0415 - find only
+    from rosx.node.service_client import probe_service  # noqa: PLC0415
+
     services = Services(env)
     matches = []
     for name, _ in services.services():
@@ -118,8 +120,8 @@ def find(argv: list[str], env: Environment) -> int:
         if uri is None:
             continue
         try:
-            found = probe(name, uri).get("type")
-        except ServiceIOError:
+            found = probe_service(services.master, name, uri=uri).get("type")
+        except ServiceError:
             continue
         if found == args[0]:
             matches.append(name)

@@ -1,22 +1,21 @@
 """What rosservice's sub-commands share: the master, service lookups, probes and type classes.
 
 Services do not register their type with the master: like ROS 1's rosservice, rosx asks the
-server itself with a probe (`rosx_commands.rosservice.rpc.probe`). Every failure of a lookup is
-a `CommandError` with ROS 1's text and rosservice's status 2, including the master being down.
+server itself with a probe (`rosx.node.service_client.probe_service`). Every failure of a lookup
+is an error with ROS 1's text and rosservice's status 2, including the master being down (the
+core's errors are worded by `rosx_commands.errors`).
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
-
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.context import CommandError, Environment
-from rosx_commands.master import Master, MasterError
-from rosx_commands.rosservice.rpc import ServiceIOError, probe
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from rosx.msg.message import ServiceDefinition
+
+    from rosx.msg.codec.message import ServiceDefinition
     from rosx.msg.store import TypeStore
 
 CALLER_ID = "/rosservice"
@@ -24,23 +23,12 @@ CALLER_ID = "/rosservice"
 SERVICE_ERROR = 2
 
 
-class ServiceMaster(Master):
-    """The master as rosservice sees it: unreachable is an error with status 2."""
-
-    def call(self, method: str, *params: object) -> Any:
-        try:
-            return super().call(method, *params)
-        except CommandError as error:
-            error.status = SERVICE_ERROR
-            raise
-
-
 class Services:
     """One rosservice run: its environment, the master and (lazily) the type store."""
 
     def __init__(self, env: Environment) -> None:
         self.env = env
-        self.master = ServiceMaster(env, CALLER_ID)
+        self.master = env.master(CALLER_ID)
         self._store: TypeStore | None = None
 
     @property
@@ -73,24 +61,20 @@ class Services:
 
     def uri_of(self, name: str) -> str | None:
         """The ``rosrpc://`` URI of ``name``, or ``None`` if no node provides it."""
-        try:
-            return str(self.master.call("lookupService", name))
-        except MasterError:
-            return None
+        return self.master.lookup_service(name)
 
     def type_of(self, name: str) -> str | None:
         """The type the server of ``name`` states in answer to a probe, or ``None``.
 
         Raises:
-            CommandError: the server cannot be reached.
+            ServiceError: the server cannot be reached.
         """
+        from rosx.node.service_client import probe_service  # noqa: PLC0415 - not for list
+
         uri = self.uri_of(name)
         if uri is None:
             return None
-        try:
-            return probe(name, uri).get("type")
-        except ServiceIOError as error:
-            raise CommandError(f"ERROR: {error}", SERVICE_ERROR) from None
+        return probe_service(self.master, name, uri=uri).get("type")
 
     def service_class(self, name: str) -> type[ServiceDefinition]:
         """The class of service ``name``'s type, found by probing it.
@@ -105,7 +89,7 @@ class Services:
             raise CommandError(
                 f"ERROR: Unable to determine type of service [{name}].", SERVICE_ERROR
             )
-        from rosx.msg.classes import get_service_class  # noqa: PLC0415 - code generation
+        from rosx.msg.codec.classes import get_service_class  # noqa: PLC0415 - code generation
         from rosx.msg.store import UnknownTypeError  # noqa: PLC0415
 
         candidates = [service_type]

@@ -1,7 +1,7 @@
 """``rostopic echo``: print a topic's messages, a field of them, or CSV rows, as ROS 1 does.
 
 Each message (or the value a field path selects) is printed in the YAML-like text of
-`rosx.msg.echo` followed by a ``---`` line, or with ``-p`` as a CSV row under a ``%time,…``
+`rosx.msg.text.echo` followed by a ``---`` line, or with ``-p`` as a CSV row under a ``%time,…``
 header. ``-n COUNT`` stops after COUNT messages; ``--filter`` skips messages its expression
 rejects (it sees the whole message as ``m`` and the topic name as ``topic``). The command waits
 for the topic to be published, and Ctrl-C ends it quietly with status 0.
@@ -18,7 +18,9 @@ from rosx_commands.rostopic.listing import resolve
 from rosx_commands.rostopic.session import MessageFilter, Session, wait_until
 
 if TYPE_CHECKING:
-    from rosx.msg.fieldpath import FieldPath
+    from collections.abc import Callable
+
+    from rosx.msg.text.fieldpath import FieldPath
 
 
 def _parser(env: Environment) -> ToolParser:
@@ -114,6 +116,7 @@ class Printer:
         noarr: bool = False,
         nostr: bool = False,
         width: int | None = None,
+        clock: Callable[[], Any] | None = None,
     ) -> None:
         self.env = env
         self.topic = topic
@@ -131,14 +134,14 @@ class Printer:
         self.first = True
         self.done = threading.Event()
         # Bound once: the callback runs for every message.
-        from rosx.msg.echo import echo_record, format_value  # noqa: PLC0415
-        from rosx.msg.echocsv import csv_header, csv_row  # noqa: PLC0415
-        from rosx.msg.fieldpath import FieldPathError  # noqa: PLC0415
+        from rosx.msg.text.echo import echo_record, format_value  # noqa: PLC0415
+        from rosx.msg.text.echocsv import csv_header, csv_row  # noqa: PLC0415
+        from rosx.msg.text.fieldpath import FieldPathError  # noqa: PLC0415
         from rosx.node.clock import now  # noqa: PLC0415
 
         self._format, self._record = format_value, echo_record
         self._csv_header, self._csv_row = csv_header, csv_row
-        self._path_error, self._now = FieldPathError, now
+        self._path_error, self._now = FieldPathError, clock or now
 
     def __call__(self, msg: object) -> None:
         if self.message_filter is not None and not self.message_filter(msg, self.topic):
@@ -211,8 +214,18 @@ def echo(argv: list[str], env: Environment) -> int:
     width = _integer(parser, options.fixed_numeric_width, "NUM_WIDTH must be an integer")
     if width is not None and width < 2:
         parser.error("Fixed width for numeric values must be at least 2")
+    printing = {
+        "path": None,
+        "plot": options.plot,
+        "message_filter": message_filter,
+        "clear": options.clear,
+        "count": count,
+        "noarr": options.noarr,
+        "nostr": options.nostr,
+        "width": width,
+    }
     if options.bag:
-        raise CommandError("ERROR: rosx does not read .bag files")
+        return _echo_bag(env, options.bag, topic, options.all_topics, printing)
     with Session(env) as session:
         session.check_master()
         node = session.start_node()
@@ -244,6 +257,33 @@ def echo(argv: list[str], env: Environment) -> int:
     return ExitStatus.OK
 
 
+def _echo_bag(
+    env: Environment, bag: str, topic: str, every_topic: bool, printing: dict[str, Any]
+) -> int:
+    """``rostopic echo -b BAG``: the bag's messages of ``topic`` (or all), in time order, with
+    the bag's times where a time is printed."""
+    from pathlib import Path  # noqa: PLC0415
+
+    from rosx.bag.api import Bag, ROSBagException  # noqa: PLC0415
+
+    if not Path(bag).exists():
+        raise CommandError(f"ERROR: bag file [{bag}] does not exist")
+    stamp: list[Any] = [None]
+    printer = Printer(env, topic, clock=lambda: stamp[0], **printing)
+    try:
+        with Bag(bag) as reader:
+            wanted = None if every_topic else [topic]
+            for name, msg, when in reader.read_messages(topics=wanted):
+                stamp[0] = when
+                printer.topic = name
+                printer(msg)
+                if printer.done.is_set():
+                    break
+    except (ROSBagException, OSError) as exc:
+        raise CommandError(f"ERROR: unable to read bag file [{bag}]: {exc}") from None
+    return ExitStatus.OK
+
+
 def _integer(parser: ToolParser, text: str | None, error: str) -> int | None:
     # As ROS 1: an empty value means "not given".
     if not text:
@@ -263,7 +303,7 @@ def _field_path(
     """
     if not text.strip("/"):
         return None, None
-    from rosx.msg.fieldpath import FieldPathError, field_type, parse_field_path  # noqa: PLC0415
+    from rosx.msg.text.fieldpath import FieldPathError, field_type, parse_field_path  # noqa: PLC0415
 
     try:
         path = parse_field_path(text)

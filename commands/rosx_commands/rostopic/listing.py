@@ -2,17 +2,16 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
-from urllib.parse import urlparse
-
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
-from rosx_commands.master import Master
 
+TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from rosx.msg.store import TypeStore
+    from typing import Any
+
+    from rosx.master.client import MasterClient
 
 CALLER_ID = "/rostopic"
 
@@ -24,7 +23,7 @@ def resolve(env: Environment, name: str) -> str:
     return script_resolve_name("rostopic", name, ros_namespace(env.environ))
 
 
-def topic_rows(master: Master) -> tuple[TopicRows, TopicRows]:
+def topic_rows(master: MasterClient) -> tuple[TopicRows, TopicRows]:
     """Published and subscribed topics with their types and nodes, in the master's order."""
     publishers, subscribers, _ = master.system_state()
     types = master.topic_types()
@@ -33,6 +32,45 @@ def topic_rows(master: Master) -> tuple[TopicRows, TopicRows]:
         return [(topic, types.get(topic, "unknown type"), list(nodes)) for topic, nodes in state]
 
     return rows(publishers), rows(subscribers)
+
+
+def _list_bag(env: Environment, bag: str, topic: str | None) -> int:
+    """``rostopic list -b BAG [TOPIC]``: topics in order of their first message, or how many
+    messages ``topic`` (and its namespace) has, and when the first and last were recorded."""
+    import time  # noqa: PLC0415
+    from pathlib import Path  # noqa: PLC0415
+
+    from rosx.bag.errors import BagError  # noqa: PLC0415
+    from rosx.bag.reader import BagReader  # noqa: PLC0415
+
+    if not Path(bag).exists():
+        raise CommandError(f"ERROR: bag file [{bag}] does not exist")
+    try:
+        with BagReader(bag) as reader:
+            names = {c.id: c.topic for c in reader.connections.values()}
+            order = [names[conn] for _, _, _, conn in reader.entries()]
+    except (BagError, OSError) as exc:
+        raise CommandError(f"ERROR: unable to read bag file [{bag}]: {exc}") from None
+    if topic is None:
+        for name in dict.fromkeys(order):
+            env.out(name)
+        return ExitStatus.OK
+    prefix = make_global_ns(topic)
+    with BagReader(bag) as reader:
+        ids = {
+            c.id
+            for c in reader.connections.values()
+            if c.topic == topic or c.topic.startswith(prefix)
+        }
+        stamps = [t for t, _, _, _ in reader.entries(ids)]
+    if not stamps:
+        raise CommandError("ERROR: no messages of the topic in the bag")
+
+    def day(ns: int) -> str:
+        return time.strftime("%d %b %Y %H:%M:%S", time.localtime(ns / 1e9))
+
+    env.out(f"{len(stamps)} message(s) from {day(stamps[0])} to {day(stamps[-1])}")
+    return ExitStatus.OK
 
 
 def list_topics(argv: list[str], env: Environment) -> int:
@@ -63,10 +101,10 @@ def list_topics(argv: list[str], env: Environment) -> int:
     bag, verbose, host = options.bag, options.verbose, options.hostname
     publishers_only, subscribers_only = options.publishers, options.subscribers
     if bag is not None:
-        raise CommandError("ERROR: rosx does not read .bag files")
+        return _list_bag(env, bag, resolve(env, names[0]) if names else None)
     if publishers_only and subscribers_only:
         raise CommandError("ERROR: cannot specify both subscribers- and publishers-only")
-    master = Master(env, CALLER_ID)
+    master = env.master(CALLER_ID)
     pubs, subs = topic_rows(master)
     if names:
         topic = resolve(env, names[0])
@@ -114,13 +152,15 @@ def _print_list(
 
 def _print_by_host(
     env: Environment,
-    master: Master,
+    master: MasterClient,
     pubs: TopicRows,
     subs: TopicRows,
     publishers_only: bool,
     subscribers_only: bool,
     verbose: bool,
 ) -> None:
+
+    from urllib.parse import urlparse  # noqa: PLC0415 - only list --host needs it
 
     uris: dict[str, str | None] = {}
 
@@ -155,28 +195,10 @@ def info(argv: list[str], env: Environment) -> int:
     if len(names) > 1:
         parser.error("you may only specify one topic name")
     topic = resolve(env, names[0])
-    env.out(topic_description(Master(env, CALLER_ID), topic))
+    from rosx.graph.describe import topic_description  # noqa: PLC0415 - info only
+
+    env.out(topic_description(env.master(CALLER_ID), topic))
     return ExitStatus.OK
-
-
-def topic_description(master: Master, topic: str) -> str:
-    """What ``rostopic info`` prints of ``topic``: its type, publishers and subscribers."""
-    pubs, subs = topic_rows(master)
-    pubs = [r for r in pubs if r[0] == topic]
-    subs = [r for r in subs if r[0] == topic]
-    if not pubs and not subs:
-        raise CommandError(f"ERROR: Unknown topic {topic}")
-    types = master.topic_types()
-    lines = [f"Type: {types.get(topic, 'unknown type')}", ""]
-    for title, rows in (("Publishers", pubs), ("Subscribers", subs)):
-        if rows:
-            lines.append(f"{title}: ")
-            for node in (n for _, _, nodes in rows for n in nodes):
-                lines.append(f" * {node} ({master.lookup_node(node)})")
-        else:
-            lines.append(f"{title}: None")
-        lines.append("")
-    return "\n".join(lines) + "\n"
 
 
 def topic_type(argv: list[str], env: Environment) -> int:
@@ -185,7 +207,9 @@ def topic_type(argv: list[str], env: Environment) -> int:
     parser = ToolArgumentParser(env, prog="rostopic type")
     parser.add_argument("topic_or_field", help="Topic or field name")
     name = resolve(env, parser.parse_args(argv).topic_or_field)
-    types = Master(env, CALLER_ID).topic_types()
+    from rosx.msg.text.fieldpath import find_topic  # noqa: PLC0415 - only type needs it
+
+    types = env.master(CALLER_ID).topic_types()
     found = find_topic(name, types)
     if found is None:
         raise CommandError(f"unknown topic type [{name}]")
@@ -205,34 +229,6 @@ def topic_type(argv: list[str], env: Environment) -> int:
     return ExitStatus.OK
 
 
-def find_topic(
-    name: str, types: dict[str, str], store: TypeStore | None = None
-) -> tuple[str, str] | None:
-    """The topic ``name`` denotes, itself or the longest topic it is a field path of.
-
-    A topic whose type has no such field (in ``store``: the standard types by default) is
-    skipped, as ROS 1 does.
-    """
-    if name in types:
-        return name, types[name]
-    from rosx.msg.store import TypeStore, UnknownTypeError  # noqa: PLC0415 - field paths only
-
-    store = TypeStore([]) if store is None else store
-    for topic in sorted((t for t in types if name.startswith(t + "/")), reverse=True):
-        path = name[len(topic) + 1 :].rstrip("/").split("[")[0]
-        if not path:
-            return topic, types[topic]
-        try:
-            spec_type = types[topic]
-            for part in path.split("/"):
-                field = next(f for f in store.msg(spec_type).fields if f.name == part)
-                spec_type = field.base_type
-        except (StopIteration, UnknownTypeError):
-            continue
-        return topic, types[topic]
-    return None
-
-
 def find(argv: list[str], env: Environment) -> int:
     parser = ToolParser(env, "rostopic", "usage: %prog find msg-type")
     _, names = parser.parse(argv)
@@ -240,6 +236,6 @@ def find(argv: list[str], env: Environment) -> int:
         parser.error("please specify a message type")
     if len(names) > 1:
         parser.error("you may only specify one message type")
-    types = Master(env, CALLER_ID).topic_types()
+    types = env.master(CALLER_ID).topic_types()
     env.out("\n".join(t for t, type_name in types.items() if type_name == names[0]))
     return ExitStatus.OK

@@ -19,7 +19,7 @@ from rosx_commands.rostopic.session import Session, fail
 if TYPE_CHECKING:
     from collections.abc import Iterator
 
-    from rosx.msg.message import Message
+    from rosx.msg.codec.message import Message
 
 #: ``-f``/stdin publishing's rate when ``-r`` is not given (and neither ``-l`` nor ``-1``).
 DEFAULT_STREAM_RATE = 10.0
@@ -101,8 +101,8 @@ def pub(argv: list[str], env: Environment) -> int:
     if len(args) > 2 and options.file:
         parser.error("args conflict with -f setting")
     topic_name, type_name = args[0], args[1]
-    from rosx.msg.yamlargs import load_args  # noqa: PLC0415 - YAML loads on first use
-    from rosx.msg.yamlload import YAMLLoadError  # noqa: PLC0415
+    from rosx.msg.text.yamlargs import load_args  # noqa: PLC0415 - YAML loads on first use
+    from rosx.msg.text.yamlload import YAMLLoadError  # noqa: PLC0415
 
     try:
         pub_args = load_args(args[2:])
@@ -141,7 +141,7 @@ def pub(argv: list[str], env: Environment) -> int:
 
 def _message_class(session: Session, type_name: str) -> type[Message]:
     """The class to publish, or ROS 1's ``invalid topic type`` / ``invalid message type``."""
-    from rosx.msg.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
     from rosx.msg.parser import is_valid_type_name  # noqa: PLC0415
     from rosx.msg.store import UnknownTypeError  # noqa: PLC0415
 
@@ -161,7 +161,7 @@ def _message_class(session: Session, type_name: str) -> type[Message]:
 
 def _file_documents(filename: str) -> list[Any]:
     """The documents of ``-f FILE``, each as the argument list of one message."""
-    from rosx.msg.yamlload import YAMLLoadError, load_all  # noqa: PLC0415
+    from rosx.msg.text.yamlload import YAMLLoadError, load_all  # noqa: PLC0415
 
     path = Path(filename)
     if not path.is_file():
@@ -176,7 +176,7 @@ def _file_documents(filename: str) -> list[Any]:
 
 def _stdin_documents(env: Environment) -> Iterator[Any]:
     """The ``---``-terminated YAML documents of standard input, read as they come."""
-    from rosx.msg.yamlload import load_stream  # noqa: PLC0415
+    from rosx.msg.text.yamlload import load_stream  # noqa: PLC0415
 
     def invalid(error: Exception) -> None:
         env.stderr.write(f"Invalid YAML: {error}\n")

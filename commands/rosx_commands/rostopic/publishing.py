@@ -20,14 +20,15 @@ from __future__ import annotations
 import time
 from typing import TYPE_CHECKING, Any
 
-from rosx.msg.message import MessageException
-from rosx_commands.context import CommandError
+from rosx.master.client import MasterError
+from rosx.msg.codec.message import MessageException
+from rosx.transport.errors import TransportError
 from rosx_commands.rostopic.session import fail
 
 if TYPE_CHECKING:
     from collections.abc import Iterable
 
-    from rosx.msg.message import Message
+    from rosx.msg.codec.message import Message
     from rosx.node import Publisher
     from rosx_commands.context import Environment
     from rosx_commands.rostopic.session import Session
@@ -67,7 +68,7 @@ class Publishing:
         Raises:
             ValueError: a scalar where a message is needed (``-f``/stdin report it and stop).
         """
-        from rosx.msg.yamlargs import fill_message_args, publish_error_text  # noqa: PLC0415
+        from rosx.msg.text.yamlargs import fill_message_args, publish_error_text  # noqa: PLC0415
 
         try:
             fill_message_args(msg, args, store=self.session.store)
@@ -132,7 +133,7 @@ class Publishing:
         try:
             self.publish_message(args, rate, once)
         except ValueError as error:
-            from rosx.msg.yamlargs import publish_error_text  # noqa: PLC0415
+            from rosx.msg.text.yamlargs import publish_error_text  # noqa: PLC0415
 
             fail(publish_error_text(error, self.msg_class()))
         if once:
@@ -207,7 +208,7 @@ class Publishing:
         """The nodes the master lists as subscribers of the topic (None if it cannot say)."""
         try:
             _, subscribers, _ = self.session.master.system_state()
-        except CommandError:
+        except (TransportError, MasterError):
             return None
         me = self.publisher.node.name
         topic = self.publisher.name

@@ -1,7 +1,7 @@
 """The node behind ``rostopic echo``, ``pub``, ``hz``, ``bw`` and ``delay``, and what they share.
 
 A `Session` is one run of a streaming sub-command: it checks the master first (ROS 1's
-``Unable to communicate with master!`` within `rosx_commands.master.CONNECT_TIMEOUT`), starts
+``Unable to communicate with master!`` within `rosx_commands.context.MASTER_TIMEOUT`), starts
 an anonymous node named as ROS 1's tools name theirs (``/rostopic_<pid>_<ms>``), waits for a
 topic to be published the way ROS 1's ``get_topic_type(blocking=True)`` does, and always
 unregisters the node on the way out: normal exit, error, Ctrl-C or SIGTERM (turned into
@@ -16,16 +16,17 @@ import threading
 import time
 from typing import TYPE_CHECKING, Any, NoReturn
 
+from rosx.msg.text.fieldpath import find_topic
 from rosx.names.anonymous import anonymous_node_name
 from rosx_commands.context import CommandError, Environment
-from rosx_commands.master import Master, master_uri, unreachable
-from rosx_commands.rostopic.listing import CALLER_ID, find_topic
+from rosx_commands.rostopic.listing import CALLER_ID
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Iterator
     from types import FrameType
 
-    from rosx.msg.message import Message
+    from rosx.master.client import MasterClient
+    from rosx.msg.codec.message import Message
     from rosx.msg.store import TypeStore
     from rosx.node import Node
     from rosx_commands.cli import ToolParser
@@ -41,7 +42,7 @@ class Session:
 
     def __init__(self, env: Environment) -> None:
         self.env = env
-        self.master = Master(env, CALLER_ID)
+        self.master: MasterClient = env.master(CALLER_ID)
         self.node: Node | None = None
         self._store: TypeStore | None = None
         self._stack = contextlib.ExitStack()
@@ -58,8 +59,6 @@ class Session:
                 self.node.shutdown("rostopic exited")
         finally:
             self._stack.close()
-        if exc is not None and self.node is not None:
-            _raise_master_failure(exc, master_uri(self.env))
 
     # -- the master and the node -------------------------------------------------------------
 
@@ -81,12 +80,12 @@ class Session:
             namespace=args and args.ns,
             remappings=args and args.remappings,
             private_params=args and args.params,
-            master_uri=master_uri(self.env),
+            master_uri=self.master.uri,
             environ=self.env.environ,
             rosout_enabled=rosout,
         )
         self.node = node
-        # A master lost from here on is reported when the session ends (`__exit__`).
+        # A master lost from here on raises MasterUnreachable, which the CLI reports.
         return node.start()
 
     def is_shutdown(self) -> bool:
@@ -137,7 +136,7 @@ class Session:
 
     def message_class(self, type_name: str) -> type[Message]:
         """The class of ``type_name``, or ROS 1's error when its definition is not found."""
-        from rosx.msg.classes import get_message_class  # noqa: PLC0415 - the codegen is lazy
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - the codegen is lazy
 
         try:
             return get_message_class(type_name, self.store)
@@ -205,17 +204,6 @@ def wait_until(session: Session, done: threading.Event) -> None:
 def fail(message: str) -> NoReturn:
     """Stop the command with ``ERROR: message`` (status 1), as ROS 1's ROSTopicException."""
     raise CommandError(f"ERROR: {message}")
-
-
-def _raise_master_failure(exc: BaseException, uri: str) -> None:
-    """Turn the node's failures to reach or satisfy the master into ROS 1's errors."""
-    from rosx.node.errors import MasterError  # noqa: PLC0415 - loaded with the node
-    from rosx.transport.errors import FaultError, TransportError  # noqa: PLC0415
-
-    if isinstance(exc, TransportError | FaultError):
-        raise unreachable(uri) from None
-    if isinstance(exc, MasterError):
-        raise CommandError(f"ERROR: {exc.status}") from None
 
 
 @contextlib.contextmanager

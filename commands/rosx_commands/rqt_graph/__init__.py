@@ -11,7 +11,6 @@ from collections.abc import Sequence
 
 from rosx_commands.cli import ToolParser, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
-from rosx_commands.master import master_uri, unreachable
 
 CALLER_ID = "/rqt_graph"
 #: Seconds between two refreshes of the live view.
@@ -110,7 +109,7 @@ def rqt_graph(argv: Sequence[str], env: Environment) -> int:
 
 def _rqt_graph(argv: list[str], env: Environment) -> int:
     from rosx.graph.builder import build  # noqa: PLC0415 - after option parsing
-    from rosx.graph.fetch import MasterUnreachable, fetch_state  # noqa: PLC0415
+    from rosx.graph.fetch import fetch_state  # noqa: PLC0415
     from rosx.graph.options import GraphOptions, Mode, NameFilter  # noqa: PLC0415
 
     options, rest = _parser(env).parse(argv)
@@ -136,15 +135,12 @@ def _rqt_graph(argv: list[str], env: Environment) -> int:
             NameFilter.parse(text)
         except ValueError as error:
             raise CommandError(f"rqt_graph: error: {error}", ExitStatus.USAGE) from None
-    uri = master_uri(env)
+    uri = env.master_uri
     if not (options.text or options.dot) and env.stdout_isatty:
         from rosx_commands.rqt_graph.app import run_app  # noqa: PLC0415 - textual only here
 
         return run_app(env, uri, graph_options, options.period, options.bus_info)
-    try:
-        state = fetch_state(uri, CALLER_ID, bus_info=options.bus_info)
-    except MasterUnreachable:
-        raise unreachable(uri) from None
+    state = fetch_state(uri, CALLER_ID, bus_info=options.bus_info)
     graph = build(state, graph_options)
     if options.dot:
         from rosx.graph.dot import dot  # noqa: PLC0415

@@ -1,4 +1,5 @@
-"""`GraphApp`: rqt_graph in the terminal: the drawing, a details panel, a status line.
+"""`GraphPane`: rqt_graph in the terminal: the drawing, a details panel, a status line.
+`GraphApp` runs it alone (``rosx rqt_graph``), `graph_tab` as a tab of ``rosx rqt``.
 
 A timer starts a refresh on a worker thread every period (and ``r`` at once); the worker
 fetches, builds and draws, and hands the result to the UI with ``call_from_thread``, so the
@@ -10,7 +11,7 @@ status line names both.
 rqt_graph's highlight), and its ``rosnode info`` / ``rostopic info`` (and a topic's live rate)
 show in a panel on the right, which ``escape`` closes. rqt_graph's controls are keys: ``m``
 cycles the modes, ``n`` and ``t`` edit the namespace and topic filters, ``g`` the depth of
-namespace groups, ``d`` toggles hiding debug names; ``q`` quits.
+namespace groups, ``d`` toggles hiding debug names; ``q`` or ``ctrl+c`` quit.
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ from typing import Any, ClassVar
 from rich.text import Text
 from textual.app import App, ComposeResult  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
-from textual.containers import Horizontal, VerticalScroll  # noqa: TID253 - TUI code
+from textual.containers import Horizontal, Vertical, VerticalScroll  # noqa: TID253 - TUI code
 from textual.widgets import Footer, Input, Static  # noqa: TID253 - TUI code
 from textual.worker import get_current_worker  # noqa: TID253 - TUI code
 
@@ -57,8 +58,8 @@ class History:
         return History(graph, diff, vanished(self.graph, graph))
 
 
-class GraphApp(App[int]):
-    CSS = """
+class GraphPane(Vertical):
+    DEFAULT_CSS = """
     #details { width: 40; border-left: solid $primary; padding: 0 1; display: none; }
     #details.open { display: block; }
     #status { height: 1; background: $boost; }
@@ -74,13 +75,17 @@ class GraphApp(App[int]):
         Binding("t", "edit_filter('topic_filter')", "Topic filter"),
         Binding("g", "next_group_depth", "Groups"),
         Binding("d", "toggle_debug", "Debug"),
-        Binding("q", "quit", "Quit"),
     ]
 
     def __init__(
-        self, source: GraphSource, options: GraphOptions, period: float | None = None
+        self,
+        source: GraphSource,
+        options: GraphOptions,
+        period: float | None = None,
+        *,
+        id: str | None = None,
     ) -> None:
-        super().__init__()
+        super().__init__(id=id)
         self.source = source
         self.options = options
         self.period = period
@@ -106,7 +111,6 @@ class GraphApp(App[int]):
             with VerticalScroll(id="details"):
                 yield Static(id="info")
         yield Input(id="filter")
-        yield Footer()
 
     def on_mount(self) -> None:
         self.query_one(GraphView).focus()
@@ -129,12 +133,12 @@ class GraphApp(App[int]):
         try:
             graph = build(self.source.snapshot(), options)
         except Exception as error:
-            self.call_from_thread(self._failed, str(error) or type(error).__name__)
+            self.app.call_from_thread(self._failed, str(error) or type(error).__name__)
             return
         history = history.after(graph)
         drawing = draw(with_ghosts(graph, history.ghosts))
         if not get_current_worker().is_cancelled:
-            self.call_from_thread(self._show, history, drawing, options)
+            self.app.call_from_thread(self._show, history, drawing, options)
 
     def _failed(self, message: str) -> None:
         self.error = message
@@ -194,7 +198,7 @@ class GraphApp(App[int]):
         text = self.source.describe(vertex)
         if vertex.kind is Kind.TOPIC:
             text += "\n" + self.source.rate(vertex.label)
-        self.call_from_thread(self._show_details, vertex.id, text)
+        self.app.call_from_thread(self._show_details, vertex.id, text)
 
     def _show_details(self, vertex_id: str, text: str) -> None:
         if vertex_id == self.selected:
@@ -261,11 +265,53 @@ class GraphApp(App[int]):
         self.source.close()
 
 
+class GraphApp(App[int]):
+    """``rosx rqt_graph`` on its own: the pane and a footer; the pane's state reads through."""
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("q", "quit", "Quit"),
+        Binding("ctrl+c", "quit", "Quit", show=False, priority=True),
+    ]
+
+    def __init__(self, pane: GraphPane) -> None:
+        super().__init__()
+        self.pane = pane
+
+    def compose(self) -> ComposeResult:
+        yield self.pane
+        yield Footer()
+
+    @property
+    def drawing(self) -> Drawing:
+        return self.pane.drawing
+
+    @property
+    def selected(self) -> str | None:
+        return self.pane.selected
+
+    @property
+    def options(self) -> GraphOptions:
+        return self.pane.options
+
+    @property
+    def graph(self) -> ViewGraph | None:
+        return self.pane.graph
+
+
+def graph_tab(env: Any) -> GraphPane:
+    """rqt_graph as a tab of ``rosx rqt``: live, with rqt_graph's defaults."""
+    from rosx_commands.rqt_graph import CALLER_ID, REFRESH_PERIOD  # noqa: PLC0415
+    from rosx_commands.rqt_graph.source import LiveSource  # noqa: PLC0415
+
+    source = LiveSource(env, env.master_uri, CALLER_ID, True)
+    return GraphPane(source, GraphOptions(), REFRESH_PERIOD)
+
+
 def make_graph_app(
     source: GraphSource, options: GraphOptions | None = None, period: float | None = None
 ) -> GraphApp:
     """The app the CLI runs and the tests drive."""
-    return GraphApp(source, options or GraphOptions(), period)
+    return GraphApp(GraphPane(source, options or GraphOptions(), period))
 
 
 def run_app(env: Any, uri: str, options: GraphOptions, period: float, bus_info: bool) -> int:

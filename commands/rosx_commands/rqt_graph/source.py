@@ -12,7 +12,8 @@ from typing import Any, Protocol
 
 from rosx.graph.state import GraphState
 from rosx.graph.view import Kind, Vertex
-from rosx_commands.context import CommandError, Environment
+from rosx_commands.context import MASTER_TIMEOUT, Environment, ExitStatus
+from rosx_commands.errors import command_error
 
 
 class GraphSource(Protocol):
@@ -63,32 +64,30 @@ class LiveSource:
         return fetch_state(self.uri, self.caller_id, bus_info=self.bus_info)
 
     def describe(self, vertex: Vertex) -> str:
-        from rosx_commands.master import Master  # noqa: PLC0415
+        """What ``rosnode info`` or ``rostopic info`` prints of ``vertex``, errors included."""
+        if vertex.kind is Kind.GROUP:
+            return f"Group of topics: {vertex.label}"
+        from rosx.graph import describe  # noqa: PLC0415
+        from rosx.master.client import MasterClient  # noqa: PLC0415
 
-        master = Master(self.env, self.caller_id)
+        master = MasterClient(self.uri, self.caller_id, timeout=MASTER_TIMEOUT)
+        text = ""
         try:
-            if vertex.kind is Kind.NODE:
-                from rosx_commands.rosnode import (  # noqa: PLC0415
-                    connection_description,
-                    node_description,
-                )
-
-                text = node_description(master, vertex.label)
-                uri = master.lookup_node(vertex.label)
-                if uri is None:
-                    return text + f"\ncannot contact [{vertex.label}]: unknown node"
-                return (
-                    text
-                    + f"\ncontacting node {uri} ...\n"
-                    + connection_description(master, vertex.label, uri)
-                )
-            if vertex.kind is Kind.GROUP:
-                return f"Group of topics: {vertex.label}"
-            from rosx_commands.rostopic.listing import topic_description  # noqa: PLC0415
-
-            return topic_description(master, vertex.label)
-        except CommandError as error:
-            return error.message
+            if vertex.kind is Kind.TOPIC:
+                return describe.topic_description(master, vertex.label)
+            text = describe.node_description(master, vertex.label)
+            uri = master.lookup_node(vertex.label)
+            if uri is None:
+                return text + f"\ncannot contact [{vertex.label}]: unknown node"
+            text += f"\ncontacting node {uri} ...\n"
+            return text + describe.node_connections(master, uri)
+        except Exception as error:
+            mapped = command_error(error, self.env, ExitStatus.ERROR)
+            if mapped is None:
+                raise
+            return text + mapped.message
+        finally:
+            master.close()
 
     def rate(self, topic: str) -> str:
         if topic not in self._counters:

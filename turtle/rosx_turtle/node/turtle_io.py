@@ -11,14 +11,14 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Protocol
 
-from rosx.msg.classes import get_message_class, get_service_class
+from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.names import ns_join
 from rosx_turtle import roscpp
 
 if TYPE_CHECKING:
     from collections.abc import Callable
 
-    from rosx.msg.message import Message
+    from rosx.msg.codec.message import Message
     from rosx.node import Node, Publisher, ServiceHandle, Subscriber
     from rosx_turtle.engine import Simulation
 

@@ -23,7 +23,7 @@ import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from rosx.msg.classes import get_service_class
+from rosx.msg.codec.classes import get_service_class
 from rosx.names import validate
 from rosx.names.validation import InvalidNameError
 from rosx.node import DEBUG, ERROR, INFO, WARN
@@ -41,7 +41,7 @@ if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
 
-    from rosx.msg.message import Message
+    from rosx.msg.codec.message import Message
     from rosx.node import ServiceHandle
     from rosx_turtle.engine import TickReport, Turtles
     from rosx_turtle.roscpp import NodeArgs

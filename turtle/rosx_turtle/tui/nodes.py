@@ -28,6 +28,4 @@ class NodesPanel(GraphTable):
 
     def rows_of(self, graph: Graph) -> Iterator[tuple[str, ...]]:
         for node in graph.nodes:
-            publishes = sum(node in topic.publishers for topic in graph.topics)
-            subscribes = sum(node in topic.subscribers for topic in graph.topics)
-            yield node, str(publishes), str(subscribes)
+            yield node.name, str(node.publications), str(node.subscriptions)

@@ -28,4 +28,5 @@ class TopicsPanel(GraphTable):
 
     def rows_of(self, graph: Graph) -> Iterator[tuple[str, ...]]:
         for topic in graph.topics:
-            yield topic.name, topic.type, str(len(topic.publishers)), str(len(topic.subscribers))
+            counts = str(len(topic.publishers)), str(len(topic.subscribers))
+            yield topic.name, topic.type or "?", *counts

@@ -21,7 +21,7 @@ import math
 import threading
 from typing import TYPE_CHECKING, Any
 
-from rosx.msg.classes import get_message_class, get_service_class
+from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import INFO, NodeError
 from rosx.transport.errors import TransportError
 from rosx_turtle.console import Console, NodeLog

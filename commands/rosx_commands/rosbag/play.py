@@ -1,0 +1,363 @@
+"""``rosbag play``: ROS 1's options, a `rosx.bag.player.Player` on an anonymous node.
+
+Prints what ROS 1's player prints: the bags it opens, the wait after advertising, the keys,
+and (unless ``-q``) a status line rewritten in place. On a terminal, space pauses and resumes
+and ``s`` steps one message while paused. ``topic:=other`` arguments remap topics.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import optparse
+import signal
+import sys
+import threading
+import time
+from typing import TYPE_CHECKING, Any
+
+from rosx.names.remap_args import strip_remap_args
+from rosx_commands.cli import ToolParser
+from rosx_commands.context import Environment, ExitStatus
+from rosx_commands.errors import unreachable
+
+if TYPE_CHECKING:
+    from collections.abc import Iterator
+    from types import FrameType
+
+    from rosx.bag.player import Player
+    from rosx.bag.reader import BagReader
+
+
+def _collect(dest: str) -> Any:
+    def callback(option: Any, opt_str: str, value: Any, parser: optparse.OptionParser) -> None:
+        rargs: list[str] = parser.rargs or []
+        taken = []
+        for arg in rargs:
+            if arg.startswith("-") and len(arg) > 1:
+                break
+            taken.append(arg)
+        getattr(parser.values, dest).extend(taken)
+        del rargs[: len(taken)]
+
+    return callback
+
+
+def build_parser(env: Environment) -> ToolParser:
+    """ROS 1's ``rosbag play`` options, in its order and with its help texts."""
+    p = ToolParser(env, "rosbag", "rosbag play BAGFILE1 [BAGFILE2 BAGFILE3 ...]")
+    p.description = (
+        "Play back the contents of one or more bag files in a time-synchronized fashion."
+    )
+    add = p.add_option
+    add("-p", "--prefix", dest="prefix", default="", type="str", help="prefix all output topics")
+    add(
+        "-q",
+        "--quiet",
+        dest="quiet",
+        default=False,
+        action="store_true",
+        help="suppress console output",
+    )
+    add(
+        "-i",
+        "--immediate",
+        dest="immediate",
+        default=False,
+        action="store_true",
+        help="play back all messages without waiting",
+    )
+    add("--pause", dest="pause", default=False, action="store_true", help="start in paused mode")
+    add(
+        "--queue",
+        dest="queue",
+        default=100,
+        type="int",
+        action="store",
+        metavar="SIZE",
+        help="use an outgoing queue of size SIZE (defaults to %default)",
+    )
+    add("--clock", dest="clock", default=False, action="store_true", help="publish the clock time")
+    add(
+        "--hz",
+        dest="freq",
+        default=100,
+        type="float",
+        action="store",
+        metavar="HZ",
+        help="use a frequency of HZ when publishing clock time (default: %default)",
+    )
+    add(
+        "-d",
+        "--delay",
+        dest="delay",
+        default=0.2,
+        type="float",
+        action="store",
+        metavar="SEC",
+        help="sleep SEC seconds after every advertise call (to allow subscribers to connect)",
+    )
+    add(
+        "-r",
+        "--rate",
+        dest="rate",
+        default=1.0,
+        type="float",
+        action="store",
+        metavar="FACTOR",
+        help="multiply the publish rate by FACTOR",
+    )
+    add(
+        "-s",
+        "--start",
+        dest="start",
+        default=0.0,
+        type="float",
+        action="store",
+        metavar="SEC",
+        help="start SEC seconds into the bag files",
+    )
+    add(
+        "-u",
+        "--duration",
+        dest="duration",
+        default=None,
+        type="float",
+        action="store",
+        metavar="SEC",
+        help="play only SEC seconds from the bag files",
+    )
+    add(
+        "--skip-empty",
+        dest="skip_empty",
+        default=None,
+        type="float",
+        action="store",
+        metavar="SEC",
+        help="skip regions in the bag with no messages for more than SEC seconds",
+    )
+    add("-l", "--loop", dest="loop", default=False, action="store_true", help="loop playback")
+    add(
+        "-k",
+        "--keep-alive",
+        dest="keep_alive",
+        default=False,
+        action="store_true",
+        help="keep alive past end of bag (useful for publishing latched topics)",
+    )
+    add(
+        "--try-future-version",
+        dest="try_future",
+        default=False,
+        action="store_true",
+        help="still try to open a bag file, even if the version number is not known to the player",
+    )
+    add(
+        "--topics",
+        dest="topics",
+        default=[],
+        callback=_collect("topics"),
+        action="callback",
+        help="topics to play back",
+    )
+    add(
+        "--pause-topics",
+        dest="pause_topics",
+        default=[],
+        callback=_collect("pause_topics"),
+        action="callback",
+        help="topics to pause on during playback",
+    )
+    add("--bags", help="bags files to play back from")
+    add(
+        "--wait-for-subscribers",
+        dest="wait_for_subscribers",
+        default=False,
+        action="store_true",
+        help="wait for at least one subscriber on each topic before publishing",
+    )
+    add(
+        "--rate-control-topic",
+        dest="rate_control_topic",
+        default="",
+        type="str",
+        help="watch the given topic, and if the last publish was more than "
+        "<rate-control-max-delay> ago, wait until the topic publishes again to continue playback",
+    )
+    add(
+        "--rate-control-max-delay",
+        dest="rate_control_max_delay",
+        default=1.0,
+        type="float",
+        help="maximum time difference from <rate-control-topic> before pausing",
+    )
+    return p
+
+
+def _log(env: Environment, level: str, text: str) -> None:
+    now = time.time_ns()
+    line = f"[{level:>5}] [{now // 1_000_000_000}.{now % 1_000_000_000:09d}]: {text}\n"
+    (env.stdout if level == "INFO" else env.stderr).write(line)
+    (env.stdout if level == "INFO" else env.stderr).flush()
+
+
+def _remaps(argv: list[str]) -> dict[str, str]:
+    return dict(a.split(":=", 1) for a in argv if ":=" in a and not a.startswith("__"))
+
+
+def play(argv: list[str], env: Environment) -> int:
+    """Run ``rosbag play ARGV…``."""
+    remaps = _remaps(argv)
+    parser = build_parser(env)
+    options, args = parser.parse(strip_remap_args(argv))
+    if options.bags:
+        args.append(options.bags)
+    if not args:
+        parser.error("You must specify at least 1 bag file to play back.")
+    unsupported = [
+        name
+        for name, given in (
+            ("--pause-topics", options.pause_topics),
+            ("--wait-for-subscribers", options.wait_for_subscribers),
+            ("--rate-control-topic", options.rate_control_topic),
+        )
+        if given
+    ]
+    if unsupported:
+        env.err(f"rosx does not support {', '.join(unsupported)} yet; ignored.")
+
+    from rosx.bag.errors import BagError, BagUnindexedError  # noqa: PLC0415
+    from rosx.bag.player import Player, PlayOptions  # noqa: PLC0415
+    from rosx.bag.reader import BagReader  # noqa: PLC0415
+    from rosx.node import Node  # noqa: PLC0415
+
+    bags: list[BagReader] = []
+    try:
+        for path in args:
+            _log(env, "INFO", f"Opening {path}")
+            try:
+                bags.append(BagReader(path))
+            except BagUnindexedError:
+                _log(env, "FATAL", f"Bag unindexed: {path}.  Run rosbag reindex.")
+                return ExitStatus.ERROR
+            except OSError:
+                _log(env, "FATAL", f"Error opening file: {path}")
+                return ExitStatus.ERROR
+            except BagError as exc:
+                _log(env, "FATAL", f"Error reading {path}: {exc}")
+                return ExitStatus.ERROR
+        uri = env.master_uri
+        node = Node(
+            f"play_{time.time_ns()}", master_uri=uri, environ=env.environ, remappings=remaps
+        )
+        try:
+            node.start()
+        except Exception:
+            node.shutdown("start-up failed")
+            raise unreachable(env, uri) from None
+        try:
+            player = Player(
+                node,
+                bags,
+                PlayOptions(
+                    prefix=options.prefix,
+                    quiet=options.quiet,
+                    immediate=options.immediate,
+                    pause=options.pause,
+                    queue_size=options.queue,
+                    clock=options.clock,
+                    hz=options.freq,
+                    delay=options.delay,
+                    rate=options.rate,
+                    start=options.start,
+                    duration=options.duration,
+                    skip_empty=options.skip_empty,
+                    loop=options.loop,
+                    keep_alive=options.keep_alive,
+                    topics=options.topics,
+                ),
+                status=None if options.quiet else _writer(env),
+            )
+            return _run(player, options, env)
+        finally:
+            node.shutdown("rosbag play exited")
+    finally:
+        for bag in bags:
+            bag.close()
+
+
+def _writer(env: Environment) -> Any:
+    def write(text: str) -> None:
+        env.stdout.write(text)
+        env.stdout.flush()
+
+    return write
+
+
+def _run(player: Player, options: optparse.Values, env: Environment) -> int:
+    player.advertise()
+    if options.delay > 0:
+        env.stdout.write(f"\nWaiting {options.delay:g} seconds after advertising topics...")
+        env.stdout.flush()
+        time.sleep(options.delay)
+        env.stdout.write(" done.\n")
+    env.stdout.write("\nHit space to toggle paused, or 's' to step.\n")
+    env.stdout.flush()
+    worker = threading.Thread(target=player.run, name="rosx-play", daemon=True)
+    with _signals_stop(player), _keys(player, env):
+        worker.start()
+        while worker.is_alive():
+            worker.join(0.1)
+    env.stdout.write("\nDone.\n")
+    env.stdout.flush()
+    return ExitStatus.OK
+
+
+@contextlib.contextmanager
+def _signals_stop(player: Player) -> Iterator[None]:
+    def handler(signum: int, frame: FrameType | None) -> None:
+        player.stop()
+
+    previous = {s: signal.signal(s, handler) for s in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        yield
+    finally:
+        for signum, old in previous.items():
+            signal.signal(signum, old)
+
+
+@contextlib.contextmanager
+def _keys(player: Player, env: Environment) -> Iterator[None]:
+    """Space and ``s`` from a terminal on stdin, read without echo or line buffering."""
+    stdin = env.stdin
+    isatty = getattr(stdin, "isatty", None)
+    if not (isatty and isatty()) or sys.platform == "win32":
+        yield
+        return
+    import select  # noqa: PLC0415
+    import termios  # noqa: PLC0415
+    import tty  # noqa: PLC0415
+
+    fd = stdin.fileno()
+    saved = termios.tcgetattr(fd)
+    tty.setcbreak(fd)
+    done = threading.Event()
+
+    def read_keys() -> None:
+        while not done.is_set():
+            ready, _, _ = select.select([fd], [], [], 0.1)
+            if not ready:
+                continue
+            key = stdin.read(1)
+            if key == " ":
+                player.toggle_pause()
+            elif key == "s":
+                player.step()
+
+    reader = threading.Thread(target=read_keys, name="rosx-play-keys", daemon=True)
+    reader.start()
+    try:
+        yield
+    finally:
+        done.set()
+        reader.join()
+        termios.tcsetattr(fd, termios.TCSADRAIN, saved)

@@ -1,0 +1,271 @@
+"""Playing bags back: raw publications, one per topic, timed as the messages were recorded.
+
+The player never decodes a message: each topic is advertised with the type, md5sum and
+definition its connection recorded (latching if a recorded publisher latched), and the stored
+bytes are published as they are. Messages of every bag are merged in time order.
+
+Timing (ROS 1's ``rosbag play``, tools/rosbag/src/player.cpp): a message recorded ``d``
+seconds after the first one played is published ``d / rate`` seconds after playback began,
+plus the time spent paused; ``immediate`` publishes without waiting; ``skip_empty`` shortens
+gaps longer than that many seconds to nothing. ``start`` and ``duration`` select a window of
+the bags (seconds from the bags' start); ``loop`` plays again from the start; ``keep_alive``
+keeps the node (and its latched topics) up until stopped. With ``clock`` the bag time is
+published on ``/clock`` at ``hz``. `Player.toggle_pause` and `Player.step` serve the keys.
+"""
+
+from __future__ import annotations
+
+import heapq
+import threading
+import time
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from collections.abc import Callable, Iterator
+
+    from rosx.bag.reader import BagReader, Connection
+    from rosx.node import Node, Publisher
+
+_NS = 1_000_000_000
+#: Seconds between two status lines.
+_STATUS_PERIOD = 0.1
+
+
+class PlayOptions:
+    """What ``rosbag play`` was asked to do (see the module's docstring)."""
+
+    def __init__(
+        self,
+        *,
+        prefix: str = "",
+        quiet: bool = False,
+        immediate: bool = False,
+        pause: bool = False,
+        queue_size: int = 100,
+        clock: bool = False,
+        hz: float = 100.0,
+        delay: float = 0.2,
+        rate: float = 1.0,
+        start: float = 0.0,
+        duration: float | None = None,
+        skip_empty: float | None = None,
+        loop: bool = False,
+        keep_alive: bool = False,
+        topics: list[str] | None = None,
+    ) -> None:
+        self.prefix = prefix
+        self.quiet = quiet
+        self.immediate = immediate
+        self.pause = pause
+        self.queue_size = queue_size
+        self.clock = clock
+        self.hz = hz
+        self.delay = delay
+        self.rate = rate
+        self.start = start
+        self.duration = duration
+        self.skip_empty = skip_empty
+        self.loop = loop
+        self.keep_alive = keep_alive
+        self.topics = topics or []
+
+
+class Player:
+    """One ``rosbag play`` run on a started node (see the module's docstring)."""
+
+    def __init__(
+        self,
+        node: Node,
+        bags: list[BagReader],
+        options: PlayOptions,
+        status: Callable[[str], None] | None = None,
+    ) -> None:
+        self.node = node
+        self.bags = bags
+        self.options = options
+        self.status = status
+        self._publishers: dict[str, Publisher] = {}
+        self._cond = threading.Condition()
+        self.paused = options.pause
+        self._steps = 0
+        self._stopped = threading.Event()
+        self._bag_now = 0
+        self.published = 0
+        #: (wall time it was due, wall time it went) of each message, when asked for.
+        self.timing: list[tuple[float, float]] | None = None
+
+    # -- control (any thread) ----------------------------------------------------------------
+
+    def toggle_pause(self) -> None:
+        """Pause, or resume."""
+        with self._cond:
+            self.paused = not self.paused
+            self._cond.notify_all()
+
+    def step(self) -> None:
+        """While paused: publish the next message."""
+        with self._cond:
+            if self.paused:
+                self._steps += 1
+                self._cond.notify_all()
+
+    def stop(self) -> None:
+        """End playback (the run returns soon after)."""
+        self._stopped.set()
+        with self._cond:
+            self._cond.notify_all()
+
+    @property
+    def stopped(self) -> bool:
+        """Whether `stop` was called."""
+        return self._stopped.is_set()
+
+    # -- setting up --------------------------------------------------------------------------
+
+    def _connections(self) -> dict[int, list[int]]:
+        wanted = set(self.options.topics)
+        return {
+            i: [c.id for c in bag.connections.values() if not wanted or c.topic in wanted]
+            for i, bag in enumerate(self.bags)
+        }
+
+    def advertise(self) -> None:
+        """Advertise every topic to be played."""
+        chosen = self._connections()
+        by_topic: dict[str, list[Connection]] = {}
+        for i, bag in enumerate(self.bags):
+            for conn_id in chosen[i]:
+                conn = bag.connections[conn_id]
+                by_topic.setdefault(conn.topic, []).append(conn)
+        for topic, conns in by_topic.items():
+            first = conns[0]
+            self._publishers[topic] = self.node.advertise_raw(
+                self.options.prefix + topic,
+                first.type,
+                first.md5sum,
+                first.message_definition,
+                queue_size=self.options.queue_size,
+                latch=any(c.latching for c in conns),
+            )
+
+    def _window(self) -> tuple[int, int, int | None]:
+        starts = [b.start_time for b in self.bags if b.start_time is not None]
+        ends = [b.end_time for b in self.bags if b.end_time is not None]
+        bag_start = min(starts) if starts else 0
+        bag_end = max(ends) if ends else 0
+        first = bag_start + int(self.options.start * _NS)
+        last = first + int(self.options.duration * _NS) if self.options.duration else None
+        return bag_start, bag_end, last
+
+    def _messages(self) -> Iterator[tuple[Connection, int, bytes]]:
+        chosen = self._connections()
+        bag_start, _, last = self._window()
+        first = bag_start + int(self.options.start * _NS)
+        streams = [
+            bag.messages(set(chosen[i]), first, last)
+            for i, bag in enumerate(self.bags)
+            if chosen[i]
+        ]
+        return heapq.merge(*streams, key=lambda m: m[1])
+
+    # -- playing -----------------------------------------------------------------------------
+
+    def run(self) -> None:
+        """Play (and loop, and keep alive) until done or stopped."""
+        clock = None
+        if self.options.clock:
+            clock = threading.Thread(
+                target=self._publish_clock, name="rosx-play-clock", daemon=True
+            )
+            clock.start()
+        try:
+            while not self.stopped:
+                self._play_once()
+                if not self.options.loop:
+                    break
+            if self.options.keep_alive:
+                self._stopped.wait()
+        finally:
+            self._stopped.set()
+            if clock is not None:
+                clock.join()
+
+    def _play_once(self) -> None:
+        bag_start, bag_end, _ = self._window()
+        total = (bag_end - bag_start) / _NS
+        rate = self.options.rate if self.options.rate > 0 else 1.0
+        skip = int(self.options.skip_empty * _NS) if self.options.skip_empty else 0
+        origin_wall: float | None = None
+        origin_bag = 0
+        previous = 0
+        last_status = 0.0
+        for conn, stamp, data in self._messages():
+            if origin_wall is None:
+                origin_wall, origin_bag, previous = time.monotonic(), stamp, stamp
+            if skip and stamp - previous > skip:
+                origin_bag += stamp - previous
+            previous = stamp
+            due = origin_wall + (stamp - origin_bag) / _NS / rate
+            shift = self._wait(due)
+            if shift is None:
+                return
+            origin_wall += shift
+            self._bag_now = stamp
+            publisher = self._publishers.get(conn.topic)
+            if publisher is not None:
+                publisher.publish_serialized(data)
+                self.published += 1
+                if self.timing is not None:
+                    self.timing.append((due + shift, time.monotonic()))
+            now = time.monotonic()
+            if self.status is not None and now - last_status >= _STATUS_PERIOD:
+                last_status = now
+                state = "PAUSED " if self.paused else "RUNNING"
+                self.status(
+                    f"\r [{state}]  Bag Time: {stamp / _NS:13.6f}   "
+                    f"Duration: {(stamp - bag_start) / _NS:.6f} / {total:.6f}               \r"
+                )
+
+    def _wait(self, due: float) -> float | None:
+        """Sleep until ``due`` (wall, monotonic), honouring pauses; the time spent paused, or
+        None once stopped."""
+        paused_for = 0.0
+        with self._cond:
+            while True:
+                if self.stopped:
+                    return None
+                if self.paused:
+                    if self._steps:
+                        self._steps -= 1
+                        return max(paused_for, time.monotonic() - due)
+                    began = time.monotonic()
+                    self._cond.wait(0.1)
+                    paused_for += time.monotonic() - began
+                    continue
+                if self.options.immediate:
+                    return paused_for
+                remaining = due + paused_for - time.monotonic()
+                if remaining <= 0:
+                    return paused_for
+                if remaining > 0.002:
+                    self._cond.wait(min(remaining - 0.001, 0.1))
+                    continue
+                while time.monotonic() < due + paused_for:  # the last stretch: sleeps overshoot
+                    pass
+                return paused_for
+
+    def _publish_clock(self) -> None:
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+        from rosx.msg.codec.rostime import Time  # noqa: PLC0415
+
+        clock_class = get_message_class("rosgraph_msgs/Clock")
+        publisher = self.node.advertise("/clock", clock_class, queue_size=1)
+        period = 1.0 / self.options.hz if self.options.hz > 0 else 0.01
+        while not self._stopped.wait(period):
+            if self._bag_now:
+                msg = clock_class()
+                msg.clock = Time(self._bag_now // _NS, self._bag_now % _NS)
+                publisher.publish(msg)
+
+
+__all__ = ["PlayOptions", "Player"]

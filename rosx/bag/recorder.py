@@ -1,0 +1,441 @@
+"""Recording topics into bags: a node's raw subscriptions feeding a `BagWriter`.
+
+The recorder never decodes a message. It subscribes with rospy's ``AnyMsg`` (type ``*``), so
+every publisher's frames arrive as `RawMessage` objects carrying the bytes and the publisher's
+connection header; each (topic, header) pair becomes one connection of the bag, as in ROS 1.
+
+The contract (ROS 1's ``rosbag record``, tools/rosbag/src/recorder.cpp):
+
+* A callback only stamps the message with the wall clock and queues it; one writer thread
+  writes the queue to the bag, so a slow disk never stalls a subscription. The queue holds at
+  most ``buffer_size`` bytes (0: unbounded); when full, the oldest queued message is dropped with
+  ROS 1's warning (at most one every 5 s). Every message the queue holds when recording stops
+  is written before the bag closes.
+* The file is ``NAME.bag.active`` while being written; each chunk reaches the disk when it
+  closes (at ``chunk_size`` bytes, or after `FLUSH_PERIOD` seconds), so a recorder that is
+  killed leaves a bag that ``rosbag reindex`` restores; on a clean stop the index is written
+  and the file renamed to ``NAME.bag``.
+* Topics: those named (resolved in the node's namespace), ``all`` topics, those matching
+  ``regex`` patterns (whole-name matches), those a ``node`` subscribes to; minus ``exclude``.
+  Topics that appear later are picked up by asking the master every `DISCOVERY_PERIOD` s.
+* ``limit`` messages per topic, then that topic is unsubscribed; when every named topic has
+  its count, recording stops. ``max_size`` / ``max_duration`` stop the recording, or with
+  ``split`` start the next file ``NAME_<n>.bag``, keeping at most ``max_splits`` files.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+import threading
+import time
+from collections import deque
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from rosx.bag.writer import DEFAULT_CHUNK_THRESHOLD, BagWriter
+from rosx.master.client import MasterError
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
+
+    from rosx.node import Node, RawMessage, Subscriber
+
+#: Seconds between two looks at the master for new topics.
+DISCOVERY_PERIOD = 0.5
+#: Seconds after which an open chunk is written out even if it is not full.
+FLUSH_PERIOD = 1.0
+#: Seconds `Recorder.stop` waits for messages already read to reach the queue.
+DRAIN_TIMEOUT = 30.0
+_WARN_PERIOD = 5.0
+
+
+def _pending_bytes(sock: Any) -> int:
+    """Bytes waiting in ``sock``'s receive buffer (0 when unknown)."""
+    if sock is None:
+        return 0
+    try:
+        import fcntl  # noqa: PLC0415
+        import termios  # noqa: PLC0415
+
+        raw = fcntl.ioctl(sock.fileno(), termios.FIONREAD, b"\0\0\0\0")
+    except (ImportError, OSError, ValueError):
+        return 0
+    return int.from_bytes(raw, "little")
+
+
+class RecordOptions:
+    """What ``rosbag record`` was asked to do (see the module's contract)."""
+
+    def __init__(
+        self,
+        *,
+        topics: list[str] | None = None,
+        record_all: bool = False,
+        regex: bool = False,
+        exclude: str = "",
+        prefix: str = "",
+        append_date: bool = True,
+        split: bool = False,
+        max_size: int = 0,
+        max_duration: float = 0.0,
+        max_splits: int = 0,
+        limit: int = 0,
+        node: str = "",
+        compression: str = "none",
+        buffer_size: int = 256 * 1024 * 1024,
+        chunk_size: int = DEFAULT_CHUNK_THRESHOLD,
+        tcp_nodelay: bool = False,
+    ) -> None:
+        self.topics = sorted(set(topics or []))
+        self.record_all = record_all
+        self.regex = regex
+        self.exclude = re.compile(exclude) if exclude else None
+        self.patterns = [re.compile(t) for t in self.topics] if regex else []
+        self.prefix = prefix
+        self.append_date = append_date
+        self.split = split
+        self.max_size = max_size
+        self.max_duration = max_duration
+        self.max_splits = max_splits
+        self.limit = limit
+        self.node = node
+        self.compression = compression
+        self.buffer_size = buffer_size
+        self.chunk_size = chunk_size
+        self.tcp_nodelay = tcp_nodelay
+
+
+def bag_name(prefix: str, append_date: bool, split_index: int | None, now: float) -> str:
+    """ROS 1's file name: ``PREFIX_DATE_N.bag`` with the parts that apply."""
+    if prefix.endswith(".bag"):
+        prefix = prefix[:-4]
+    parts = [prefix] if prefix else []
+    if append_date:
+        parts.append(time.strftime("%Y-%m-%d-%H-%M-%S", time.localtime(now)))
+    if split_index is not None:
+        parts.append(str(split_index))
+    if not parts:
+        raise ValueError(
+            "Bag filename is empty (neither of these was specified: prefix, append_date, split)"
+        )
+    return "_".join(parts) + ".bag"
+
+
+class Recorder:
+    """One ``rosbag record`` run on a started node (see the module's contract)."""
+
+    def __init__(
+        self,
+        node: Node,
+        options: RecordOptions,
+        log: Callable[[str, str], None],
+    ) -> None:
+        self.node = node
+        self.options = options
+        self.log = log  # (level, text): "INFO", "WARN", "ERROR"
+        self._lock = threading.Condition()
+        self._queue: deque[tuple[str, dict[str, str], int, bytes]] = deque()
+        self._queued_bytes = 0
+        self._last_warning = 0.0
+        self._subscribers: dict[str, Subscriber] = {}
+        self._counts: dict[str, int] = {}
+        self._done_topics: set[str] = set()
+        self._stopping = threading.Event()
+        self._closing = False
+        #: Set once recording has stopped for good (all written, files closed).
+        self.finished = threading.Event()
+        self.error: str | None = None
+        self._writer: BagWriter | None = None
+        self._target = ""
+        self._split_index = 0
+        self._files: deque[str] = deque()
+        self._started = time.time()
+        self._file_start = 0
+        self._threads: list[threading.Thread] = []
+        self.written = 0
+        self.dropped = 0
+        self._conns: dict[tuple[str, int], int] = {}
+        self._headers_kept: list[dict[str, str]] = []
+
+    # -- lifecycle ---------------------------------------------------------------------------
+
+    def start(self) -> None:
+        """Open the first bag, subscribe, start the writer (and discovery, when asked)."""
+        self._open_bag()
+        for topic in self.options.topics if not self.options.regex else []:
+            self._subscribe(self.node.resolve(topic))
+        writer = threading.Thread(target=self._write_loop, name="rosx-record", daemon=True)
+        self._threads.append(writer)
+        writer.start()
+        if self.options.record_all or self.options.regex or self.options.node:
+            self._discover()
+            watcher = threading.Thread(target=self._watch, name="rosx-record-master", daemon=True)
+            self._threads.append(watcher)
+            watcher.start()
+
+    def stop(self) -> None:
+        """Stop reading, write everything received, close the bag (idempotent, any thread).
+
+        The connections are shut first; what their reader threads had already taken in still
+        reaches the callbacks (waited for, up to `DRAIN_TIMEOUT`), then the writer's queue.
+        """
+        self._closing = True
+        subscribers = list(self._subscribers.values())
+        receivers = [sub.subscription.receiver for sub in subscribers]
+        # What had reached this host when asked to stop: the bytes each socket holds.
+        targets = []
+        for sub in subscribers:
+            for stream in list(sub.subscription.streams.values()):
+                targets.append((stream, stream.bytes_received + _pending_bytes(stream.sock)))
+        deadline = time.monotonic() + DRAIN_TIMEOUT
+
+        def drained() -> bool:
+            return all(r.received <= r.handled for r in receivers) and all(
+                stream.closed or stream.bytes_received >= target for stream, target in targets
+            )
+
+        while time.monotonic() < deadline and not drained():
+            time.sleep(0.01)
+        for sub in subscribers:
+            subscription = sub.subscription
+            for stream in list(subscription.streams.values()):
+                subscription.receiver.detach(stream)
+        while time.monotonic() < deadline and any(r.received > r.handled for r in receivers):
+            time.sleep(0.01)
+        for sub in subscribers:
+            with contextlib.suppress(Exception):
+                sub.unregister()
+        self._stopping.set()
+        with self._lock:
+            self._lock.notify_all()
+        for thread in self._threads:
+            if thread is not threading.current_thread():
+                thread.join()
+        self.finished.set()
+
+    def request_stop(self) -> None:
+        """Ask the recording to stop (from a callback or a thread that must not wait)."""
+        if not self._stopping.is_set():
+            self._stopping.set()
+            with self._lock:
+                self._lock.notify_all()
+
+    @property
+    def stopping(self) -> bool:
+        """Whether recording has been asked to stop."""
+        return self._stopping.is_set()
+
+    # -- subscriptions -----------------------------------------------------------------------
+
+    def _wanted(self, topic: str, from_node: bool = False) -> bool:
+        if topic in self._subscribers or topic in self._done_topics:
+            return False
+        if self.options.exclude is not None and self.options.exclude.fullmatch(topic):
+            return False
+        if self.options.record_all or from_node:
+            return True
+        if self.options.regex:
+            return any(p.fullmatch(topic) for p in self.options.patterns)
+        return topic in self.options.topics
+
+    def _subscribe(self, topic: str) -> None:
+        if topic in self._subscribers or self._stopping.is_set() or self._closing:
+            return
+        self.log("INFO", f"Subscribing to {topic}")
+
+        def queue(msg: RawMessage, topic: str = topic) -> None:
+            self._on_message(topic, msg)
+
+        self._subscribers[topic] = self.node.subscribe(
+            topic, None, queue, queue_size=None, tcp_nodelay=self.options.tcp_nodelay
+        )
+
+    def _discover(self) -> None:
+        try:
+            topics = [t for t, _ in self.node.master.call("getPublishedTopics", "")]
+        except Exception:  # a master gone for a moment: look again later
+            return
+        for topic in sorted(topics):
+            if self._wanted(topic):
+                self._subscribe(topic)
+        if self.options.node:
+            for topic in self._node_subscriptions():
+                if self._wanted(topic, from_node=True):
+                    self._subscribe(topic)
+
+    def _node_subscriptions(self) -> list[str]:
+        master = self.node.master
+        try:
+            uri = str(master.call("lookupNode", self.node.resolve(self.options.node)))
+        except Exception:
+            return []
+        try:
+            subscriptions = master.node_call(uri, "getSubscriptions", timeout=2.0)
+        except MasterError:
+            self.log("ERROR", f"Node at: [{uri}] failed to return subscriptions.")
+            return []
+        except Exception:
+            return []
+        return [str(t) for t, _ in subscriptions]
+
+    def _watch(self) -> None:
+        while not self._stopping.wait(DISCOVERY_PERIOD):
+            self._discover()
+
+    # -- the queue ---------------------------------------------------------------------------
+
+    def _on_message(self, topic: str, msg: RawMessage) -> None:
+        stamp = time.time_ns()
+        if self._stopping.is_set() or topic in self._done_topics:
+            return
+        data = msg._buff
+        header = msg._connection_header  # one dict per publisher connection, never changed
+        limit = self.options.limit
+        with self._lock:
+            if limit:
+                count = self._counts.get(topic, 0)
+                if count >= limit:
+                    return
+                self._counts[topic] = count + 1
+            self._queue.append((topic, header, stamp, data))
+            self._queued_bytes += len(data)
+            budget = self.options.buffer_size
+            while budget and self._queued_bytes > budget and len(self._queue) > 1:
+                dropped = self._queue.popleft()
+                self._queued_bytes -= len(dropped[3])
+                self.dropped += 1
+                now = time.monotonic()
+                if now > self._last_warning + _WARN_PERIOD:
+                    self._last_warning = now
+                    self.log(
+                        "WARN", "rosbag record buffer exceeded.  Dropping oldest queued message."
+                    )
+            self._lock.notify()
+        if limit and self._counts[topic] >= limit:
+            self._topic_done(topic)
+
+    def _topic_done(self, topic: str) -> None:
+        self._done_topics.add(topic)
+        sub = self._subscribers.pop(topic, None)
+        if sub is not None:
+            threading.Thread(target=sub.unregister, daemon=True).start()
+        named = {self.node.resolve(t) for t in self.options.topics}
+        if not self.options.regex and named and named <= self._done_topics:
+            self.request_stop()
+
+    # -- the writer thread -------------------------------------------------------------------
+
+    def _write_loop(self) -> None:
+        last_flush = time.monotonic()
+        try:
+            while True:
+                with self._lock:
+                    if not self._queue and not self._stopping.is_set():
+                        self._lock.wait(FLUSH_PERIOD / 2)
+                    batch, self._queue = self._queue, deque()
+                    self._queued_bytes = 0
+                for topic, header, stamp, data in batch:
+                    self._write(topic, header, stamp, data)
+                now = time.monotonic()
+                if now - last_flush >= FLUSH_PERIOD and self._writer is not None:
+                    self._writer.flush()
+                    last_flush = now
+                self._check_wall_duration()
+                if self._stopping.is_set() and not self._queue:
+                    break
+        except OSError as exc:
+            self.error = f"Error writing: {exc}"
+            self.log("ERROR", self.error)
+        finally:
+            self._close_bag()
+            self.request_stop()
+
+    def _connection(self, writer: BagWriter, topic: str, header: dict[str, str]) -> int:
+        key = (topic, id(header))
+        conn = self._conns.get(key)
+        if conn is None:
+            recorded = dict(header)
+            recorded["topic"] = topic
+            conn = self._conns[key] = writer.add_connection(topic, recorded)
+            self._headers_kept.append(header)  # keeps id(header) unique while cached
+        return conn
+
+    def _write(self, topic: str, header: dict[str, str], stamp: int, data: bytes) -> None:
+        writer = self._writer
+        if writer is None:
+            return
+        if self.options.max_duration and stamp - self._file_start > self.options.max_duration * 1e9:
+            if not self.options.split:
+                self.request_stop()
+                return
+            while stamp - self._file_start > self.options.max_duration * 1e9:
+                self._next_file()
+                self._file_start += int(self.options.max_duration * 1e9)
+            writer = self._writer
+            assert writer is not None
+        writer.write(self._connection(writer, topic, header), stamp, data)
+        self.written += 1
+        if self.options.max_size and writer.size > self.options.max_size:
+            if self.options.split:
+                self._next_file()
+            else:
+                self.request_stop()
+
+    def _check_wall_duration(self) -> None:
+        limit = self.options.max_duration
+        if limit and not self.options.split and time.time() - self._started > limit:
+            self.request_stop()
+
+    # -- files -------------------------------------------------------------------------------
+
+    def _open_bag(self) -> None:
+        split = self._split_index if self.options.split else None
+        self._target = bag_name(self.options.prefix, self.options.append_date, split, time.time())
+        self._conns = {}
+        self._writer = BagWriter(
+            self._target + ".active",
+            compression=self.options.compression,
+            chunk_threshold=self.options.chunk_size,
+        )
+        if not self._file_start:
+            self._file_start = time.time_ns()
+        self.log("INFO", f"Recording to '{self._target}'.")
+
+    def _close_bag(self) -> None:
+        writer, self._writer = self._writer, None
+        if writer is None:
+            return
+        self.log("INFO", f"Closing '{self._target}'.")
+        try:
+            writer.close()
+        except OSError as exc:
+            self.log("ERROR", f"Error closing '{self._target}': {exc}")
+            return
+        Path(writer.path).replace(self._target)
+
+    def _next_file(self) -> None:
+        self._close_bag()
+        self._split_index += 1
+        if self.options.max_splits > 0:
+            self._files.append(self._target)
+            if len(self._files) > self.options.max_splits:
+                oldest = self._files.popleft()
+                try:
+                    Path(oldest).unlink()
+                except OSError as exc:
+                    self.log("ERROR", f"Unable to remove {oldest}: {os.strerror(exc.errno or 0)}")
+        self._open_bag()
+
+    @property
+    def target(self) -> str:
+        """The name of the bag being written (without ``.active``)."""
+        return self._target
+
+    def stats(self) -> dict[str, Any]:
+        """Messages written and dropped so far."""
+        return {"written": self.written, "dropped": self.dropped}
+
+
+__all__ = ["RecordOptions", "Recorder", "bag_name"]

@@ -1,0 +1,164 @@
+"""Field paths into messages, as ``rostopic echo /topic/field[1:3]/x`` selects them.
+
+A path is the part of the name after the topic: fields separated by ``/``, each optionally
+followed by an index ``[i]`` or a slice ``[a:b:c]`` (Python semantics, negative numbers allowed).
+When a slice selects several messages, the rest of the path applies to each of them and the
+result is a list. Errors carry rostopic's texts; rostopic prints them to stderr and then echoes
+the whole message (a path it cannot parse) or skips the message (a missing field or element).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from rosx.msg.spec import PRIMITIVE_TYPES, MsgSpec
+
+if TYPE_CHECKING:
+    from rosx.msg.store import TypeStore
+
+
+class FieldPathError(ValueError):
+    """A path that cannot be parsed or does not fit the message; ``str()`` is rostopic's text."""
+
+
+@dataclass(frozen=True)
+class Step:
+    """One field of a path and what is taken of it: all, one element, or a slice."""
+
+    field: str
+    selector: int | slice | None = None
+
+
+@dataclass(frozen=True)
+class FieldPath:
+    """A parsed path; ``text`` is as written (rostopic quotes it in its errors)."""
+
+    text: str
+    steps: tuple[Step, ...]
+
+    def evaluate(self, msg: object) -> Any:
+        """The selected value of ``msg``; `FieldPathError` if a field or element is missing."""
+        return self._walk(msg, 0)
+
+    def _walk(self, value: Any, start: int) -> Any:
+        for position in range(start, len(self.steps)):
+            step = self.steps[position]
+            try:
+                value = getattr(value, step.field)
+            except AttributeError:
+                raise FieldPathError(f"no field named {step.field} in {self.text}") from None
+            if step.selector is None:
+                continue
+            try:
+                value = value[step.selector]
+            except (IndexError, TypeError) as error:
+                raise FieldPathError(f"{error}: {self.text}") from None
+            if isinstance(value, list):
+                return [self._walk(item, position + 1) for item in value]
+        return value
+
+
+def parse_field_path(text: str) -> FieldPath:
+    """Parse ``/a/b[2]/c[1:-1]``; an empty path (``''`` or ``/``) selects the whole message."""
+    steps: list[Step] = []
+    for part in (p for p in text.split("/") if p):
+        if "[" not in part:
+            steps.append(Step(part))
+            continue
+        name, rest = part.split("[", 1)
+        if not rest.endswith("]"):
+            raise FieldPathError(f"missing closing ']' in slice spec '{part}'")
+        inside = rest[:-1]
+        try:
+            selector = _selector(inside)
+        except ValueError as error:
+            raise FieldPathError(
+                f"field '{name}' has invalid slice argument '{inside}': {error}"
+            ) from None
+        steps.append(Step(name, selector))
+    return FieldPath(text, tuple(steps))
+
+
+def _integer(text: str, what: str) -> int:
+    try:
+        return int(text)
+    except ValueError:
+        raise ValueError(f"non-integer {what} '{text}'") from None
+
+
+def _selector(text: str) -> int | slice:
+    if text == "":
+        raise ValueError("empty array index")
+    parts = text.split(":")
+    if len(parts) == 1:
+        # rostopic's own wording for a bad single index.
+        return _integer(parts[0], "array index step")
+    bounds: list[int | None] = [None, None, None]
+    for position, what in enumerate(("slice start", "slice stop", "slice step")):
+        if position < len(parts) and parts[position] != "":
+            bounds[position] = _integer(parts[position], what)
+    if len(parts) > 3:
+        raise ValueError("too many slice arguments")
+    return slice(*bounds)
+
+
+def field_type(lookup: Callable[[str], MsgSpec], msg_type: str, path: FieldPath) -> str | None:
+    """The declared type of the last field of ``path`` in ``msg_type`` (None for no fields).
+
+    As rostopic's, it ignores indices: ``/data[0]`` of a ``uint8[]`` field is ``uint8[]``.
+    ``lookup`` finds a message spec by name (e.g. ``TypeStore.msg``); the fields of a ``time``
+    or ``duration`` are ``secs`` and ``nsecs``, both ``int32``.
+    """
+    found: str | None = None
+    for step in path.steps:
+        owner = msg_type if found is None else found.split("[", 1)[0]
+        if owner in ("time", "duration"):
+            fields = {"secs": "int32", "nsecs": "int32"}
+        elif owner in PRIMITIVE_TYPES:
+            fields = {}
+        else:
+            fields = {field.name: field.type for field in lookup(owner).fields}
+        found = fields.get(step.field)
+        if found is None:
+            raise FieldPathError(f"no field named {step.field} in {path.text}")
+    return found
+
+
+def find_topic(
+    name: str, types: dict[str, str], store: TypeStore | None = None
+) -> tuple[str, str] | None:
+    """The topic ``name`` denotes, itself or the longest topic it is a field path of.
+
+    A topic whose type has no such field (in ``store``: the standard types by default) is
+    skipped, as ROS 1 does.
+    """
+    if name in types:
+        return name, types[name]
+    from rosx.msg.store import TypeStore, UnknownTypeError  # noqa: PLC0415 - parsed only for field paths
+
+    store = TypeStore([]) if store is None else store
+    for topic in sorted((t for t in types if name.startswith(t + "/")), reverse=True):
+        path = name[len(topic) + 1 :].rstrip("/").split("[")[0]
+        if not path:
+            return topic, types[topic]
+        try:
+            spec_type = types[topic]
+            for part in path.split("/"):
+                field = next(f for f in store.msg(spec_type).fields if f.name == part)
+                spec_type = field.base_type
+        except (StopIteration, UnknownTypeError):
+            continue
+        return topic, types[topic]
+    return None
+
+
+__all__ = [
+    "FieldPath",
+    "FieldPathError",
+    "Step",
+    "field_type",
+    "find_topic",
+    "parse_field_path",
+]

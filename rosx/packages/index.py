@@ -1,0 +1,162 @@
+"""The package index: which ROS packages exist and where, as ``rospack`` answers them.
+
+Packages are the directories holding a ``package.xml`` on ``ROS_PACKAGE_PATH`` (crawled as
+rospack crawls it, `rosx.packages.crawl`), then the packages shipped with rosx that have a
+directory (turtlesim). Others rosx provides without a directory (``rospy``, ``roscpp``,
+``std_msgs``, ``geometry_msgs``…) count as known when they are depended on, so that
+``rospack depends`` of a package made by ``catkin_create_pkg lab2 std_msgs rospy roscpp`` lists
+its dependencies, but ``rospack find`` does not name a directory for them. Which packages the
+message layer provides is not known here (the index sits below it): the caller passes that
+test as ``provides`` (``rospack`` passes the type store's ``has_package``). Dependencies that
+are not known at all are skipped silently, as rospack skips system dependencies.
+
+The type store (`rosx.msg.store`) finds packages' ``msg/`` and ``srv/`` folders through this
+index, and ``rospack``, ``rosrun``, ``roscd`` through it too: one crawl of the package path.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from functools import cached_property
+
+from rosx.packages.crawl import bundled_packages, find_packages, split_package_path
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from collections.abc import Callable, Mapping
+    from pathlib import Path
+
+    from rosx.packages.manifest import Manifest
+
+#: Packages of ROS 1's core that rosx stands in for, without a directory of theirs.
+CORE_PACKAGES = frozenset(
+    {
+        "catkin",
+        "genmsg",
+        "genpy",
+        "message_generation",
+        "message_runtime",
+        "rosbash",
+        "roscpp",
+        "rosgraph",
+        "roslib",
+        "rospack",
+        "rospy",
+        "rostime",
+    }
+)
+
+
+class PackageNotFoundError(LookupError):
+    """No package of that name; ``str()`` is rospack's text."""
+
+    def __init__(self, name: str) -> None:
+        super().__init__(f"[rospack] Error: package '{name}' not found")
+        self.name = name
+
+
+class PackageIndex:
+    """The packages visible from one package path."""
+
+    def __init__(
+        self, package_path: list[Path], provides: Callable[[str], bool] | None = None
+    ) -> None:
+        """Index the packages on ``package_path``.
+
+        Args:
+            package_path: the entries of ``ROS_PACKAGE_PATH``, searched in order.
+            provides: tells whether a package without a directory is provided anyway (by the
+                message layer's standard types); none by default.
+        """
+        self.package_path = package_path
+        self._provides = provides
+        self._manifests: dict[str, Manifest] = {}
+
+    @classmethod
+    def from_environ(
+        cls, environ: Mapping[str, str], provides: Callable[[str], bool] | None = None
+    ) -> PackageIndex:
+        return cls(split_package_path(environ.get("ROS_PACKAGE_PATH")), provides)
+
+    @cached_property
+    def path_packages(self) -> dict[str, Path]:
+        """The packages found on the package path alone, by name."""
+        return find_packages(self.package_path)
+
+    @cached_property
+    def packages(self) -> dict[str, Path]:
+        """Every package with a directory, by name; the package path wins over rosx's own."""
+        found = dict(self.path_packages)
+        for name, directory in bundled_packages().items():
+            found.setdefault(name, directory)
+        return dict(sorted(found.items()))
+
+    def find(self, name: str) -> Path:
+        """The directory of package ``name``; `PackageNotFoundError` if it has none."""
+        directory = self.packages.get(name)
+        if directory is None:
+            raise PackageNotFoundError(name)
+        return directory
+
+    def is_known(self, name: str) -> bool:
+        """Whether ``name`` is a package: with a directory, or one rosx provides."""
+        if name in self.packages or name in CORE_PACKAGES:
+            return True
+        return self._provides is not None and self._provides(name)
+
+    def manifest(self, name: str) -> Manifest | None:
+        """The manifest of ``name``; None for a package rosx provides without one."""
+        cached = self._manifests.get(name)
+        if cached is None:
+            directory = self.packages.get(name)
+            if directory is None:
+                if self.is_known(name):
+                    return None
+                raise PackageNotFoundError(name)
+            from rosx.packages.manifest import read_manifest  # noqa: PLC0415 - XML on first use
+
+            cached = self._manifests[name] = read_manifest(directory)
+        return cached
+
+    def depends1(self, name: str) -> list[str]:
+        """The known run dependencies of ``name``, in manifest order."""
+        manifest = self.manifest(name)
+        if manifest is None:
+            return []
+        return [dep for dep in manifest.run_depends() if self.is_known(dep)]
+
+    def depends(self, name: str) -> list[str]:
+        """Every known run dependency of ``name``, recursively, dependencies first."""
+        from rosx.packages.manifest import ManifestError  # noqa: PLC0415 - XML on first use
+
+        order: list[str] = []
+        visiting: set[str] = {name}
+
+        def visit(package: str) -> None:
+            for dep in self.depends1(package):
+                if dep in visiting or dep in order:
+                    continue
+                visiting.add(dep)
+                # A broken manifest further down is rospack's warning, not this answer's.
+                with contextlib.suppress(ManifestError):
+                    visit(dep)
+                order.append(dep)
+
+        visit(name)
+        return order
+
+    def depends_on1(self, name: str) -> list[str]:
+        """The packages with a directory that run-depend on ``name`` directly."""
+        from rosx.packages.manifest import ManifestError  # noqa: PLC0415 - XML on first use
+
+        users = []
+        for package in self.packages:
+            try:
+                if name in self.depends1(package):
+                    users.append(package)
+            except ManifestError:
+                continue
+        return users
+
+
+__all__ = ["CORE_PACKAGES", "PackageIndex", "PackageNotFoundError", "bundled_packages"]

@@ -1,0 +1,83 @@
+"""The ROS tools that read bags (``rostopic echo/list -b``, ``rosmsg show -b``) and
+``rosx rosbag``'s file commands, on bags written here; golden text as ROS 1 prints it."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from rosx.bag import api
+from rosx.bag.reader import BagReader
+from rosx.msg.codec.classes import get_message_class
+from rosx.msg.codec.rostime import Time
+from tests.support.cli import rosx
+
+String = get_message_class("std_msgs/String")
+Twist = get_message_class("geometry_msgs/Twist")
+
+
+@pytest.fixture
+def bag(tmp_path: Path) -> str:
+    path = tmp_path / "t.bag"
+    with api.Bag(path, "w") as out:
+        for i in range(3):
+            twist = Twist()
+            twist.linear.x = float(i)
+            out.write("/cmd", twist, Time(10 + i))
+            out.write("/chatter", String(data=f"hello {i}"), Time(10 + i, 1))
+    return str(path)
+
+
+def test_echo_from_a_bag(bag: str) -> None:
+    result = rosx("rostopic", "echo", "-b", bag, "/chatter", "-n", "2")
+    assert (result.status, result.out) == (0, 'data: "hello 0"\n---\ndata: "hello 1"\n---\n')
+    every = rosx("rostopic", "echo", "-b", bag, "-a", "-n", "2")
+    assert every.out.startswith("linear: \n  x: 0.0\n")
+    assert every.out.endswith('---\ndata: "hello 0"\n---\n')
+    plot = rosx("rostopic", "echo", "-p", "-b", bag, "/chatter")
+    assert plot.out.splitlines()[:2] == ["%time,field.data", "10000000001,hello 0"]
+
+
+def test_list_and_show_from_a_bag(bag: str) -> None:
+    assert rosx("rostopic", "list", "-b", bag).out == "/cmd\n/chatter\n"
+    shown = rosx("rosmsg", "show", "-b", bag, "geometry_msgs/Twist")
+    assert shown.out.startswith("geometry_msgs/Vector3 linear\n  float64 x\n")
+
+
+def test_filter_compress_decompress(bag: str, tmp_path: Path) -> None:
+    out = str(tmp_path / "even.bag")
+    result = rosx("rosbag", "filter", bag, out, "topic == '/cmd' and m.linear.x != 1")
+    assert result.status == 0, result.err
+    with api.Bag(out) as filtered:
+        assert [m.linear.x for _, m, _ in filtered.read_messages()] == [0.0, 2.0]
+    assert rosx("rosbag", "compress", "--lz4", "-q", bag).status == 0
+    with BagReader(bag) as compressed:
+        assert compressed.chunk_header(0).compression == "lz4"
+        assert compressed.message_count() == 6
+    assert Path(bag.replace(".bag", ".orig.bag")).exists()
+    again = rosx("rosbag", "compress", bag)
+    assert (
+        again.err
+        == f"Skipping {bag}. Backup path {bag.replace('.bag', '.orig.bag')} already exists.\n"
+    )
+    assert rosx("rosbag", "decompress", "-f", "-q", bag).status == 0
+    with BagReader(bag) as plain:
+        assert plain.chunk_header(0).compression == "none"
+
+
+def test_reindex_of_a_bag_cut_short(bag: str, tmp_path: Path) -> None:
+    cut = tmp_path / "cut.bag.active"
+    cut.write_bytes(Path(bag).read_bytes()[:4200])
+    info = rosx("rosbag", "info", str(cut))
+    assert (info.status, info.err) == (1, f"ERROR bag unindexed: {cut}.  Run rosbag reindex.\n")
+    result = rosx("rosbag", "reindex", "-q", str(cut))
+    assert result.status == 0
+    assert "dropped" in result.err
+    assert rosx("rosbag", "info", str(cut)).status == 0
+
+
+def test_fix_and_encrypt_say_they_are_not_supported(bag: str, tmp_path: Path) -> None:
+    fixed = rosx("rosbag", "fix", bag, str(tmp_path / "out.bag"))
+    assert fixed.status == 1 and fixed.err.startswith("rosx does not support rosbag fix")
+    assert rosx("rosbag", "encrypt", bag).status == 1

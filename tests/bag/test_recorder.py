@@ -1,0 +1,127 @@
+"""Recording and playing on a live graph: rosx publishers, the recorder and the player in one
+process, on the test's master."""
+
+from __future__ import annotations
+
+import itertools
+import threading
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from rosx.bag.player import Player, PlayOptions
+from rosx.bag.reader import BagReader
+from rosx.bag.recorder import Recorder, RecordOptions
+from rosx.msg.codec.classes import get_message_class
+from rosx.node import Node
+from tests.support.procs import wait_for
+
+String = get_message_class("std_msgs/String")
+
+
+def _record(node: Node, path: Path, **options: Any) -> Recorder:
+    recorder = Recorder(
+        node,
+        RecordOptions(prefix=str(path), append_date=False, **options),
+        lambda level, text: None,
+    )
+    recorder.start()
+    return recorder
+
+
+def test_record_all_picks_up_late_topics_and_loses_nothing(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    talker = make_node("talker")
+    early = talker.advertise("/early", String, queue_size=None)
+    recorder = _record(make_node("record"), tmp_path / "all", record_all=True)
+    wait_for(lambda: early.get_num_connections() == 1, what="the recorder on /early")
+    late = talker.advertise("/late", String, queue_size=None)
+    wait_for(lambda: late.get_num_connections() == 1, what="the recorder on /late")
+    assert Path(f"{tmp_path}/all.bag.active").exists()
+    for i in range(2000):
+        early.publish(String(data=f"e{i}"))
+        late.publish(String(data=f"l{i}"))
+    wait_for(lambda: recorder.written + len(recorder._queue) >= 4000, what="every message queued")
+    recorder.stop()
+    assert not Path(f"{tmp_path}/all.bag.active").exists()
+    with BagReader(tmp_path / "all.bag") as bag:
+        by_topic: dict[str, list[str]] = {}
+        for conn, _, data in bag.messages():
+            by_topic.setdefault(conn.topic, []).append(String().deserialize(data).data)
+        headers = {c.topic: c.header for c in bag.connections.values()}
+    assert by_topic["/early"] == [f"e{i}" for i in range(2000)]
+    assert by_topic["/late"] == [f"l{i}" for i in range(2000)]
+    assert headers["/late"]["callerid"] == "/talker"
+    assert headers["/late"]["md5sum"] == String._md5sum
+
+
+def test_limit_stops_after_n_messages_per_topic(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    talker = make_node("talker")
+    pub = talker.advertise("/chatter", String, queue_size=None)
+    recorder = _record(make_node("record"), tmp_path / "limited", topics=["/chatter"], limit=5)
+    wait_for(lambda: pub.get_num_connections() == 1, what="the recorder")
+    for i in range(20):
+        pub.publish(String(data=str(i)))
+    wait_for(lambda: recorder.stopping, what="the recorder to stop by itself")
+    recorder.stop()
+    with BagReader(tmp_path / "limited.bag") as bag:
+        assert [String().deserialize(d).data for _, _, d in bag.messages()] == list("01234")
+
+
+@pytest.mark.parametrize("rate", [1.0, 4.0])
+def test_play_delivers_every_message_with_the_recorded_spacing(
+    make_node: Callable[..., Node], tmp_path: Path, rate: float
+) -> None:
+    from rosx.bag.writer import BagWriter
+
+    path = tmp_path / "spaced.bag"
+    header = {
+        "type": String._type,
+        "md5sum": String._md5sum,
+        "message_definition": String._full_text,
+        "topic": "/chatter",
+        "latching": "1",
+    }
+    with BagWriter(path) as writer:
+        conn = writer.add_connection("/chatter", header)
+        for i in range(20):
+            buff = bytearray()
+            String(data=str(i)).serialize(_Sink(buff))
+            writer.write(conn, 10**9 + i * 20_000_000, bytes(buff))
+    got: list[str] = []
+    done = threading.Event()
+
+    def heard(msg: Any) -> None:
+        got.append(msg.data)
+        if len(got) == 20:
+            done.set()
+
+    make_node("listener").subscribe("/played", String, heard)
+    player_node = make_node("play", remappings={"/chatter": "/played"})
+    with BagReader(path) as bag:
+        player = Player(player_node, [bag], PlayOptions(rate=rate))
+        player.timing = []
+        player.advertise()
+        wait_for(
+            lambda: player._publishers["/chatter"].get_num_connections() == 1, what="a subscriber"
+        )
+        player.run()
+    assert done.wait(5)
+    assert got == [str(i) for i in range(20)]
+    assert player_node.publications["/played"].latching
+    due = [d for d, _ in player.timing]
+    spacing = [b - a for a, b in itertools.pairwise(due)]
+    assert all(abs(s - 0.02 / rate) < 1e-6 for s in spacing)
+
+
+class _Sink:
+    def __init__(self, buff: bytearray) -> None:
+        self.buff = buff
+
+    def write(self, data: bytes) -> None:
+        self.buff += data

@@ -1,0 +1,1 @@
+"""Not executable: roslaunch cannot start it as a node."""
