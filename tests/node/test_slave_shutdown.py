@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 import pytest
 
-from rosx.msg.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx.transport.client import XmlRpcClient
 from rosx.transport.errors import ConnectError

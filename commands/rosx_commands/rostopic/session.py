@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, NoReturn
 
 from rosx.msg.text.fieldpath import find_topic
 from rosx.names.anonymous import anonymous_node_name
+from rosx.names.remap_args import RemapArgs
 from rosx_commands.context import CommandError, Environment
 from rosx_commands.rostopic.listing import CALLER_ID
 
@@ -74,12 +75,12 @@ class Session:
         """
         from rosx.node import Node  # noqa: PLC0415 - only streaming commands need the runtime
 
-        args = self.env.remap_args
+        args = self.env.remap_args or RemapArgs()
         node = Node(
-            (args and args.name) or anonymous_node_name("rostopic"),
-            namespace=args and args.ns,
-            remappings=args and args.remappings,
-            private_params=args and args.params,
+            args.name or anonymous_node_name("rostopic"),
+            namespace=args.ns,
+            remappings=args.remappings,
+            private_params=args.params,
             master_uri=self.master.uri,
             environ=self.env.environ,
             rosout_enabled=rosout,
