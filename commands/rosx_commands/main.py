@@ -23,6 +23,10 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rosnode": ("rosx_commands.rosnode:rosnode", "Print information about ROS nodes."),
     "rosservice": ("rosx_commands.rosservice:rosservice", "List, inspect and call ROS services."),
     "rosparam": ("rosx_commands.rosparam:rosparam", "Get and set ROS parameters."),
+    "roslaunch": (
+        "rosx_commands.roslaunch:roslaunch",
+        "Start the nodes and parameters of launch files (and a core when none runs).",
+    ),
     "rosbag": (
         "rosx_commands.rosbag:rosbag",
         "Record, play back and inspect bag files (ROS 1's format 2.0).",

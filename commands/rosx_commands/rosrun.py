@@ -17,13 +17,13 @@ from __future__ import annotations
 
 import os
 import shlex
-import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import NamedTuple
 
 from rosx_commands.cli import run_command
 from rosx_commands.context import Environment, ExitStatus
+from rosx_commands.invocation import script_command
 
 USAGE = """\
 Usage: rosrun [--prefix cmd] [--debug] PACKAGE EXECUTABLE [ARGS]
@@ -40,6 +40,7 @@ _TOOL_EXECUTABLES = {
     ("rosmsg", "rossrv"): "rossrv",
     ("rosservice", "rosservice"): "rosservice",
     ("rosparam", "rosparam"): "rosparam",
+    ("roslaunch", "roslaunch"): "roslaunch",
     ("rqt_graph", "rqt_graph"): "rqt_graph",
 }
 
@@ -144,10 +145,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
         chosen = picked
     path = chosen
     environ = shim_environ(env.environ)
-    if is_python_script(path):
-        command = [sys.executable, "-m", "rosx_commands", "run-script", str(path)]
-    else:
-        command = [str(path)]
+    command = [*script_command(), str(path)] if is_python_script(path) else [str(path)]
     if debug:
         env.out(f"[rosrun] Running {' '.join([*prefix, *command, *rest])}")
     return Launch([*prefix, *command, *rest], environ)

@@ -5,6 +5,10 @@ ROS 1's rosrun searches the whole package directory (following symbolic links, s
 ``/`` is taken as a path inside the package instead. `find_executables` does the same, and
 also lists the same-named files that are not executable, which rosrun reports.
 
+`bundled_program` finds the programs of the packages rosx ships (turtlesim's ``turtlesim_node``,
+``mimic``…): they are rosx's whatever else ``ROS_PACKAGE_PATH`` holds under the same package
+name, as ``rosx rosrun turtlesim …`` runs rosx's turtlesim. ``roslaunch`` starts them from there.
+
 `is_python_script` tells the scripts rosx runs with its own Python and ``rospy``, whatever their
 ``#!`` line says: a ``#!`` line naming python, or no ``#!`` line and a ``.py`` name.
 """
@@ -66,6 +70,19 @@ def find_executables(package_dir: Path, name: str) -> Search:
     return Search(executables, others)
 
 
+def bundled_program(package: str, name: str) -> Path | None:
+    """The executable ``name`` of the package ``package`` that rosx ships, if it has one."""
+    if "/" in name:
+        return None
+    from rosx.packages.crawl import bundled_packages  # noqa: PLC0415
+
+    directory = bundled_packages().get(package)
+    if directory is None:
+        return None
+    found = find_executables(directory, name).executables
+    return found[0] if found else None
+
+
 def is_python_script(path: Path) -> bool:
     """Whether rosx runs ``path`` with its own Python (see the module docstring)."""
     try:
@@ -78,4 +95,4 @@ def is_python_script(path: Path) -> bool:
     return path.suffix == ".py"
 
 
-__all__ = ["Search", "find_executables", "is_python_script"]
+__all__ = ["Search", "bundled_program", "find_executables", "is_python_script"]

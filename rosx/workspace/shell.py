@@ -32,6 +32,7 @@ ROS_COMMANDS = (
     "rossrv",
     "rosservice",
     "rosparam",
+    "roslaunch",
     "rospack",
     "catkin_make",
     "catkin_create_pkg",
