@@ -52,12 +52,6 @@ def find_packages(roots: list[Path]) -> dict[str, Path]:
     return found
 
 
-def bundled_libexec(package: str) -> Path | None:
-    """The folder of programs rosx ships for ``package`` (``lib/<package>``), if it has one."""
-    folder = PREFIX / "lib" / package
-    return folder if folder.is_dir() else None
-
-
 def _crawl(directory: Path, found: dict[str, Path]) -> None:
     manifest = directory / "package.xml"
     if manifest.is_file():

@@ -28,6 +28,7 @@ if TYPE_CHECKING:
 
     from rosx.packages.manifest import Manifest
 
+
 class PackageNotFoundError(LookupError):
     """No package of that name; ``str()`` is rospack's text."""
 

@@ -31,9 +31,12 @@ def workspace(tmp_path: Path) -> Path:
 
 
 #: ``rospack depends beginner_tutorials`` in ROS/Tutorials/CreatingPackage (Noetic).
-TUTORIAL_DEPENDS = """cpp_common rostime roscpp_traits roscpp_serialization catkin genmsg genpy
-message_runtime gencpp geneus gennodejs genlisp message_generation rosbuild rosconsole std_msgs
-rosgraph_msgs xmlrpcpp roscpp rosgraph ros_environment rospack roslib rospy""".split()
+TUTORIAL_DEPENDS = [
+    "cpp_common", "rostime", "roscpp_traits", "roscpp_serialization", "catkin", "genmsg", "genpy",
+    "message_runtime", "gencpp", "geneus", "gennodejs", "genlisp", "message_generation",
+    "rosbuild", "rosconsole", "std_msgs", "rosgraph_msgs", "xmlrpcpp", "roscpp", "rosgraph",
+    "ros_environment", "rospack", "roslib", "rospy",
+]  # fmt: skip
 
 
 def env_of(src: Path) -> dict[str, str]:

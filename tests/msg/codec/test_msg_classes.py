@@ -77,7 +77,9 @@ def test_header_and_turtle_pose() -> None:
     # The original file, comments included, as genpy's classes carry it (ROS 1's sends it as the
     # connection header's message_definition).
     assert header._full_text.startswith("# Standard metadata for higher-level stamped data types.")
-    assert header._full_text.endswith("time stamp\n#Frame this data is associated with\nstring frame_id\n")
+    assert header._full_text.endswith(
+        "time stamp\n#Frame this data is associated with\nstring frame_id\n"
+    )
     assert get_message_class("Header") is header
     pose = get_message_class("turtlesim/Pose")
     assert pose._md5sum == "863b248d5016ca62ea2e895ae5265cf9"
