@@ -1,6 +1,6 @@
 """The master under load, rosx against ROS 1's rosmaster in the same run.
 
-Each master runs in its own process on a free port: rosx's through ``run_core`` under this
+Each master runs in its own process on a free port: rosx's as ``rosx.core.Core`` under this
 Python, rosmaster as roscore starts it (``rosmaster --core``) under ``/usr/bin/python3``
 (override with ``ROS1_PYTHON``). Both get the same graph: N nodes (default 1 000), each
 registering as subscriber of T/2 topics and publisher of T/2 others (T = 10 by default, so
@@ -42,9 +42,13 @@ ROS1_PYTHON = os.environ.get("ROS1_PYTHON", "/usr/bin/python3")
 ROSMASTER = "/usr/bin/rosmaster"
 
 _ROSX_MASTER = """
-import sys, io
-from rosx.master.core import run_core
-sys.exit(run_core(int(sys.argv[1]), {}, io.StringIO()))
+import sys
+from rosx.core import Core
+with Core(int(sys.argv[1]), {}) as core:
+    try:
+        core.wait()
+    except KeyboardInterrupt:
+        pass
 """
 
 

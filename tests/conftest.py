@@ -12,7 +12,7 @@ from collections.abc import Callable, Iterator
 
 import pytest
 
-from rosx.master.server import MasterThread
+from rosx.core import Core
 from rosx.node import Node
 
 
@@ -23,9 +23,10 @@ def pytest_configure(config: pytest.Config) -> None:
 
 @pytest.fixture(scope="module")
 def master() -> Iterator[str]:
-    """A rosx master on a free port, shared by a test module; yields its URI."""
-    with MasterThread(port=0, host="127.0.0.1", advertised_host="127.0.0.1") as thread:
-        yield thread.uri
+    """A rosx core (master, parameters, ``/rosout``) on a free port, shared by a test module;
+    yields the master's URI."""
+    with Core(0, {"ROS_IP": "127.0.0.1"}) as core:
+        yield core.uri
 
 
 @pytest.fixture

@@ -125,7 +125,7 @@ def test_master_and_service_clients_do_not_load_the_node_runtime(argv: list[str]
     loaded = _tool_modules(argv)
     service_client = {"rosx.node.errors", "rosx.node.service_client"}
     assert not {m for m in loaded if m.startswith("rosx.node.")} - service_client
-    assert not {"asyncio", "threading", "rosx.node.node", "rosx.node.loop"} & loaded
+    assert not {"asyncio", "threading", "rosx.node.node", "rosx.transport.loop_thread"} & loaded
 
 
 def test_rosx_node_loads_its_modules_on_first_use() -> None:
@@ -171,3 +171,14 @@ def test_rosmsg_of_a_standard_type_reads_rosbags_once(tmp_path: Path) -> None:
     shipped = _modules_after(code.replace("bond/Status", "geometry_msgs/Twist").replace(
         "std_msgs/Header header", "geometry_msgs/Vector3 linear"))  # fmt: skip
     assert not {m for m in shipped if m.split(".")[0] in ("rosbags", "dataclasses")}
+
+
+@pytest.mark.parametrize(
+    "argv", [["rqt_plot", "--help"], ["rqt_plot", "/a/x"], ["rqt_topic"], ["rqt", "--help"]]
+)
+def test_rqt_tools_load_no_tui_before_they_draw(argv: list[str]) -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        f"run_tool({argv!r}, Environment(stdout=io.StringIO(), stderr=io.StringIO(), environ={{}}))"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in ("textual", "textual_plot", "numpy")}

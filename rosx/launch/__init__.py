@@ -34,7 +34,7 @@ roslaunch does (`values.run_command`, replaceable through ``load_launch(run=…)
 
 This layer imports `rosx.names`, `rosx.msg` (rosparam's YAML rules), `rosx.packages` (the
 package index, for ``$(find)``), `rosx.workspace` (how ``rosrun`` finds executables) and, for
-roscore's parameters, `rosx.master.core`'s constants; nothing above.
+roscore's parameters, `rosx.core.params`' constants; nothing above.
 """
 
 from __future__ import annotations

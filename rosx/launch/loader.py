@@ -241,7 +241,7 @@ def load_launch(
 
 def roscore_params() -> dict[str, Any]:
     """What roslaunch's ``roscore.xml`` sets: ``/rosversion`` and ``/rosdistro``, as rosx's core."""
-    from rosx.master.core import ROSDISTRO, ROSVERSION  # noqa: PLC0415
+    from rosx.core.params import ROSDISTRO, ROSVERSION  # noqa: PLC0415
 
     return {"/rosversion": ROSVERSION, "/rosdistro": ROSDISTRO}
 

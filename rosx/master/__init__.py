@@ -7,10 +7,11 @@
 - `api`: each XML-RPC method as rosmaster answers it, over the registry and the tree; no I/O.
 - `notifier`: delivers ``publisherUpdate``, ``paramUpdate`` and ``shutdown`` to nodes.
 - `server`: `Master` (the API behind an XML-RPC server) and `MasterThread`.
-- `core`: ``roscore``: the master, its standard parameters and core services (`run_core`).
 - `client`: `MasterClient`, the one client of a master (and of nodes' Slave APIs) that the
   tools, the node runtime and the client API share; `MasterError`, `MasterUnreachable`,
   `DEFAULT_MASTER_URI`.
+
+roscore's whole core (this master, its parameters and ``/rosout``) is `rosx.core.Core`.
 
 Layering: this package uses `rosx.transport`, `rosx.wire`, `rosx.names` and the standard
 library only.

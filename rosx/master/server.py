@@ -1,25 +1,28 @@
 """The ROS master as an XML-RPC server: `MasterApi` behind `XmlRpcServer`, with a `Notifier`
 for the calls it makes to nodes (ROS wiki Master_API, Parameter Server API).
 
-`Master` runs in an asyncio event loop; `MasterThread` hosts one in a background thread for
-synchronous code (tests, benchmarks, embedding). All master state lives on the loop's thread;
-other threads reach it through the loop (`MasterThread.run`), never directly.
+`Master` runs in an asyncio event loop; `MasterThread` hosts one on the process's event loop
+(`rosx.transport.loop_thread`) for synchronous code (`rosx.core`, tests, benchmarks). All master
+state lives on the loop's thread; other threads reach it through the loop (`MasterThread.run`),
+never directly.
 
-A ``shutdown`` call from a client sets `Master.shutdown_requested` (with the caller's message in
-`shutdown_message`); whoever runs the master decides when to `close` it, as roscore does.
+A ``shutdown`` call from a client is passed to ``on_shutdown`` with the caller's message;
+whoever runs the master decides when to `close` it, as roscore does.
 """
 
 from __future__ import annotations
 
-import asyncio
 import os
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rosx.master.api import MasterApi
 from rosx.master.notifier import DEFAULT_TIMEOUT, Notifier
 from rosx.transport.address import http_uri
 from rosx.transport.loop_thread import Hosted
 from rosx.transport.server import XmlRpcServer
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
 
 #: The port roscore listens on unless told otherwise.
 DEFAULT_MASTER_PORT = 11311
@@ -34,6 +37,7 @@ class Master:
         advertised_host: The host named in the master's URI (``getUri``).
         notify_timeout: Seconds a node has to answer each notification.
         pid: The process id ``getPid`` reports (this process by default).
+        on_shutdown: Called with the message of a ``shutdown`` call (on the loop's thread).
     """
 
     def __init__(
@@ -44,6 +48,7 @@ class Master:
         advertised_host: str = "localhost",
         notify_timeout: float = DEFAULT_TIMEOUT,
         pid: int | None = None,
+        on_shutdown: Callable[[str], None] | None = None,
     ) -> None:
         self._host = host
         self._port = port
@@ -54,8 +59,7 @@ class Master:
         )
         self.notifier: Notifier | None = None
         self.server: XmlRpcServer | None = None
-        self.shutdown_requested: asyncio.Event | None = None
-        self.shutdown_message = ""
+        self._on_shutdown = on_shutdown
 
     @property
     def uri(self) -> str:
@@ -75,7 +79,6 @@ class Master:
         Raises:
             OSError: the address cannot be bound (``errno.EADDRINUSE``: the port is taken).
         """
-        self.shutdown_requested = asyncio.Event()
         self.notifier = Notifier(timeout=self._notify_timeout)
         self.api.notify = self.notifier.submit
         server = XmlRpcServer(
@@ -98,14 +101,13 @@ class Master:
             await self.notifier.close()
 
     def _shutdown_called(self, caller_id: str, message: str) -> None:
-        self.shutdown_message = message
-        if self.shutdown_requested is not None:
-            self.shutdown_requested.set()
+        if self._on_shutdown is not None:
+            self._on_shutdown(message)
 
 
 class MasterThread(Hosted):
-    """A `Master` in a background event loop; arguments as `Master`'s, but port 0 by default."""
+    """A `Master` on the process's event loop; arguments as `Master`'s, but port 0 by default."""
 
     def __init__(self, *, port: int = 0, **options: Any) -> None:
         self.master = Master(port=port, **options)
-        super().__init__(self.master, "rosx-master", close_timeout=10.0)
+        super().__init__(self.master, close_timeout=10.0)

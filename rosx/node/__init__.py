@@ -12,7 +12,8 @@ Modules, one concept each:
 
 - `node`: `Node`, the synchronous facade; `handles`: the `Publisher`, `Subscriber` and
   `ServiceHandle` it returns.
-- `loop`: the process's I/O loop thread. `tcpros_server`: a node's TCPROS port.
+- `tcpros_server`: a node's TCPROS port. Sockets are served on the process's event loop
+  (`rosx.transport.loop_thread`); handlers and callbacks run on the node's own threads.
 - `publication` and `outgoing`: publishing a topic and the per-subscriber frame streams.
 - `subscription`, `incoming` and `receiver`: subscribing, the per-publisher streams, the
   reader threads, the drop-oldest queue and the callbacks.
@@ -23,6 +24,8 @@ Modules, one concept each:
 - `params`: the parameter client and cache. `clock`: time, sleep, `Rate`.
 - `rosout`: log levels and console lines; `log_services`: ``/rosout`` and the logger services.
 - `signals`: optional SIGINT/SIGTERM handling. `errors`: the exceptions.
+- `stats`: what a subscriber measures of a topic (rate, bandwidth, delay), as ``rostopic
+  hz``/``bw``/``delay`` and rqt_topic report it.
 
 The names below are loaded on first use (PEP 562), so ``from rosx.node.service_client import
 ServiceClient`` costs a command-line tool that module alone, not the I/O loop and the rest.

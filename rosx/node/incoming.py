@@ -5,6 +5,7 @@ channel (``requestTopic``), connect to the host and port it names, send the subs
 and check the publisher's. Then ``on_connected`` hands the stream to its subscription's
 `Receiver` thread, which calls `IncomingStream.read` whenever the socket is readable: large
 reads parsed by a `FrameReader`. ``on_close`` is called once, on the loop, when the stream ends.
+The byte and frame counts (``getBusStats``) are written by that one thread only.
 
 Retries follow rospy: a publisher whose XML-RPC server refuses the connection, or that refuses
 the topic, is given up at once; other failures to reach it (timeouts, unreachable hosts, a
@@ -31,7 +32,7 @@ from rosx.wire.tcpros import check_publisher_reply
 if TYPE_CHECKING:
     from collections.abc import Awaitable, Callable
 
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
 
     class Detacher(Protocol):
         """The receiver thread that owns a connected stream's socket."""
@@ -59,7 +60,7 @@ class IncomingStream:
     def __init__(
         self,
         *,
-        io: IoLoop,
+        io: LoopThread,
         topic: str,
         publisher_uri: str,
         request_header: dict[str, str],

@@ -1,9 +1,9 @@
 """`Node`: a ROS 1 node with a synchronous facade, any number of them in one process.
 
-A node owns a Slave API server (XML-RPC) and a TCPROS server, both on the process's I/O loop
-(`rosx.node.loop`), and registers its publications, subscriptions and services with the master
-(ROS wiki ROS/Master_API, ROS/Slave_API). Like a rospy node it publishes its log on
-``/rosout`` and serves ``~get_loggers`` and ``~set_logger_level``.
+A node owns a Slave API server (XML-RPC) and a TCPROS server, both on the process's event loop
+(`rosx.transport.loop_thread.process_loop`), and registers its publications, subscriptions and
+services with the master (ROS wiki ROS/Master_API, ROS/Slave_API). Like a rospy node it
+publishes its log on ``/rosout`` and serves ``~get_loggers`` and ``~set_logger_level``.
 
 Every public method may be called from any thread except the I/O loop's (user callbacks never
 run there). Calls to the master are made on the caller's thread with the blocking XML-RPC
@@ -27,7 +27,6 @@ from rosx.node import rosout
 from rosx.node.errors import NodeShutdownError, ServiceError
 from rosx.node.handles import Publisher, ServiceHandle, Subscriber
 from rosx.node.log_services import RosoutPublisher, advertise_logger_services
-from rosx.node.loop import io_loop
 from rosx.node.params import ParamCache, ParamClient
 from rosx.node.publication import Publication
 from rosx.node.service import ServiceServer
@@ -39,6 +38,7 @@ from rosx.node.tcpros_server import TcprosServer
 from rosx.transport.aclient import AsyncXmlRpcClient
 from rosx.transport.address import advertised_host, bind_host
 from rosx.transport.client import XmlRpcClient
+from rosx.transport.loop_thread import process_loop
 from rosx.transport.server import XmlRpcServer
 from rosx.wire.header import Refused
 from rosx.wire.rosrpc import accept_client, format_rosrpc_uri
@@ -50,9 +50,18 @@ if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
 
     from rosx.msg.codec.message import Message, ServiceDefinition
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
     from rosx.wire.framing import FrameReader
 
+#: A node's worker threads: they run its service handlers and hand a latched message to a
+#: callback added after the message came. They start only when calls overlap and are shared by
+#: all the node's services. The bound is how many calls the node serves at once; more wait in
+#: line. One is too few: as in rospy (a thread per call) a handler may block, on I/O, a sleep or
+#: a call to another service of the same node, which would then wait for itself. Many are
+#: useless: Python handlers hold the GIL, so past a few threads only waiting handlers gain, and
+#: a process hosting many nodes (``rosx sim``, the tests) would keep each node's idle threads.
+#: 8 serves a few slow callers and a nested call or two at once; a ninth call waits its turn.
+WORKERS = 8
 _UNREGISTER_TIMEOUT = 2.0
 #: How long a second `Node.shutdown` caller waits for the first to finish.
 _FINISH_TIMEOUT = 15.0
@@ -75,7 +84,7 @@ class Node:
         rosout_enabled: bool = True,
         log_level: int = rosout.INFO,
         console: Callable[[int, str], None] | None = None,
-        io: IoLoop | None = None,
+        io: LoopThread | None = None,
         private_params: Mapping[str, str] | None = None,
     ) -> None:
         env = os.environ if environ is None else environ
@@ -89,7 +98,7 @@ class Node:
         self.host = advertised_host(env, host)
         self._bind = bind_host(env, host)
         self._ports = (xmlrpc_port, tcpros_port)
-        self.io = io or io_loop()
+        self.io = io or process_loop()
         self.uri = ""
         self.client = XmlRpcClient()
         self.master = MasterClient(self.master_uri, self.name, self.client)
@@ -107,7 +116,7 @@ class Node:
         self._aclient: AsyncXmlRpcClient | None = None
         self._xmlrpc: XmlRpcServer | None = None
         self._tcpros = TcprosServer(self.io, self._on_connection)
-        self._executor = ThreadPoolExecutor(32, thread_name_prefix=f"rosx-srv{self.name}")
+        self._workers = ThreadPoolExecutor(WORKERS, thread_name_prefix=f"rosx-worker{self.name}")
         self._rosout_enabled = rosout_enabled
         self.log_sink = rosout.NodeLog(self.name, level=log_level, console=console, environ=env)
         self.shutdown_reason = ""
@@ -206,7 +215,7 @@ class Node:
                 self.io.spawn(self._close_all())
             else:
                 self.io.run(self._close_all(), timeout=10.0)
-            self._executor.shutdown(wait=False, cancel_futures=True)
+            self._workers.shutdown(wait=False, cancel_futures=True)
             self.client.close()
         finally:
             self._closed.set()
@@ -363,6 +372,7 @@ class Node:
                     topic=name,
                     msg_class=data_class,
                     caller_id=self.name,
+                    workers=self._workers,
                     xmlrpc=self._call_peer,
                     queue_size=queue_size,
                     tcp_nodelay=tcp_nodelay,
@@ -431,7 +441,7 @@ class Node:
                 name=resolved,
                 service_class=service_class,
                 handler=handler,
-                executor=self._executor,
+                executor=self._workers,
                 on_error=self._log_error,
             )
             server.uri = format_rosrpc_uri(self.host, self._tcpros.port)

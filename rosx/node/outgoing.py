@@ -11,6 +11,8 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
   one would exceed it (ROS 1's semantics), never the frame already partly on the wire; ``0``
   means unbounded; ``None`` means no frame is dropped and `send` blocks its (non-loop) caller
   while more than `HIGH_WATER` bytes wait, as rospy's synchronous publish blocks.
+* The queue and the byte and frame counts (``getBusStats``) change only under the stream's
+  lock, whichever thread writes.
 * A peer that closes, resets or sends garbage ends the stream; `on_close` is then called once,
   on the loop. Bytes a subscriber sends after its header are read and ignored: reading is how
   a closed peer is noticed before the next publish.
@@ -28,7 +30,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from collections.abc import Callable
 
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
 
 #: With ``queue_size=None``, `OutgoingStream.send` blocks while more bytes than this wait.
 HIGH_WATER = 4 * 1024 * 1024
@@ -43,7 +45,7 @@ class OutgoingStream:
     def __init__(
         self,
         sock: socket.socket,
-        io: IoLoop,
+        io: LoopThread,
         queue_size: int | None,
         on_close: Callable[[OutgoingStream], None] | None = None,
     ) -> None:

@@ -7,7 +7,10 @@ publication keeps the last frame and sends it to each new subscriber right after
 number in ``header.seq``, as rospy does.
 
 `Publication.accept` runs on the I/O loop when the node's TCPROS server has accepted a
-subscriber's header (`rosx.wire.tcpros.accept_subscriber`); ``publish`` runs on any thread.
+subscriber's header (`rosx.wire.tcpros.accept_subscriber`); ``publish`` runs on any thread, so
+the sequence number and the byte count (``getBusStats``) change only under the publication's
+lock: ``+=`` on an attribute is a read and a write, and a thread switch between the two would
+lose a concurrent publisher's update.
 """
 
 from __future__ import annotations
@@ -26,7 +29,7 @@ if TYPE_CHECKING:
     import socket
 
     from rosx.msg.codec.message import Message
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
     from rosx.wire.tcpros import SubscriberAccepted
 
 _U32 = struct.Struct("<I")
@@ -71,7 +74,7 @@ class Publication:
 
     def __init__(
         self,
-        io: IoLoop,
+        io: LoopThread,
         info: PublicationInfo,
         *,
         queue_size: int | None,
@@ -85,6 +88,7 @@ class Publication:
         self._lock = threading.Lock()
         self.links: tuple[SubscriberLink, ...] = ()
         self.latched: bytes | None = None
+        #: The last ``header.seq`` given (messages with a header only).
         self.seq = 0
         self.bytes_published = 0
         self.closed = False
@@ -110,19 +114,18 @@ class Publication:
             with self._lock:
                 self.seq += 1
                 msg.header.seq = self.seq
-        else:
-            self.seq += 1
         self.publish_frame(serialize_frame(msg))
 
     def publish_frame(self, frame: bytes) -> None:
         """Queue an already serialized frame (length prefix included) for every subscriber."""
         if self.closed:
             return
+        size = len(frame)
         with self._lock:
             if self.info.latching:
                 self.latched = frame
             links = self.links
-        self.bytes_published += len(frame)
+            self.bytes_published += size
         for link in links:
             link.stream.send(frame)
 

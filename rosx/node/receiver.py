@@ -18,7 +18,8 @@ The contract:
 * Whichever reader thread queued frames runs the callbacks, unless another one already is: the
   callbacks of a topic never run concurrently, and run in the order the frames were queued. A
   single frame read when nothing is queued and no callback is running skips the queue (same
-  order, one hand-off less on the latency path).
+  order, one hand-off less on the latency path). A latched message for a callback added late
+  is queued by the loop and run by one of the node's worker threads (`Receiver.put`).
 * A frame is decoded lazily, once per decoder, just before its callbacks run. Callback
   exceptions go to ``on_error`` (rospy logs ``bad callback``) and reading goes on.
 * A stream that ends (peer closed, error, `Receiver.detach` shutting its socket down) has its
@@ -35,9 +36,10 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from collections.abc import Callable
+    from concurrent.futures import Executor
 
     from rosx.node.incoming import IncomingStream
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
 
     Decode = Callable[[bytes, dict[str, str]], Any]
     #: A callback and the decoder of what it receives.
@@ -51,13 +53,15 @@ class Receiver:
 
     def __init__(
         self,
-        io: IoLoop,
+        io: LoopThread,
+        workers: Executor,
         *,
         queue_size: int | None,
         name: str,
         on_error: Callable[[BaseException, Callable[[Any], object]], None] | None = None,
     ) -> None:
         self._io = io
+        self._workers = workers
         self._name = name
         self._on_error = on_error
         self._queue: deque[Item] = deque(maxlen=queue_size if queue_size else None)
@@ -65,14 +69,12 @@ class Receiver:
         self.entries: tuple[Entry, ...] = ()
         self._streams: set[IncomingStream] = set()
         self._stopped = False
-        #: Frames queued, and frames whose callbacks have run.
+        self._counting = threading.Lock()
+        #: Frames queued, and frames whose callbacks have run (how far the callbacks are
+        #: behind). Several reader threads queue at once, so `received` grows under a lock of
+        #: its own; `handled` grows only under the dispatch lock.
         self.received = 0
         self.handled = 0
-
-    @property
-    def dropped(self) -> int:
-        """Frames dropped from the full queue so far."""
-        return max(0, self.received - self.handled - len(self._queue))
 
     # -- callbacks (any thread) --------------------------------------------------------------
 
@@ -89,14 +91,14 @@ class Receiver:
     def put(self, frame: bytes, header: dict[str, str], only: Entry | None = None) -> None:
         """Queue one frame for every callback, or only for ``only`` (a latched message).
 
-        The callbacks run on a short-lived thread of their own unless a reader thread is
-        already running them.
+        A worker thread runs the callbacks, unless a reader thread already is running them.
         """
         if self._stopped:
             return
-        self.received += 1
+        self._count(1)
         self._queue.append((frame, header, only))
-        threading.Thread(target=self._dispatch_all, name=self._name, daemon=True).start()
+        with contextlib.suppress(RuntimeError):  # the node has shut its workers down
+            self._workers.submit(self._dispatch_all)
 
     # -- connections -------------------------------------------------------------------------
 
@@ -135,7 +137,7 @@ class Receiver:
             frames = stream.take_frames()  # what came with the header (a latched message)
             while frames is not None and not self._stopped:
                 if frames:
-                    self.received += len(frames)
+                    self._count(len(frames))
                     header = stream.header
                     if len(frames) == 1 and not queue and lock.acquire(blocking=False):
                         # Nothing waits and no callback runs: run this frame's callbacks now,
@@ -158,6 +160,10 @@ class Receiver:
             if sock is not None:
                 sock.close()
             self._io.call_soon(stream.close)
+
+    def _count(self, frames: int) -> None:
+        with self._counting:
+            self.received += frames
 
     def _dispatch_all(self) -> None:
         # Another thread may queue frames just after this one found the queue empty, then

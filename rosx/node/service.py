@@ -29,7 +29,7 @@ if TYPE_CHECKING:
     from concurrent.futures import Executor
 
     from rosx.msg.codec.message import ServiceDefinition
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
     from rosx.wire.framing import FrameReader
     from rosx.wire.rosrpc import ServiceClientAccepted
 
@@ -66,7 +66,7 @@ class ServiceServer:
     def __init__(
         self,
         *,
-        io: IoLoop,
+        io: LoopThread,
         name: str,
         service_class: type[ServiceDefinition],
         handler: Callable[[Any], object],

@@ -26,10 +26,11 @@ from rosx.wire.tcpros import WILDCARD, subscriber_header
 
 if TYPE_CHECKING:
     from collections.abc import Awaitable, Callable
+    from concurrent.futures import Executor
 
     from rosx.msg.codec.message import Message
-    from rosx.node.loop import IoLoop
     from rosx.node.receiver import Decode, Entry
+    from rosx.transport.loop_thread import LoopThread
 
 
 class RawMessage:
@@ -96,10 +97,11 @@ class Subscription:
     def __init__(
         self,
         *,
-        io: IoLoop,
+        io: LoopThread,
         topic: str,
         msg_class: type[Message] | None,
         caller_id: str,
+        workers: Executor,
         xmlrpc: Callable[..., Awaitable[Any]],
         queue_size: int | None = None,
         tcp_nodelay: bool = False,
@@ -123,7 +125,11 @@ class Subscription:
         )
         self.streams: dict[str, IncomingStream] = {}
         self.receiver = Receiver(
-            io, queue_size=queue_size, name=f"rosx-sub{topic}", on_error=self._callback_failed
+            io,
+            workers,
+            queue_size=queue_size,
+            name=f"rosx-sub{topic}",
+            on_error=self._callback_failed,
         )
         self.updates = 0
         self.closed = False

@@ -23,7 +23,7 @@ from rosx.wire.tcpros import NO_TOPIC_OR_SERVICE, connection_kind
 if TYPE_CHECKING:
     from collections.abc import Awaitable, Callable
 
-    from rosx.node.loop import IoLoop
+    from rosx.transport.loop_thread import LoopThread
 
     #: ``await handler(kind, sock, header, reader)`` → an error text to refuse, or ``None``
     #: once it has taken the socket over.
@@ -36,7 +36,7 @@ HEADER_TIMEOUT = 30.0
 class TcprosServer:
     """Accepts TCPROS connections for one node and dispatches them by their header."""
 
-    def __init__(self, io: IoLoop, handler: Handler) -> None:
+    def __init__(self, io: LoopThread, handler: Handler) -> None:
         self._io = io
         self._handler = handler
         self._sock: socket.socket | None = None

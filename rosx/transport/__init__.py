@@ -8,7 +8,8 @@ that only calls the master pays for the blocking client alone (no asyncio).
 - `client`: `XmlRpcClient`, `ServerProxy` and `call`, blocking, with kept-alive connections.
 - `aclient`: `AsyncXmlRpcClient`, the same for asyncio code, with short default timeouts.
 - `server`: `XmlRpcServer`, an asyncio HTTP/1.1 XML-RPC server, and `EncodedResponse`.
-- `loop_thread`: `LoopThread` (an event loop in a background thread) and `ServerThread`.
+- `loop_thread`: the process's event loop (`process_loop`, a `LoopThread`), and `Hosted` /
+  `ServerThread` to serve on it from synchronous code.
 - `address`: the host to bind and to advertise, from ROS_IP / ROS_HOSTNAME (ROS 1's rules).
 - `exchange`: what both clients share: request bytes, reply interpretation.
 

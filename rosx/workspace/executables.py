@@ -3,7 +3,8 @@
 ROS 1's rosrun searches the whole package directory (following symbolic links, skipping
 ``build/``) for regular files of the given name with any execute bit set; a name containing
 ``/`` is taken as a path inside the package instead. `find_executables` does the same, and
-also lists the same-named files that are not executable, which rosrun reports.
+also lists the same-named files that are not executable, which rosrun reports. For a name not
+found, `suggestion` picks the executable the user most likely meant.
 
 `bundled_program` finds the programs of the packages rosx ships (turtlesim's ``turtlesim_node``,
 ``mimic``…, roscpp_tutorials' in ``lib/roscpp_tutorials``, rospy_tutorials' scripts):
@@ -71,6 +72,23 @@ def find_executables(package_dir: Path, name: str) -> Search:
     return Search(executables, others)
 
 
+def executable_names(package_dir: Path) -> list[str]:
+    """The names of every executable below ``package_dir`` (what rosrun could run), sorted."""
+    return sorted({path.name for path in _walk(package_dir) if _runnable(path)})
+
+
+def suggestion(name: str, following: list[str], known: list[str]) -> str | None:
+    """The executable a user most likely meant by ``name`` among ``known``: ``name`` joined to
+    the next argument by ``_`` (a space typed for an underscore, as in ``turtlesim node``), else
+    the closest name, if one is close."""
+    if following and f"{name}_{following[0]}" in known:
+        return f"{name}_{following[0]}"
+    import difflib  # noqa: PLC0415 - only for a name not found
+
+    close = difflib.get_close_matches(name, known, n=1, cutoff=0.6)
+    return close[0] if close else None
+
+
 def bundled_program(package: str, name: str) -> Path | None:
     """The executable ``name`` of the package ``package`` that rosx ships, if it has one."""
     if "/" in name:
@@ -97,4 +115,11 @@ def is_python_script(path: Path) -> bool:
     return path.suffix == ".py"
 
 
-__all__ = ["Search", "bundled_program", "find_executables", "is_python_script"]
+__all__ = [
+    "Search",
+    "bundled_program",
+    "executable_names",
+    "find_executables",
+    "is_python_script",
+    "suggestion",
+]

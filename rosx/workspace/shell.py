@@ -38,6 +38,9 @@ ROS_COMMANDS = (
     "catkin_make",
     "catkin_create_pkg",
     "rqt_graph",
+    "rqt_plot",
+    "rqt_topic",
+    "rqt",
 )
 
 SHELLS = ("bash", "zsh", "sh")

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -48,12 +49,12 @@ def load(write: Write, index: PackageIndex) -> Load:
         text: str,
         cli_args: dict[str, str] | None = None,
         environ: dict[str, str] | None = None,
-        **options: object,
+        **options: Any,
     ) -> LaunchPlan:
         path = write("main.launch", text)
         options.setdefault("anonymous", lambda name: f"{name}_ANON")
         options.setdefault("with_core", False)
-        return load_launch(  # type: ignore[arg-type]
+        return load_launch(
             [str(path)], cli_args or {}, environ or {"CORPUS": "c"}, index, **options
         )
 

@@ -1,5 +1,6 @@
-"""``run_core`` (rosx roscore's logic) in a subprocess: what it prints compared with ROS 1's
-roscore, the parameters it sets, how it refuses a taken port, how it stops."""
+"""``rosx roscore`` (`rosx.core.Core` and what roscore prints around it) in a subprocess: what
+it prints compared with ROS 1's roscore, the parameters it sets, how it refuses a taken port,
+how it stops."""
 
 from __future__ import annotations
 
@@ -29,15 +30,6 @@ from tests.interop.ros1_procs import (
 
 ROOT = Path(__file__).resolve().parents[2]
 
-_CORE = """
-import os, sys
-from rosx.master.core import run_core
-async def rosout(uri):
-    return None
-hook = rosout if sys.argv[2] == 'rosout' else None
-sys.exit(run_core(int(sys.argv[1]), os.environ, sys.stdout, sys.stderr, start_rosout=hook))
-"""
-
 
 class RosProxy:
     """Python's own XML-RPC client (rospy's), with replies typed for the tests."""
@@ -52,9 +44,9 @@ class RosProxy:
 needs_ros1 = pytest.mark.skipif(not ros1_available(), reason="ROS 1 (roscore, rospy) is absent")
 
 
-def _start_core(port: int, env: dict[str, str], rosout: bool = True) -> subprocess.Popen[str]:
+def _start_core(port: int, env: dict[str, str]) -> subprocess.Popen[str]:
     return subprocess.Popen(
-        [sys.executable, "-c", _CORE, str(port), "rosout" if rosout else "none"],
+        [sys.executable, "-m", "rosx_commands", "roscore", "-p", str(port)],
         env={**env, "PYTHONPATH": str(ROOT)},
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
@@ -257,23 +249,24 @@ def test_port_taken_by_something_else(env: dict[str, str]) -> None:
 
 def test_sigterm_and_shutdown_call_stop_it(env: dict[str, str]) -> None:
     port = free_port()
-    proc = _start_core(port, env, rosout=False)
+    proc = _start_core(port, env)
     try:
-        lines = _read_through(proc, "setting /run_id")
-        assert not any("rosout" in line for line in lines)
+        _read_through(proc, "setting /run_id")
         code, out, _ = _finish(proc, signal.SIGTERM)
         assert code == 0
         assert out.endswith("done\n")
     finally:
         stop(proc)
-    proc = _start_core(port, env, rosout=False)
+    proc = _start_core(port, env)
     try:
-        _read_through(proc, "setting /run_id")
+        _read_through(proc, "started core service [/rosout]")
         master = RosProxy(f"http://localhost:{port}/")
         assert master.call("shutdown", "/tester", "bye") == [1, "shutdown", 0]
         out, _ = proc.communicate(timeout=30)
         assert proc.returncode == 0
-        assert out.startswith("shutdown request: bye\n[master] killing on exit\n")
+        assert out.startswith(
+            "shutdown request: bye\n[rosout-1] killing on exit\n[master] killing on exit\n"
+        )
     finally:
         stop(proc)
 

@@ -10,6 +10,7 @@ from typing import Any
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node, RawMessage
+from rosx.node.node import WORKERS
 from rosx.transport.client import call
 from tests.support.procs import wait_for
 
@@ -70,6 +71,33 @@ def test_latched_message_reaches_late_subscribers(make_node: Callable[..., Node]
     wait_for(lambda: again)
     assert again == ["last"]
     assert got == ["last"]
+
+
+def test_late_subscribers_get_the_latch_on_the_nodes_workers(
+    make_node: Callable[..., Node],
+) -> None:
+    """Many callbacks added late each get the latched message once, run by the node's bounded
+    pool of workers rather than by a new thread each."""
+    a, b = make_node("latcher2"), make_node("late2")
+    pub = a.advertise("/latched2", String, latch=True)
+    pub.publish(String(data="kept"))
+    first: list[str] = []
+    b.subscribe("/latched2", String, lambda m: first.append(m.data))
+    wait_for(lambda: first)
+    runs: list[tuple[int, str, str]] = []
+
+    def late(index: int) -> Callable[[Any], None]:
+        return lambda m: runs.append((index, m.data, threading.current_thread().name))
+
+    for index in range(3 * WORKERS):
+        b.subscribe("/latched2", String, late(index))
+    wait_for(lambda: len(runs) == 3 * WORKERS)
+    assert sorted(index for index, _, _ in runs) == list(range(3 * WORKERS))
+    assert {data for _, data, _ in runs} == {"kept"}
+    names = {name for _, _, name in runs}
+    assert all(name.startswith("rosx-worker/late2") for name in names)
+    assert len(names) <= WORKERS
+    assert first == ["kept"]
 
 
 def test_subscriber_queue_drops_the_oldest(make_node: Callable[..., Node]) -> None:

@@ -118,12 +118,12 @@ def test_bad_connection_headers_are_refused(make_node: Callable[..., Node]) -> N
 
 
 def test_publisher_queue_drops_the_oldest_frames() -> None:
-    from rosx.node.loop import io_loop
+    from rosx.transport.loop_thread import process_loop
 
     left, right = socket.socketpair()
     left.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, 4096)
     right.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
-    stream = OutgoingStream(left, io_loop(), queue_size=3)
+    stream = OutgoingStream(left, process_loop(), queue_size=3)
     frames = [frame(bytes([i]) * 20000) for i in range(40)]
     for item in frames:
         stream.send(item)

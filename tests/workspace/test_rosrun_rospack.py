@@ -3,6 +3,7 @@ and executables with ROS 1's texts and exit statuses, and the shell functions.""
 
 from __future__ import annotations
 
+import io
 import shutil
 import subprocess
 import sys
@@ -180,3 +181,30 @@ def test_shell_init_defines_the_ros_commands(workspace: Path, shell: str) -> Non
 def test_shell_init_refuses_unknown_shells() -> None:
     result = rosx("shell-init", "fish")
     assert result.status == 2 and "unknown shell 'fish'" in result.err
+
+
+class TerminalText(io.StringIO):
+    """A stream that says it is a terminal."""
+
+    def isatty(self) -> bool:
+        return True
+
+
+def test_rosrun_turtlesim_node_typo_suggests_turtlesim_node_on_a_terminal() -> None:
+    out, err = io.StringIO(), TerminalText()
+    env = Environment(stdout=out, stderr=err, environ=clean_environ())
+    assert plan(["turtlesim", "turtlesim", "node"], env) == 3
+    assert out.getvalue().startswith("[rosrun] Couldn't find executable named turtlesim below ")
+    assert err.getvalue() == (
+        "[rosrun] Did you mean turtlesim_node? (rosrun turtlesim turtlesim_node)\n"
+    )
+
+
+def test_rosrun_suggests_a_close_name_and_stays_ros1s_off_a_terminal(workspace: Path) -> None:
+    out, err = io.StringIO(), TerminalText()
+    env = Environment(stdout=out, stderr=err, environ=env_of(workspace))
+    assert plan(["lab2", "pubb.py", "x"], env) == 3
+    assert err.getvalue() == "[rosrun] Did you mean pub.py? (rosrun lab2 pub.py x)\n"
+    result = rosx("rosrun", "turtlesim", "turtlesim", "node", environ=env_of(workspace))
+    assert (result.status, result.err) == (3, "")
+    assert result.out.startswith("[rosrun] Couldn't find executable named turtlesim below ")

@@ -1,8 +1,7 @@
 """``rosx sim``: Lab 1 in one process, a master, ``/rosout``, turtlesim, teleop and a screen.
 
 - `run`: `run_sim(argv, env)`, the command.
-- `host`: `SimHost`, the nodes and the feeds the screen follows.
-- `core`: `SimCore`, the master with roscore's parameters and ``/rosout``.
+- `host`: `SimHost`, the core (`rosx.core.Core`), the nodes and the feeds the screen follows.
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """`SimHost`: Lab 1's whole ROS graph in one process, and the `SimLink` its screen shows.
 
-It starts what Lab 1 starts in four terminals: the master with ``/rosout`` (`SimCore`), then
+It starts what Lab 1 starts in four terminals: roscore's core (`rosx.core.Core`), then
 ``/turtlesim`` (`TurtlesimNode`, the same node ``rosrun turtlesim turtlesim_node`` runs) and
 ``/teleop_turtle``, which publishes ``geometry_msgs/Twist`` on ``/turtle1/cmd_vel`` with queue 1
 and reads ``scale_linear``/``scale_angular`` once, in its public namespace, as
@@ -13,9 +13,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from rosx.core import Core
 from rosx.msg.codec.classes import get_message_class
 from rosx_turtle.roscpp import NodeArgs
-from rosx_turtle.sim.core import SimCore
 from rosx_turtle.teleop import DEFAULT_NAME as TELEOP_NAME
 from rosx_turtle.teleop import param_double
 
@@ -55,7 +55,7 @@ class SimHost:
         seed: int | None = None,
         watch: bool = True,
     ) -> None:
-        self.core = SimCore(port, environ)
+        self.core = Core(port, environ)
         self.environ = environ
         self.console = console
         self.seed = seed
@@ -98,7 +98,7 @@ class SimHost:
         """Start everything; returns self.
 
         Raises:
-            PortBusyError: the master's port is taken.
+            PortInUseError: the master's port is taken.
         """
         self.core.start()
         self._stops.append(self.core.stop)

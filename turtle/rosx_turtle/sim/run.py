@@ -13,10 +13,10 @@ import argparse
 import sys
 from typing import TYPE_CHECKING, NoReturn
 
+from rosx.core import PortInUseError
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.program import stop_on_signals
-from rosx_turtle.sim.core import PortBusyError
 from rosx_turtle.sim.host import SimHost
 from rosx_turtle.tui.running import is_terminal, run_app
 
@@ -89,9 +89,10 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
     host = SimHost(options.port, env.environ, console=console, seed=seed, watch=not headless)
     try:
         host.start()
-    except PortBusyError as busy:
+    except PortInUseError as busy:
         colour = is_terminal(env.stderr)
-        env.stderr.write((f"\033[31m{busy}\033[0m" if colour else str(busy)) + "\n")
+        text = busy.message
+        env.stderr.write((f"\033[31m{text}\033[0m" if colour else text) + "\n")
         env.stderr.flush()
         return 1
     except KeyboardInterrupt:  # Ctrl-C while starting: what started has been stopped

@@ -1,4 +1,8 @@
-"""``rosx roscore``: master, parameter server and ``/rosout`` node, as ROS 1's roscore."""
+"""``rosx roscore``: master, parameter server and ``/rosout`` node, as ROS 1's roscore.
+
+This module parses roscore's options; `run` runs the core (`rosx.core.Core`) and prints what
+roscore prints.
+"""
 
 from __future__ import annotations
 
@@ -74,10 +78,9 @@ def _roscore(argv: list[str], env: Environment) -> int:
     if not 0 < port < 65536:
         parser.error(f"invalid port: {options.port}")
 
-    from rosx.master.core import run_core  # noqa: PLC0415 - not for -h and usage errors
-    from rosx.node.aggregator import core_hook  # noqa: PLC0415 - likewise
+    from rosx_commands.roscore.run import run_roscore  # noqa: PLC0415 - not for -h, usage errors
 
-    return run_core(port, env.environ, env.stdout, env.stderr, start_rosout=core_hook(env.environ))
+    return run_roscore(port, env.environ, env.stdout, env.stderr)
 
 
 def roscore(argv: Sequence[str], env: Environment) -> int:

@@ -1,0 +1,207 @@
+"""`run_roscore`: a `rosx.core.Core` run as ROS 1's ``roscore`` runs, with what it prints.
+
+roscore (roslaunch with ``roscore.xml``) prints its start-up summary, starts the master, sets
+its parameters, starts ``/rosout``, then runs until SIGINT, SIGTERM or a ``shutdown`` call. This
+prints the same, in the same order and words, except what rosx does not do: no log files (so no
+"logging to" lines), and no separate roslaunch server (the master's own URI stands for it). Bold,
+red and the terminal title are written only to a terminal.
+
+Exit codes, as roscore's: 0 after a clean stop, 1 when the master cannot start (another master
+already runs on the port, or the port is taken).
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import threading
+from typing import TYPE_CHECKING, Any, TextIO
+
+from rosx.core import Core, PortInUseError
+from rosx.core.params import ROSDISTRO, ROSVERSION
+from rosx.master.client import master_uri
+from rosx.transport.address import address_warnings, is_local_host
+from rosx.wire.xmlrpc_http import parse_http_uri
+
+if TYPE_CHECKING:
+    from collections.abc import Mapping
+    from types import FrameType
+
+
+def _summary_value(value: str) -> str:
+    """A parameter value as roslaunch's summary shows it: short, printable, or ``<...>``."""
+    if len(value) > 20:
+        value = value[:17] + "..."
+    if all(32 <= ord(char) <= 126 for char in value):
+        return value
+    stripped = value.rstrip()  # trailing whitespace such as rosversion's newline is dropped
+    return stripped if all(32 <= ord(char) <= 126 for char in stripped) else "<...>"
+
+
+class _Printer:
+    """roslaunch's console output: plain lines, bold lines, red errors, the terminal title."""
+
+    def __init__(self, stdout: TextIO, stderr: TextIO, color: bool, error_color: bool) -> None:
+        self.stdout, self.stderr = stdout, stderr
+        self.color, self.error_color = color, error_color
+
+    def line(self, text: str = "") -> None:
+        self.stdout.write(text + "\n")
+        self.stdout.flush()
+
+    def bold(self, text: str) -> None:
+        self.line(f"\033[1m{text}\033[0m" if self.color else text)
+
+    def title(self, text: str) -> None:
+        if self.color:
+            self.line(f"\033]2;{text}\007")
+
+    def error(self, text: str) -> None:
+        self.stderr.write((f"\033[31m{text}\033[0m" if self.error_color else text) + "\n")
+        self.stderr.flush()
+
+
+def _print_summary(out: _Printer) -> None:
+    out.line(f"ros_comm version {ROSVERSION}")
+    params = {"/rosdistro": ROSDISTRO, "/rosversion": ROSVERSION}
+    lines = sorted(f" * {key}: {_summary_value(value)}" for key, value in params.items())
+    out.line("\nSUMMARY\n========\n\nPARAMETERS\n" + "\n".join(lines) + "\n\nNODES\n")
+
+
+def _master_uri_warning(environ: Mapping[str, str], port: int) -> str | None:
+    uri = master_uri(environ)
+    try:
+        host, env_port, _ = parse_http_uri(uri)
+    except ValueError:
+        return None
+    if not is_local_host(host):
+        return f"WARNING: ROS_MASTER_URI [{uri}] host is not set to this machine"
+    if env_port != port:
+        return f"WARNING: ROS_MASTER_URI port [{env_port}] does not match this roscore [{port}]"
+    return None
+
+
+def _refuse(out: _Printer, refused: PortInUseError) -> int:
+    """Explain, as roscore does, why the master could not start; the exit code."""
+    _print_summary(out)
+    if refused.another_master:
+        out.error(refused.message)
+        return 1
+    out.line("auto-starting new master")
+    out.bold(f"process[master]: started with pid [{os.getpid()}]")
+    out.line(refused.message)
+    out.error(f"RLException: ERROR: could not contact master [{refused.uri}]")
+    return 1
+
+
+def _print_started(out: _Printer, core: Core) -> None:
+    out.bold(f"started roslaunch server {core.uri}")
+    _print_summary(out)
+    uri_warning = _master_uri_warning(core.environ, core.port)
+    if uri_warning:
+        out.error(uri_warning)
+    out.line("auto-starting new master")
+    out.bold(f"process[master]: started with pid [{os.getpid()}]")
+    out.bold(f"ROS_MASTER_URI={core.uri}")
+    out.title(f"roscore {core.uri}")
+    out.bold(f"setting /run_id to {core.run_id}")
+    out.bold(f"process[rosout-1]: started with pid [{os.getpid()}]")
+    out.line("started core service [/rosout]")
+
+
+def _print_stopping(out: _Printer, message: str | None) -> None:
+    if message is not None:
+        # rosmaster's words, misspelling included, for a shutdown call without a message.
+        out.line(f"shutdown request: {message}" if message else "shutdown requst")
+    out.line("[rosout-1] killing on exit")
+    out.line("[master] killing on exit")
+    out.line("shutting down processing monitor...")
+
+
+class _Stop(BaseException):
+    """Raised by a stop signal in the main thread while it waits for the core."""
+
+
+class _StopSignals:
+    """SIGINT and SIGTERM stop roscore from the moment it starts. One that comes while the core
+    starts or the summary prints is kept until `wait`, so roscore's start-up lines and its
+    shutdown lines are always printed whole."""
+
+    _SIGNALS = (signal.SIGINT, signal.SIGTERM)
+
+    def __init__(self) -> None:
+        self.received = False
+        self._waiting = False
+        self._previous: dict[int, Any] = {}  # the handlers replaced
+
+    def __enter__(self) -> _StopSignals:
+        if threading.current_thread() is threading.main_thread():
+            for sig in self._SIGNALS:
+                self._previous[sig] = signal.signal(sig, self._handle)
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        for sig, handler in self._previous.items():
+            signal.signal(sig, handler)
+
+    def _handle(self, signum: int, frame: FrameType | None) -> None:
+        self.received = True
+        if self._waiting:
+            raise _Stop
+
+    def wait(self, core: Core) -> str | None:
+        """Wait for a stop signal or a ``shutdown`` call; the call's message (None for a
+        signal)."""
+        self._waiting = True
+        try:
+            return None if self.received else core.wait()
+        except _Stop:
+            return None
+        finally:
+            self._waiting = False
+
+
+def run_roscore(
+    port: int,
+    environ: Mapping[str, str],
+    stdout: TextIO,
+    stderr: TextIO | None = None,
+    *,
+    color: bool | None = None,
+) -> int:
+    """Run roscore on `port` until SIGINT, SIGTERM or a ``shutdown`` call; the exit code.
+
+    Args:
+        port: The master's port (roscore's ``-p``; 11311 by default there).
+        environ: The environment (ROS_IP, ROS_HOSTNAME, ROS_MASTER_URI are read).
+        stdout: Where the start-up summary and progress go.
+        stderr: Where errors and warnings go (`stdout` if not given).
+        color: Bold, red and terminal title; by default each stream gets them if it is a
+            terminal.
+
+    Signals are caught only on the main thread (elsewhere only a ``shutdown`` call stops it).
+    """
+    errors = stderr if stderr is not None else stdout
+    out = _Printer(
+        stdout,
+        errors,
+        stdout.isatty() if color is None else color,
+        errors.isatty() if color is None else color,
+    )
+    for warning in address_warnings(environ):
+        out.error(warning)
+    out.title("roscore")
+    core = Core(port, environ)
+    with _StopSignals() as signals:
+        try:
+            core.start()
+        except PortInUseError as refused:
+            return _refuse(out, refused)
+        try:
+            _print_started(out, core)
+            _print_stopping(out, signals.wait(core))
+        finally:
+            core.stop()
+    out.line("... shutting down processing monitor complete")
+    out.bold("done")
+    return 0
