@@ -6,7 +6,8 @@
    Debian's rospy, rosx's with rosx's (the same scripts).
 2. The same with a master already running (a ROS 1 roscore), so only the launcher and the
    nodes are timed.
-3. ``roslaunch --dump-params`` of a file with 1 000 parameters: wall time.
+
+(``--dump-params`` of 1 000 parameters is timed by ``bench_roslaunch_parse.py``.)
 
 Each case alternates ROS 1 and rosx, ``--runs`` times (default 5), and prints medians and the
 ratio rosx / ROS 1 (design target for start-up: <= 0.5). Both run from bytecode caches, as
@@ -25,6 +26,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from functools import partial
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
@@ -42,7 +44,7 @@ rospy.spin()
 """
 
 
-def make_package(root: Path, nodes: int, params: int) -> Path:
+def make_package(root: Path, nodes: int) -> Path:
     package = root / "benchlaunch"
     (package / "scripts").mkdir(parents=True)
     (package / "launch").mkdir()
@@ -58,11 +60,11 @@ def make_package(root: Path, nodes: int, params: int) -> Path:
     (package / "launch" / "nodes.launch").write_text(
         "<launch>\n" + "\n".join(lines) + "\n</launch>\n"
     )
-    params_xml = [f'  <param name="group{i // 100}/p{i}" value="{i}"/>' for i in range(params)]
-    (package / "launch" / "params.launch").write_text(
-        "<launch>\n" + "\n".join(params_xml) + "\n</launch>\n"
-    )
     return package
+
+
+def _freed(port: int) -> bool:
+    return not port_open(port)
 
 
 def registered(client: XmlRpcClient, uri: str) -> set[str]:
@@ -108,12 +110,6 @@ def one_launch(
     return up, down
 
 
-def timed(command: list[str], env: dict[str, str]) -> float:
-    start = time.perf_counter()
-    subprocess.run(command, env=env, stdout=subprocess.DEVNULL, check=True)
-    return time.perf_counter() - start
-
-
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=5)
@@ -127,7 +123,7 @@ def main() -> int:
     names = {f"/n{i}" for i in range(options.nodes)}
     with tempfile.TemporaryDirectory() as tmp:
         root = Path(tmp)
-        make_package(root / "src", options.nodes, 1000)
+        make_package(root / "src", options.nodes)
         base = ros1_environ(ROS_HOME=str(root / "home"))
         # Installed software runs from bytecode caches (pip and Debian write them); timing the
         # compilation of every module at every start would measure something else.
@@ -148,7 +144,7 @@ def main() -> int:
                 if round_:
                     up[kind].append(a)
                     down[kind].append(b)
-                wait_for(lambda port=port: not port_open(port), what="the port freed")
+                wait_for(partial(_freed, port), what="the port freed")
         rows.append((f"{options.nodes} nodes + core: to all registered", up["ros1"], up["rosx"]))
         rows.append(("  then Ctrl-C to exit", down["ros1"], down["rosx"]))
 
@@ -165,14 +161,6 @@ def main() -> int:
                     up[kind].append(one_launch(args, env, uri, names)[0])
                     wait_for(lambda: not names & registered(XmlRpcClient(), uri), what="exit")
         rows.append((f"{options.nodes} nodes, master running", up["ros1"], up["rosx"]))
-
-        # 3. --dump-params of 1 000 parameters.
-        dumps: dict[str, list[float]] = {"ros1": [], "rosx": []}
-        for _ in range(options.runs):
-            for kind, command in (("ros1", ros1), ("rosx", rosx)):
-                args = [*command, "--dump-params", "benchlaunch", "params.launch"]
-                dumps[kind].append(timed(args, base))
-        rows.append(("--dump-params, 1 000 params", dumps["ros1"], dumps["rosx"]))
 
     print(f"{'case':<42}{'ROS 1 (s)':>11}{'rosx (s)':>10}{'ratio':>8}")
     for label, ros1_times, rosx_times in rows:

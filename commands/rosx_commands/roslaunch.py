@@ -337,17 +337,10 @@ def _write_pid(opts: dict[str, Any], env: Environment, port: int | None) -> Path
 
 
 def _run_core(env: Environment, port: int | None) -> int:
-    """``--core``: what ``roscore`` does."""
-    from rosx.master.core import run_core  # noqa: PLC0415
-    from rosx.node.aggregator import core_hook  # noqa: PLC0415
+    """``--core``: roscore (which ROS 1's roscore is: ``roslaunch --core``)."""
+    from rosx_commands.main import run_tool  # noqa: PLC0415 - tools are loaded by name
 
-    return run_core(
-        port or DEFAULT_MASTER_PORT,
-        env.environ,
-        env.stdout,
-        env.stderr,
-        start_rosout=core_hook(env.environ),
-    )
+    return run_tool(["roscore", "-p", str(port or DEFAULT_MASTER_PORT)], env)
 
 
 def _launch(
@@ -378,6 +371,7 @@ def _launch(
         force_log=opts["force_log"],
         force_required=opts["force_required"],
         show_summary=not opts["no_summary"],
+        verbose=opts["verbose"],
         skip_log_check=opts["skip_log_check"],
         titles=not opts["disable_title"],
         sigint_timeout=opts["sigint_timeout"],

@@ -81,6 +81,7 @@ class LaunchSettings:
         force_log: bool = False,
         force_required: bool = False,
         show_summary: bool = True,
+        verbose: bool = False,
         skip_log_check: bool = False,
         titles: bool = True,
         sigint_timeout: float = DEFAULT_SIGINT_TIMEOUT,
@@ -93,6 +94,7 @@ class LaunchSettings:
         self.force_log = force_log
         self.force_required = force_required
         self.show_summary = show_summary
+        self.verbose = verbose
         self.skip_log_check = skip_log_check
         self.titles = titles
         self.sigint_timeout = sigint_timeout
@@ -273,6 +275,8 @@ class LaunchRun:
         self.run_id = self._run_id(running)
         self._start_logging()
         self.console.title(self.title)
+        if self.settings.verbose:
+            self._print_loading()
         server = LaunchServer(self.monitor, self.environ)
         server.start()
         try:
@@ -391,35 +395,31 @@ class LaunchRun:
         return str(self.core.run_id)
 
     def _start_logging(self) -> None:
-        try:
-            self.log_dir = logdir.prepare_run_log_dir(self.environ, self.run_id)
-        except OSError:
-            folder = logdir.run_log_dir(self.environ, self.run_id)
-            self.console.error(
-                f"WARNING: cannot create log directory [{folder}]. "
-                "Please set ROS_LOG_DIR to a writable location."
-            )
-            self.console.error(
-                "WARNING: unable to configure logging. No log files will be generated"
-            )
-            return
-        path = self.log_dir / logdir.launcher_log_name()
-        if self.console.open_log(path):
-            self.console.plain(f"... logging to {path}")
-        if self.settings.skip_log_check:
-            return
-        self.console.line(
-            "Checking log directory for disk usage. This may take a while.\n"
-            "Press Ctrl-C to interrupt"
+        path = logdir.announce_run_log(
+            self.environ,
+            self.run_id,
+            out=self.console.plain,
+            err=self.console.error,
+            check_disk=not self.settings.skip_log_check,
         )
-        folder = logdir.log_dir(self.environ)
-        if logdir.disk_usage(folder) > logdir.DISK_USAGE_WARNING:
-            self.console.error(
-                f"WARNING: disk usage in log directory [{folder}] is over 1GB.\n"
-                "It's recommended that you use the 'rosclean' command."
-            )
-        else:
-            self.console.line("Done checking log file disk usage. Usage is <1GB.")
+        if path is not None:
+            self.log_dir = path.parent
+            self.console.open_log(path)
+
+    def _print_loading(self) -> None:
+        """``-v``: what roslaunch says as it reads each file (rebuilt from the plan: each
+        file's parameters and nodes in the order of their tags, a node after its own)."""
+        for file in dict.fromkeys(self.plan.files):
+            self.console.plain(f"... loading XML file [{file}]")
+            params = [p for p in self.plan.params.values() if p.source.file == file]
+            tags = [(float(p.source.line), f"Added parameter [{p.name}]") for p in params]
+            for node in (n for n in self.plan.nodes if n.source.file == file):
+                own = [p.source.line for p in params if p.name.startswith(node.resolved_name + "/")]
+                kind = f"{node.package}/{node.type}"
+                text = f"Added node of type [{kind}] in namespace [{node.namespace}]"
+                tags.append((max([node.source.line, *own]) + 0.5, text))
+            for _, text in sorted(tags, key=lambda tag: tag[0]):
+                self.console.plain(text)
 
     # -- the master ------------------------------------------------------------------------
 

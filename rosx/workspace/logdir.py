@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from collections.abc import Mapping
+    from collections.abc import Callable, Mapping
 
 #: Above this many bytes in the log folder, roslaunch suggests ``rosclean``.
 DISK_USAGE_WARNING = 1 << 30
@@ -96,6 +96,47 @@ def launcher_log_name(pid: int | None = None) -> str:
     return f"roslaunch-{socket.gethostname()}-{os.getpid() if pid is None else pid}.log"
 
 
+def announce_run_log(
+    environ: Mapping[str, str],
+    run_id: str,
+    *,
+    out: Callable[[str], object],
+    err: Callable[[str], object],
+    check_disk: bool = True,
+) -> Path | None:
+    """What roslaunch and roscore do and print first: the run's log folder (with ``latest``),
+    ``... logging to <folder>/roslaunch-<host>-<pid>.log``, then the disk-usage check.
+
+    Returns:
+        The launcher's log file (created empty), or None when the folder cannot be made
+        (rosgraph's warnings are printed then, and nothing is logged).
+    """
+    try:
+        folder = prepare_run_log_dir(environ, run_id)
+        path = folder / launcher_log_name()
+        path.touch()
+    except OSError:
+        err(
+            f"WARNING: cannot create log directory [{run_log_dir(environ, run_id)}]. "
+            "Please set ROS_LOG_DIR to a writable location."
+        )
+        err("WARNING: unable to configure logging. No log files will be generated")
+        return None
+    out(f"... logging to {path}")
+    if check_disk:
+        out("Checking log directory for disk usage. This may take a while.")
+        out("Press Ctrl-C to interrupt")
+        logs = log_dir(environ)
+        if disk_usage(logs) > DISK_USAGE_WARNING:
+            err(
+                f"WARNING: disk usage in log directory [{logs}] is over 1GB.\n"
+                "It's recommended that you use the 'rosclean' command."
+            )
+        else:
+            out("Done checking log file disk usage. Usage is <1GB.")
+    return path
+
+
 def disk_usage(folder: Path) -> int:
     """The bytes of the files below ``folder`` (0 if it does not exist)."""
     total = 0
@@ -110,6 +151,7 @@ def disk_usage(folder: Path) -> int:
 
 __all__ = [
     "DISK_USAGE_WARNING",
+    "announce_run_log",
     "current_log_dir",
     "current_run_id",
     "disk_usage",

@@ -18,6 +18,7 @@ import subprocess
 import sys
 import threading
 from collections.abc import Iterator
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -318,9 +319,7 @@ def test_turtlemimic_starts_a_core_two_turtlesims_and_mimic_and_ctrl_c_ends_all(
             poses: dict[str, Any] = {}
             pose_type = get_message_class("turtlesim/Pose")
             for ns in ("turtlesim1", "turtlesim2"):
-                watcher.subscribe(
-                    f"/{ns}/turtle1/pose", pose_type, lambda m, ns=ns: poses.__setitem__(ns, m)
-                )
+                watcher.subscribe(f"/{ns}/turtle1/pose", pose_type, partial(poses.__setitem__, ns))
             twist_type = get_message_class("geometry_msgs/Twist")
             cmd = watcher.advertise("/turtlesim1/turtle1/cmd_vel", twist_type, queue_size=1)
             twist = twist_type()
@@ -474,11 +473,21 @@ def test_with_a_master_running_the_launch_ends_when_its_nodes_end(
         wait_for(lambda: port_open(port), what="roscore")
         with launched(["labl", "clean.launch"], env) as launch:
             assert launch.finish(timeout=90) == 0
+        with launched(["-v", "--skip-log-check", "labl", "clean.launch"], env) as verbose:
+            assert verbose.finish(timeout=90) == 0
         with Node("/checker", master_uri=world["uri"], environ={}) as checker:
             run_id = checker.master.call("getParam", "/run_id")
             assert checker.master.call("getParam", "/answer") == 42
     assert f"logging to {world['home'] / 'ros_home' / 'log' / run_id}/" in launch.out
     assert "auto-starting new master" not in launch.out
+    where = world["home"] / "src" / "labl" / "launch" / "clean.launch"
+    assert (
+        f"... loading XML file [{where}]\n"
+        "Added parameter [/answer]\n"
+        "Added parameter [/once/code]\n"
+        "Added node of type [labl/quitter.py] in namespace [/]\n"
+        "started roslaunch server "
+    ) in verbose.out
     assert (
         f"ROS_MASTER_URI=http://localhost:{port}\nprocess[once-1]: started with pid" in launch.out
     )
@@ -596,3 +605,17 @@ def test_python_nodes_do_not_share_their_random_numbers(world: dict[str, Any]) -
         assert launch.interrupt() == 0
     draws = re.findall(r"drew (\S+)", launch.out)
     assert len(set(draws)) == 2, draws
+
+
+def test_core_runs_roscore(world: dict[str, Any]) -> None:
+    """``roslaunch --core`` is roscore, log folder included."""
+    args = ["--core", "-p", str(world["port"])]
+    with launched(args, world["env"]) as launch:
+        launch.wait_for_text("started core service [/rosout]\n")
+        assert launch.interrupt() == 0
+    run_id = re.findall(r"setting /run_id to (\S+)", launch.out)[0]
+    log_dir = world["home"] / "ros_home" / "log" / run_id
+    assert launch.out.startswith(f"... logging to {log_dir}/roslaunch-")
+    assert "ros_comm version 1.16.0\n" in launch.out
+    assert launch.out.endswith("... shutting down processing monitor complete\ndone\n")
+    assert (world["home"] / "ros_home" / "log" / "latest").resolve() == log_dir.resolve()

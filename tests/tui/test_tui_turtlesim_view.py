@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import re
+import signal
 import sys
 from pathlib import Path
 
@@ -84,3 +85,27 @@ def _text(output: bytes) -> str:
     """What the terminal showed, without escape sequences and half blocks (for messages)."""
     plain = re.sub(rb"\x1b\[[0-9;?<>$]*[a-zA-Z~]|\x1b\][^\x07]*\x07", b"", output)
     return plain.decode(errors="replace").replace("\u2580", "")
+
+
+def test_on_a_terminal_launched_turtlesims_log_instead_of_drawing(tmp_path: Path) -> None:
+    """With --screen, both turtlesims write to roslaunch's terminal: as log lines, no pond."""
+    port = free_port()
+    launch = [
+        sys.executable,
+        "-m",
+        "rosx_commands",
+        "roslaunch",
+        "--screen",
+        str(MULTISIM / "multisim.launch"),
+    ]
+    with on_a_terminal(
+        launch, ROS_MASTER_URI=f"http://localhost:{port}", ROS_HOME=str(tmp_path)
+    ) as terminal:
+        terminal.read(60, until=b"Starting turtlesim with node name /turtlesim2/sim")
+        terminal.read(30, until=b"Starting turtlesim with node name /turtlesim1/sim")
+        terminal.process.send_signal(signal.SIGINT)  # what Ctrl-C sends from a cooked terminal
+        assert terminal.wait(30) == 0
+    text = _text(terminal.output)
+    assert "Spawning turtle [turtle1]" in text, text
+    assert BLUE_BACKGROUND not in terminal.output
+    assert "done" in text
