@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -112,3 +114,29 @@ def test_same_as_debians_rosclean(tmp_path: Path, argv: list[str], stdin: str) -
     assert (tmp_path / "ours" / ".ros" / "log").exists() == (
         tmp_path / "theirs" / ".ros" / "log"
     ).exists()
+
+
+def test_a_cores_run_folder_is_where_roscd_log_goes_and_what_rosclean_purges(
+    tmp_path: Path,
+) -> None:
+    """ROS/Tutorials: roscore logs to ``~/.ros/log/<run_id>`` (``latest`` points there),
+    ``roscd log`` goes there while it runs, ``rosclean check`` counts it, ``purge -y`` ends it."""
+    from tests.support.procs import free_port, port_open, running, wait_for
+
+    port = free_port()
+    env = clean_environ(HOME=str(tmp_path), ROS_MASTER_URI=f"http://127.0.0.1:{port}/")
+    core = [sys.executable, "-m", "rosx_commands", "roscore", "-p", str(port)]
+    log = tmp_path / ".ros" / "log"
+    with running(core, env):
+        wait_for(lambda: port_open(port) and (log / "latest").is_symlink(), what="roscore")
+        where = rosx("roscd", "--where", "log", environ=env)
+        assert (where.status, where.err) == (0, "")
+        run = Path(where.out.strip())
+        assert run.parent == log and (log / "latest").resolve() == run.resolve()
+        assert re.fullmatch(r"[0-9a-f-]{36}", run.name)
+        check = rosx("rosclean", "check", environ=env)
+        assert re.fullmatch(r"\S+ ROS node logs\n", check.out)
+    assert rosx("rosclean", "purge", "-y", environ=env).out == "Purging ROS node logs.\n"
+    assert not log.exists()
+    after = rosx("roscd", "--where", "log", environ=env)
+    assert (after.out, after.err) == (f"{log}\n", "No active roscore\n")
