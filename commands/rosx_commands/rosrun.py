@@ -104,7 +104,7 @@ def _choose(paths: list[Path], env: Environment) -> Path | None:
     env.stderr.write("#? ")
     env.stderr.flush()
     answer = env.stdin.readline().strip()
-    if answer.isdigit() and 1 <= int(answer) <= len(paths):
+    if answer.isascii() and answer.isdigit() and 1 <= int(answer) <= len(paths):
         return paths[int(answer) - 1]
     return None
 
@@ -133,6 +133,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
     from rosx.client.script import shim_environ  # noqa: PLC0415
     from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
     from rosx.workspace.executables import find_executables, is_python_script  # noqa: PLC0415
+    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
 
     options = _options(argv)
     if options is None:
@@ -173,7 +174,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
             return ExitStatus.NOT_FOUND
         chosen = picked
     path = chosen
-    environ = shim_environ(env.environ)
+    environ = shim_environ(env.environ, shim_dirs())
     command = [*script_command(), str(path)] if is_python_script(path) else [str(path)]
     if debug:
         env.out(f"[rosrun] Running {' '.join([*prefix, *command, *rest])}")
