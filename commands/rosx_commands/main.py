@@ -63,6 +63,7 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rosrun": ("rosx_commands.rosrun:rosrun", "Run an executable of a ROS package."),
     "roscd": ("rosx_commands.roscd:roscd", "Where roscd goes (roscd itself is a shell function)."),
     "rosls": ("rosx_commands.roscd:rosls", "List a package's directory."),
+    "rosclean": ("rosx_commands.rosclean:rosclean", "Check or purge the ROS log folders."),
     "shell-init": (
         "rosx_commands.shell_init:shell_init",
         "Print shell functions: ROS 1's command names, roscd, rosls.",

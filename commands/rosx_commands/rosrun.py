@@ -11,7 +11,8 @@ meant (``turtlesim node`` typed for ``turtlesim_node``).
 Then, as rosrun ``exec``s the program, this process becomes it, except that a Python script
 runs with rosx's Python and ``rospy`` whatever its ``#!`` line says (``rosx run-script``), and
 that the programs rosx provides itself (turtlesim's ``turtlesim_node``, ``turtle_teleop_key``,
-``draw_square``, ``mimic``; ``rosrun rostopic rostopic`` and the other ROS tools) run here.
+``draw_square``, ``mimic``; roscpp_tutorials' ``talker``, ``listener``, ``add_two_ints_server``,
+``add_two_ints_client``; ``rosrun rostopic rostopic`` and the other ROS tools) run here.
 """
 
 from __future__ import annotations
@@ -62,11 +63,11 @@ def _provided(
     package: str, executable: str, args: list[str], env: Environment
 ) -> Callable[[], int] | None:
     """A program rosx runs in this process for ``rosrun PACKAGE EXECUTABLE``, if any."""
-    if package == "turtlesim":
-        from rosx_turtle.executables import EXECUTABLES, load  # noqa: PLC0415
+    if package in ("turtlesim", "roscpp_tutorials"):
+        from rosx_turtle.executables import PROGRAMS, load  # noqa: PLC0415
 
-        if executable in EXECUTABLES:
-            return lambda: load(executable)(args, env)
+        if executable in PROGRAMS[package]:
+            return lambda: load(executable, package)(args, env)
     from rosx_commands.main import TOOLS, run_tool  # noqa: PLC0415
 
     tool = _TOOL_EXECUTABLES.get((package, executable))

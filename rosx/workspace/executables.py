@@ -7,7 +7,8 @@ also lists the same-named files that are not executable, which rosrun reports. F
 found, `suggestion` picks the executable the user most likely meant.
 
 `bundled_program` finds the programs of the packages rosx ships (turtlesim's ``turtlesim_node``,
-``mimic``…): they are rosx's whatever else ``ROS_PACKAGE_PATH`` holds under the same package
+``mimic``…, roscpp_tutorials' in ``lib/roscpp_tutorials``, rospy_tutorials' scripts):
+they are rosx's whatever else ``ROS_PACKAGE_PATH`` holds under the same package
 name, as ``rosx rosrun turtlesim …`` runs rosx's turtlesim. ``roslaunch`` starts them from there.
 
 `is_python_script` tells the scripts rosx runs with its own Python and ``rospy``, whatever their
@@ -71,19 +72,6 @@ def find_executables(package_dir: Path, name: str) -> Search:
     return Search(executables, others)
 
 
-def bundled_program(package: str, name: str) -> Path | None:
-    """The executable ``name`` of the package ``package`` that rosx ships, if it has one."""
-    if "/" in name:
-        return None
-    from rosx.packages.crawl import bundled_packages  # noqa: PLC0415
-
-    directory = bundled_packages().get(package)
-    if directory is None:
-        return None
-    found = find_executables(directory, name).executables
-    return found[0] if found else None
-
-
 def executable_names(package_dir: Path) -> list[str]:
     """The names of every executable below ``package_dir`` (what rosrun could run), sorted."""
     return sorted({path.name for path in _walk(package_dir) if _runnable(path)})
@@ -99,6 +87,20 @@ def suggestion(name: str, following: list[str], known: list[str]) -> str | None:
 
     close = difflib.get_close_matches(name, known, n=1, cutoff=0.6)
     return close[0] if close else None
+
+
+def bundled_program(package: str, name: str) -> Path | None:
+    """The executable ``name`` of the package ``package`` that rosx ships, if it has one."""
+    if "/" in name:
+        return None
+    from rosx.packages.crawl import bundled_libexec, bundled_packages  # noqa: PLC0415
+
+    # As catkin's rosrun: the package's libexec folder (``lib/<package>``) first.
+    for directory in (bundled_libexec(package), bundled_packages().get(package)):
+        found = find_executables(directory, name).executables if directory else []
+        if found:
+            return found[0]
+    return None
 
 
 def is_python_script(path: Path) -> bool:

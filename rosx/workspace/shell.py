@@ -34,6 +34,7 @@ ROS_COMMANDS = (
     "rosparam",
     "roslaunch",
     "rospack",
+    "rosclean",
     "catkin_make",
     "catkin_create_pkg",
     "rqt_graph",
