@@ -28,6 +28,7 @@ if TYPE_CHECKING:
     from rosx.node import Node, Publisher
     from rosx_turtle.console import Console
     from rosx_turtle.node.turtlesim import TurtlesimNode
+    from rosx_turtle.sim.inspect import Inspector
     from rosx_turtle.tui.feed import Feed
     from rosx_turtle.tui.graph import Graph
     from rosx_turtle.tui.log import LogRecord
@@ -78,6 +79,7 @@ class SimHost:
         self.cmd_vel: Publisher | None = None
         self._twist: type[Any] = get_message_class("geometry_msgs/Twist")
         self._stops: list[Callable[[], object]] = []
+        self._inspecting: Inspector | None = None
 
     @property
     def master_uri(self) -> str:
@@ -170,6 +172,26 @@ class SimHost:
         twist.linear.x = linear
         twist.angular.z = angular
         self.cmd_vel.publish(twist)
+
+    def describe_topic(self, topic: str) -> str:
+        """``rostopic info TOPIC``'s text (blocks: call from a worker thread)."""
+        return self._inspector().describe_topic(topic)
+
+    def describe_node(self, node: str) -> str:
+        """``rosnode info NODE``'s text (blocks: call from a worker thread)."""
+        return self._inspector().describe_node(node)
+
+    def echo(self, topic: str, offer: Callable[[str], object]) -> Callable[[], None]:
+        """Offer each message of ``topic`` as ``rostopic echo`` text; returns how to stop."""
+        return self._inspector().echo(topic, offer)
+
+    def _inspector(self) -> Inspector:
+        if self._inspecting is None:
+            from rosx_turtle.sim.inspect import Inspector  # noqa: PLC0415 - when asked
+
+            self._inspecting = Inspector(self.master_uri, self.environ)
+            self._stops.append(self._inspecting.close)
+        return self._inspecting
 
     def stop(self) -> None:
         """Stop everything started, in reverse order (nodes unregister from the master first)."""
