@@ -77,6 +77,12 @@ def test_client_and_workspace_layers_import_nothing_heavy_or_higher() -> None:
     )
     assert not {m for m in loaded if m.split(".")[0] in HEAVY}
     assert not {m for m in loaded if m.startswith(("rosx_commands", "rosx_turtle"))}
+    assert not {m for m in loaded if m.startswith(("rosx.bag", "rosx.launch"))}
+
+
+def test_the_bag_layers_shim_directory_costs_no_bag_module() -> None:
+    loaded = _modules_after("import rosx.bag\nrosx.bag.SHIM_DIR")
+    assert {m for m in loaded if m.startswith("rosx.bag")} == {"rosx.bag"}
 
 
 @pytest.mark.parametrize(

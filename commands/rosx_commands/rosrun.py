@@ -18,13 +18,13 @@ from __future__ import annotations
 
 import os
 import shlex
-import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import NamedTuple
 
 from rosx_commands.cli import run_command
 from rosx_commands.context import Environment, ExitStatus
+from rosx_commands.invocation import script_command
 
 USAGE = """\
 Usage: rosrun [--prefix cmd] [--debug] PACKAGE EXECUTABLE [ARGS]
@@ -41,6 +41,7 @@ _TOOL_EXECUTABLES = {
     ("rosmsg", "rossrv"): "rossrv",
     ("rosservice", "rosservice"): "rosservice",
     ("rosparam", "rosparam"): "rosparam",
+    ("roslaunch", "roslaunch"): "roslaunch",
     ("rqt_graph", "rqt_graph"): "rqt_graph",
     ("rqt_console", "rqt_console"): "rqt_console",
     ("rqt_logger_level", "rqt_logger_level"): "rqt_logger_level",
@@ -102,7 +103,7 @@ def _choose(paths: list[Path], env: Environment) -> Path | None:
     env.stderr.write("#? ")
     env.stderr.flush()
     answer = env.stdin.readline().strip()
-    if answer.isdigit() and 1 <= int(answer) <= len(paths):
+    if answer.isascii() and answer.isdigit() and 1 <= int(answer) <= len(paths):
         return paths[int(answer) - 1]
     return None
 
@@ -131,6 +132,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
     from rosx.client.script import shim_environ  # noqa: PLC0415
     from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
     from rosx.workspace.executables import find_executables, is_python_script  # noqa: PLC0415
+    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
 
     options = _options(argv)
     if options is None:
@@ -171,11 +173,8 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
             return ExitStatus.NOT_FOUND
         chosen = picked
     path = chosen
-    environ = shim_environ(env.environ)
-    if is_python_script(path):
-        command = [sys.executable, "-m", "rosx_commands", "run-script", str(path)]
-    else:
-        command = [str(path)]
+    environ = shim_environ(env.environ, shim_dirs())
+    command = [*script_command(), str(path)] if is_python_script(path) else [str(path)]
     if debug:
         env.out(f"[rosrun] Running {' '.join([*prefix, *command, *rest])}")
     return Launch([*prefix, *command, *rest], environ)

@@ -21,7 +21,7 @@ import re
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 from rosx.master.client import MasterError
-from rosx.transport.errors import FaultError, TransportError
+from rosx.transport.errors import FaultError, InvalidUriError, TransportError
 
 if TYPE_CHECKING:
     from rosx.graph.state import GraphState
@@ -47,6 +47,10 @@ class NodeContactError(Exception):
     def __init__(self, uri: str) -> None:
         super().__init__(f"Communication with node[{uri}] failed!")
         self.uri = uri
+
+
+class InvalidNodeUriError(NodeContactError):
+    """The node registered a URI that cannot be called (``http://host:1²/``): none was tried."""
 
 
 # -- nodes -------------------------------------------------------------------------------------
@@ -77,13 +81,15 @@ def node_connections(master: MasterClient, uri: str) -> str:
     """What the node at ``uri`` says of itself: its PID and its live connections.
 
     Raises:
-        NodeContactError: the node does not answer.
+        NodeContactError: the node does not answer (`InvalidNodeUriError`: it cannot be called).
         MasterError: the node refused (``remote call failed: …``).
     """
     state = master.system_state()
     try:
         pid = master.node_call(uri, "getPid", timeout=NODE_TIMEOUT)
         bus_info = master.node_call(uri, "getBusInfo", timeout=NODE_TIMEOUT)
+    except InvalidUriError:
+        raise InvalidNodeUriError(uri) from None
     except (TransportError, FaultError):
         raise NodeContactError(uri) from None
     except MasterError as error:

@@ -26,7 +26,7 @@ from rosx.workspace.errors import BuildError
 from rosx.workspace.shell import setup_for_shell, setup_sh
 
 if TYPE_CHECKING:
-    from collections.abc import Iterator, Mapping
+    from collections.abc import Iterator, Mapping, Sequence
 
     from rosx.workspace.types import PackageTypes
 
@@ -142,13 +142,13 @@ class CatkinMake:
         layout: Layout,
         environ: Mapping[str, str],
         *,
-        shim_dir: Path,
+        shim_dirs: Sequence[Path],
         rosx: str,
         only: list[str] | None = None,
     ) -> None:
         self.layout = layout
         self.environ = environ
-        self.shim_dir = shim_dir
+        self.shim_dirs = list(shim_dirs)
         self.rosx = rosx
         self.only = only
         self.warnings: list[str] = []
@@ -244,7 +244,7 @@ class CatkinMake:
             setup_sh(
                 source=str(layout.source),
                 devel=str(devel),
-                shim=str(self.shim_dir),
+                shims=[str(d) for d in self.shim_dirs],
                 rosx=self.rosx,
             ),
             encoding="utf-8",

@@ -6,6 +6,10 @@ ROS 1's rosrun searches the whole package directory (following symbolic links, s
 also lists the same-named files that are not executable, which rosrun reports. For a name not
 found, `suggestion` picks the executable the user most likely meant.
 
+`bundled_program` finds the programs of the packages rosx ships (turtlesim's ``turtlesim_node``,
+``mimic``…): they are rosx's whatever else ``ROS_PACKAGE_PATH`` holds under the same package
+name, as ``rosx rosrun turtlesim …`` runs rosx's turtlesim. ``roslaunch`` starts them from there.
+
 `is_python_script` tells the scripts rosx runs with its own Python and ``rospy``, whatever their
 ``#!`` line says: a ``#!`` line naming python, or no ``#!`` line and a ``.py`` name.
 """
@@ -67,6 +71,19 @@ def find_executables(package_dir: Path, name: str) -> Search:
     return Search(executables, others)
 
 
+def bundled_program(package: str, name: str) -> Path | None:
+    """The executable ``name`` of the package ``package`` that rosx ships, if it has one."""
+    if "/" in name:
+        return None
+    from rosx.packages.crawl import bundled_packages  # noqa: PLC0415
+
+    directory = bundled_packages().get(package)
+    if directory is None:
+        return None
+    found = find_executables(directory, name).executables
+    return found[0] if found else None
+
+
 def executable_names(package_dir: Path) -> list[str]:
     """The names of every executable below ``package_dir`` (what rosrun could run), sorted."""
     return sorted({path.name for path in _walk(package_dir) if _runnable(path)})
@@ -96,4 +113,11 @@ def is_python_script(path: Path) -> bool:
     return path.suffix == ".py"
 
 
-__all__ = ["Search", "find_executables", "is_python_script"]
+__all__ = [
+    "Search",
+    "bundled_program",
+    "executable_names",
+    "find_executables",
+    "is_python_script",
+    "suggestion",
+]

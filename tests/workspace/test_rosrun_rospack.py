@@ -4,6 +4,7 @@ and executables with ROS 1's texts and exit statuses, and the shell functions.""
 from __future__ import annotations
 
 import io
+import os
 import shutil
 import subprocess
 import sys
@@ -11,6 +12,8 @@ from pathlib import Path
 
 import pytest
 
+from rosx.bag import SHIM_DIR as BAG_SHIM_DIR
+from rosx.client.script import SHIM_DIR
 from rosx_commands.context import Environment
 from rosx_commands.rosrun import Launch, plan
 from tests.support.cli import clean_environ, rosx
@@ -96,13 +99,25 @@ def test_rosrun_usage_and_invalid_names(workspace: Path) -> None:
     assert (invalid.status, invalid.out) == (1, "Invalid filename:  scripts/\n")
 
 
+@pytest.mark.parametrize("answer", ["x", "²", "3"])
+def test_rosrun_refuses_a_choice_that_is_not_a_listed_number(workspace: Path, answer: str) -> None:
+    for folder in ("bin", "scripts"):
+        (workspace / "lab2" / folder).mkdir(exist_ok=True)
+        (workspace / "lab2" / folder / "twice").write_text("#!/bin/sh\n")
+        (workspace / "lab2" / folder / "twice").chmod(0o755)
+    result = rosx("rosrun", "lab2", "twice", stdin=answer + "\n", environ=env_of(workspace))
+    assert result.status == 3
+    assert result.err.endswith("2) " + str(workspace / "lab2" / "scripts" / "twice") + "\n#? ")
+
+
 def test_rosrun_runs_python_scripts_with_rosxs_python(workspace: Path) -> None:
     env = Environment(environ=env_of(workspace))
     launch = plan(["lab2", "pub.py", "a", "x:=y"], env)
     assert isinstance(launch, Launch)
     script = str(workspace / "lab2" / "scripts" / "pub.py")
     assert launch.argv == [sys.executable, "-m", "rosx_commands", "run-script", script, "a", "x:=y"]
-    assert launch.environ["PYTHONPATH"].endswith("rosx/client/shim")
+    shims = launch.environ["PYTHONPATH"].split(os.pathsep)[:2]
+    assert shims == [str(SHIM_DIR), str(BAG_SHIM_DIR)]
     prefixed = plan(["--prefix", "nice -n 5", "lab2", "scripts/pub.py"], env)
     assert isinstance(prefixed, Launch) and prefixed.argv[:3] == ["nice", "-n", "5"]
 

@@ -24,6 +24,7 @@ EXECUTABLES: dict[str, str] = {
     "turtle_teleop_key": "rosx_turtle.teleop:run_teleop",
     "draw_square": "rosx_turtle.tutorials.draw_square:run_draw_square",
     "mimic": "rosx_turtle.tutorials.mimic:run_mimic",
+    "turtlesim_view": "rosx_turtle.viewer:run_turtlesim_view",
 }
 
 
