@@ -6,6 +6,7 @@ from __future__ import annotations
 import signal
 import subprocess
 import sys
+import threading
 from urllib.parse import urlsplit
 
 from rosx.master.client import MasterClient
@@ -60,15 +61,23 @@ def test_sim_join_registers_turtlesim_and_teleop_on_the_running_master(master: s
         text=True,
         start_new_session=True,
     )
+    lines: list[str] = []
+    assert sim.stdout is not None
+    reader = threading.Thread(target=lambda: lines.extend(sim.stdout or ()), daemon=True)
+    reader.start()
     try:
         wait_for(lambda: registered(master) >= LAB1_NODES, timeout=60, what="Lab 1's nodes")
+        # Started: it says which master it joined.
+        wait_for(lambda: f"ROS_MASTER_URI={master}\n" in lines, timeout=60, what="the URI")
         sim.send_signal(signal.SIGINT)
-        out, err = sim.communicate(timeout=30)
+        sim.wait(timeout=30)
+        assert sim.stderr is not None
+        err = sim.stderr.read()
     finally:
         stop(sim)
+    reader.join(timeout=10)
     assert sim.returncode == 0, err
     assert "Traceback" not in err
-    assert f"ROS_MASTER_URI={master}" in out.splitlines()
     # It left the master it joined running, with its own nodes gone.
     wait_for(lambda: not (LAB1_NODES & registered(master)), timeout=30, what="nodes unregistered")
     assert "/rosout" in registered(master)
