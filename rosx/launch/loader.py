@@ -37,7 +37,8 @@ def resolve_launch_arguments(
     """Split roslaunch's positional arguments into launch files and ``name:=value`` args.
 
     ``PKG FILE`` names a file found anywhere in package ``PKG`` (as ``roslaunch`` and
-    ``roslib.packages.find_resource`` look, hidden directories skipped); otherwise the first
+    ``roslib.packages.find_resource`` look, hidden directories skipped; in rosx's own package of
+    that name when the package path's has no such file); otherwise the first
     word is a path (or ``-``). The ``name:=value`` arguments may stand anywhere.
 
     Raises:
@@ -95,17 +96,20 @@ def _find_in_package(package: str, name: str, package_index: PackageIndex) -> li
     from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415
 
     try:
-        root = package_index.find(package)
+        package_index.find(package)
     except PackageNotFoundError:
         return []
-    found: list[str] = []
-    for directory, subdirs, files in os.walk(root, followlinks=True):
-        subdirs[:] = sorted(d for d in subdirs if not d.startswith("."))
-        if name in files:
-            path = os.path.normpath(Path(directory, name).absolute())
-            if path not in found:
-                found.append(path)
-    return found
+    for root in package_index.directories(package):
+        found: list[str] = []
+        for directory, subdirs, files in os.walk(root, followlinks=True):
+            subdirs[:] = sorted(d for d in subdirs if not d.startswith("."))
+            if name in files:
+                path = os.path.normpath(Path(directory, name).absolute())
+                if path not in found:
+                    found.append(path)
+        if found:
+            return found
+    return []
 
 
 def load_launch(
