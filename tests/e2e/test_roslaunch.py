@@ -28,10 +28,10 @@ import pytest
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
+from rosx.packages.index import bundled_packages
 from rosx.transport.client import call as xmlrpc_call
 from tests.support.cli import clean_environ, rosx
 from tests.support.procs import free_port, port_open, running, stop, wait_for
-from rosx.packages.index import bundled_packages
 from tests.support.ros1 import OVERLAY, needs_ros1, run_ros1
 
 START_X = 5.544444561004639
