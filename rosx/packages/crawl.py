@@ -16,6 +16,9 @@ from pathlib import Path
 
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
 
+#: The install prefix of the ROS packages shipped with rosx (``share/``, ``lib/``).
+PREFIX = Path(__file__).parent / "noetic"
+
 #: Python packages shipped with rosx that hold ROS package directories (found, not imported).
 BUNDLED_MODULES = ("rosx_turtle",)
 
