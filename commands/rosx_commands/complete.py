@@ -21,6 +21,7 @@ from rosx_commands.context import Environment, ExitStatus
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from rosx.msg.store import TypeStore
     from rosx.packages.index import PackageIndex
 
 #: Seconds the master has to answer a completion's question.
@@ -77,6 +78,7 @@ class _Line:
         self.current = words[cword] if cword < len(words) else ""
         self.env = env
         self._index: PackageIndex | None = None
+        self._store: TypeStore | None = None
 
     def word(self, at: int) -> str:
         return self.words[at] if 0 <= at < len(self.words) else ""
@@ -88,6 +90,14 @@ class _Line:
 
             self._index = PackageIndex.from_environ(self.env.environ)
         return self._index
+
+    @property
+    def store(self) -> TypeStore:
+        if self._store is None:
+            from rosx.msg.store import TypeStore  # noqa: PLC0415
+
+            self._store = TypeStore.from_environ(self.env.environ)
+        return self._store
 
     def package_dir(self, name: str) -> Path | None:
         return self.index.packages.get(name)
@@ -112,12 +122,13 @@ def _walk_files(line: _Line, package: str) -> list[Path]:
 
 
 def _executables(line: _Line, package: str) -> list[str]:
-    return [p.name for p in _walk_files(line, package) if p.is_file() and os.access(p, os.X_OK)]
+    found = [p.name for p in _walk_files(line, package) if p.is_file() and os.access(p, os.X_OK)]
+    return sorted(set(found))
 
 
 def _files(line: _Line, package: str, suffixes: tuple[str, ...] = ()) -> list[str]:
     names = [p.name for p in _walk_files(line, package) if not p.name.endswith((".o", ".a"))]
-    return [n for n in names if not suffixes or n.endswith(suffixes)]
+    return sorted({n for n in names if not suffixes or n.endswith(suffixes)})
 
 
 def _locations(line: _Line) -> list[str]:
@@ -175,10 +186,7 @@ def _topic_type(line: _Line, topic: str) -> str | None:
 def _types(line: _Line, kind: str) -> list[str]:
     """rosbash's ``_msg_opts``/``_srv_opts``: ``pkg/`` while several packages match, else the
     package's types."""
-    from rosx.msg.store import default_store  # noqa: PLC0415
-
-    store = default_store()
-    names = store.types(kind)
+    names = line.store.types(kind)
     current = line.current
     if "/" in current:
         package = current.partition("/")[0]
@@ -190,10 +198,10 @@ def _types(line: _Line, kind: str) -> list[str]:
 
 
 def _proto(line: _Line, kind: str, name: str) -> list[str]:
-    from rosx.msg.store import UnknownTypeError, default_store  # noqa: PLC0415
+    from rosx.msg.store import UnknownTypeError  # noqa: PLC0415
     from rosx.msg.text.prototype import prototype  # noqa: PLC0415
 
-    store = default_store()
+    store = line.store
     try:
         if kind == "srv":
             store.srv(name)
@@ -233,7 +241,7 @@ def _roslaunch(line: _Line) -> list[str]:
         return [*line.index.packages, *local]
     first = line.word(1)
     if line.cword == 2 and not first.endswith((".launch", ".test")):
-        return _files(line, first, (".launch", ".test", ".xml"))
+        return _files(line, first, (".launch", ".test"))
     return _launch_args(line)
 
 

@@ -10,7 +10,7 @@ every package. ``rossrv-proto`` is the same command.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 from rosx_commands.cli import ToolParser, run_command
 from rosx_commands.context import Environment, ExitStatus
@@ -79,8 +79,8 @@ class _Failed(Exception):  # noqa: N818 - rosmsg-proto's report
         self.status = status
 
 
-def _text(args: list[str], options: object, parser: ToolParser) -> str:
-    from rosx.msg.store import UnknownTypeError, default_store  # noqa: PLC0415
+def _text(args: list[str], options: object, parser: ToolParser, environ: Mapping[str, str]) -> str:
+    from rosx.msg.store import TypeStore, UnknownTypeError  # noqa: PLC0415
     from rosx.msg.text.prototype import prototype  # noqa: PLC0415
 
     if len(args) < 2:
@@ -96,7 +96,7 @@ def _text(args: list[str], options: object, parser: ToolParser) -> str:
         parser.error(
             f"invalid message type '{name}'.\nPlease refer to msg/srv types as 'package_name/Type'."
         )
-    store = default_store()
+    store = TypeStore.from_environ(environ)
     if "/" not in name:
         found = store.find(name, mode) if mode in ("msg", "srv") else []
         if len(found) > 1:
@@ -136,7 +136,7 @@ def _proto(argv: list[str], env: Environment) -> int:
     parser = _parser(env)
     options, args = parser.parse(argv)
     try:
-        env.out(_text(args, options, parser))
+        env.out(_text(args, options, parser, env.environ))
     except _Failed as failed:
         if options.silent:
             return ExitStatus.OK

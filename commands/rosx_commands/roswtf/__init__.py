@@ -152,7 +152,7 @@ def _roswtf(argv: list[str], env: Environment) -> int:
         env.stdout.flush()
 
     try:
-        check_graph(master, findings, say)
+        check_graph(master, findings, say, env.err)
     except MasterUnreachable:
         findings.check("error", f"cannot contact ROS Master at {master}", True)
         env.err(f"roswtf lost connection to the ROS Master at {master}")

@@ -8,7 +8,9 @@ The graph comes from `rosx.graph.fetch.fetch_state` (the master's registrations 
 
 from __future__ import annotations
 
+import socket
 from typing import TYPE_CHECKING
+from urllib.parse import urlsplit
 
 from rosx.graph.fetch import fetch_state
 from rosx.master.client import MasterClient, MasterError
@@ -67,16 +69,41 @@ def _probe(master: MasterClient, services: list[str]) -> list[str]:
     for name in services:
         try:
             header = probe_service(master, name)
-        except ServiceError:
-            problems.append(f"service [{name}] appears to be malfunctioning")
+        except ServiceError as error:
+            problems.append(f"service [{name}] appears to be malfunctioning: {error}")
             continue
         if not header:
             problems.append(f"service [{name}] did not return service headers")
     return problems
 
 
-def check_graph(master_uri: str, findings: Findings, say: Callable[[str], None]) -> None:
-    """Analyse the graph at ``master_uri`` and record roswtf's graph findings.
+def _ping_failure(node: str, uri: str | None) -> str:
+    """What rosnode's ping prints (to stderr) about a node that did not answer."""
+    if uri is None:
+        return f"cannot ping [{node}]: unknown node"
+    parts = urlsplit(uri)
+    try:
+        with socket.create_connection((parts.hostname or "", parts.port or 80), timeout=3.0):
+            pass
+    except socket.gaierror:
+        return f"ERROR: Unknown host [{parts.hostname}] for node [{node}]"
+    except ConnectionRefusedError:
+        return f"ERROR: connection refused to [{uri}]"
+    except TimeoutError:
+        return f"connection to [{node}] timed out"
+    except OSError:
+        return f"connection to [{node}] failed"
+    return f"connection to [{node}] failed"
+
+
+def check_graph(
+    master_uri: str,
+    findings: Findings,
+    say: Callable[[str], None],
+    complain: Callable[[str], None],
+) -> None:
+    """Analyse the graph at ``master_uri`` and record roswtf's graph findings; ``say`` prints
+    roswtf's progress lines, ``complain`` what its node pings print to stderr.
 
     Raises:
         MasterUnreachable: the master stopped answering.
@@ -101,6 +128,12 @@ def check_graph(master_uri: str, findings: Findings, say: Callable[[str], None])
     def edges(which: set[Edge]) -> list[str]:
         return [f"{p}->{s} ({t})" for t, p, s in sorted(which)] if nodes else []
 
+    def unpinged() -> list[str]:
+        failed = [n for n in nodes if state.unreachable(n) or n not in state.node_uris]
+        for node in failed:
+            complain(_ping_failure(node, state.node_uris.get(node)))
+        return failed
+
     def clock_missing() -> bool:
         return sim_time and not ({"/clock", "/time"} & set(state.publishers))
 
@@ -124,7 +157,7 @@ def check_graph(master_uri: str, findings: Findings, say: Callable[[str], None])
             ),
             (
                 "error",
-                lambda: [n for n in nodes if state.unreachable(n) or n not in state.node_uris],
+                unpinged,
                 "Could not contact the following nodes:",
             ),
             (
