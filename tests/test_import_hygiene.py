@@ -77,6 +77,12 @@ def test_client_and_workspace_layers_import_nothing_heavy_or_higher() -> None:
     )
     assert not {m for m in loaded if m.split(".")[0] in HEAVY}
     assert not {m for m in loaded if m.startswith(("rosx_commands", "rosx_turtle"))}
+    assert not {m for m in loaded if m.startswith(("rosx.bag", "rosx.launch"))}
+
+
+def test_the_bag_layers_shim_directory_costs_no_bag_module() -> None:
+    loaded = _modules_after("import rosx.bag\nrosx.bag.SHIM_DIR")
+    assert {m for m in loaded if m.startswith("rosx.bag")} == {"rosx.bag"}
 
 
 @pytest.mark.parametrize(
@@ -167,3 +173,14 @@ def test_rosmsg_of_a_standard_type_reads_rosbags_once(tmp_path: Path) -> None:
     first, second = _modules_after(code), _modules_after(code)
     assert "rosbags" in first
     assert not {m for m in second if m.split(".")[0] in ("rosbags", "dataclasses", "typing")}
+
+
+@pytest.mark.parametrize(
+    "argv", [["rqt_plot", "--help"], ["rqt_plot", "/a/x"], ["rqt_topic"], ["rqt", "--help"]]
+)
+def test_rqt_tools_load_no_tui_before_they_draw(argv: list[str]) -> None:
+    loaded = _modules_after(
+        "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
+        f"run_tool({argv!r}, Environment(stdout=io.StringIO(), stderr=io.StringIO(), environ={{}}))"
+    )
+    assert not {m for m in loaded if m.split(".")[0] in ("textual", "textual_plot", "numpy")}

@@ -71,10 +71,10 @@ def _catkin_make(argv: list[str], env: Environment) -> int:
     )
     args, targets = parser.parse_known_args(argv)
 
-    from rosx.client.script import SHIM_DIR  # noqa: PLC0415 - not for -h and usage errors
     from rosx.workspace.build import CatkinMake, workspace_layout  # noqa: PLC0415
     from rosx.workspace.errors import BuildError  # noqa: PLC0415
     from rosx_commands.invocation import self_command, working_directory  # noqa: PLC0415
+    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
 
     layout = workspace_layout(working_directory(env), args.directory, args.source, args.build)
     # --pkg only narrows what make builds; rosx builds every package's types (it is cheap).
@@ -82,7 +82,7 @@ def _catkin_make(argv: list[str], env: Environment) -> int:
     make = CatkinMake(
         layout,
         env.environ,
-        shim_dir=SHIM_DIR,
+        shim_dirs=shim_dirs(),
         rosx=self_command(),
         only=only,
         install="install" in targets,

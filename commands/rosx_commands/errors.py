@@ -69,3 +69,14 @@ def command_error(error: BaseException, env: Environment, status: int) -> Comman
         if isinstance(error, UnknownTopicError | NodeContactError):
             return CommandError(f"ERROR: {error}", status)
     return None
+
+
+def error_line(error: BaseException) -> str:
+    """``error`` as one line for a terminal UI's status line: the core's errors in ROS 1's
+    words (`command_error`), any other as its text."""
+    import io  # noqa: PLC0415 - only on failure
+
+    quiet = Environment(stdout=io.StringIO(), stderr=io.StringIO(), environ={})
+    mapped = command_error(error, quiet, 1)
+    text = mapped.message if mapped else str(error)
+    return text.splitlines()[0] if text.strip() else type(error).__name__

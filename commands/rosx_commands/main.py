@@ -31,6 +31,23 @@ TOOLS: dict[str, tuple[str, str]] = {
         "rosx_commands.rqt_graph:rqt_graph",
         "Show the ROS graph of nodes and topics, live.",
     ),
+    "rqt_console": (
+        "rosx_commands.rqt_console:rqt_console",
+        "Show the log of every node (/rosout_agg), filtered and highlighted.",
+    ),
+    "rqt_logger_level": (
+        "rosx_commands.rqt_logger_level:rqt_logger_level",
+        "Show and set the logger levels of running nodes.",
+    ),
+    "rqt_plot": (
+        "rosx_commands.rqt_plot:rqt_plot",
+        "Plot numeric fields of topics live (TOPIC/FIELD...).",
+    ),
+    "rqt_topic": (
+        "rosx_commands.rqt_topic:rqt_topic",
+        "Monitor topics: type, bandwidth, rate and the latest message.",
+    ),
+    "rqt": ("rosx_commands.rqt:rqt", "The rqt tools as tabs of one terminal app."),
     "sim": ("rosx_commands.sim:sim", "Run a master, turtlesim and teleop in one terminal UI."),
     "catkin_create_pkg": (
         "rosx_commands.catkin_create_pkg:catkin_create_pkg",

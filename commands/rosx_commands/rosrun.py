@@ -5,7 +5,8 @@ shipped with rosx); the executable as rosrun finds it (`rosx.workspace.executabl
 and statuses are rosrun's: usage and 0 with fewer than two arguments, rospack's
 ``[rospack] Error: package 'x' not found`` and 2 for an unknown package,
 ``[rosrun] Couldn't find executable named x below /dir`` (with the files found that are not
-executable) and 3 for a missing executable.
+executable) and 3 for a missing executable; on a terminal, then, the executable most likely
+meant (``turtlesim node`` typed for ``turtlesim_node``).
 
 Then, as rosrun ``exec``s the program, this process becomes it, except that a Python script
 runs with rosx's Python and ``rospy`` whatever its ``#!`` line says (``rosx run-script``), and
@@ -41,6 +42,11 @@ _TOOL_EXECUTABLES = {
     ("rosservice", "rosservice"): "rosservice",
     ("rosparam", "rosparam"): "rosparam",
     ("rqt_graph", "rqt_graph"): "rqt_graph",
+    ("rqt_console", "rqt_console"): "rqt_console",
+    ("rqt_logger_level", "rqt_logger_level"): "rqt_logger_level",
+    ("rqt_plot", "rqt_plot"): "rqt_plot",
+    ("rqt_topic", "rqt_topic"): "rqt_topic",
+    ("rqt_gui", "rqt_gui"): "rqt",
 }
 
 
@@ -66,6 +72,27 @@ def _provided(
     if tool is not None and tool in TOOLS:
         return lambda: run_tool([tool, *args], env)
     return None
+
+
+def _suggest(
+    package: str, executable: str, rest: list[str], directory: Path, env: Environment
+) -> None:
+    """On a terminal, after rosrun's error: the executable the user most likely meant."""
+    if not env.stderr_isatty:
+        return  # off a terminal the output stays ROS 1's, for scripts that read it
+    from rosx.workspace.executables import executable_names, suggestion  # noqa: PLC0415
+
+    known = executable_names(directory)
+    if package == "turtlesim":
+        from rosx_turtle.executables import EXECUTABLES  # noqa: PLC0415
+
+        known += EXECUTABLES
+    meant = suggestion(executable, rest, known)
+    if meant is None:
+        return
+    args = rest[1:] if meant == f"{executable}_{rest[0] if rest else ''}" else rest
+    command = " ".join(["rosrun", package, meant, *args])
+    env.err(f"[rosrun] Did you mean {meant}? ({command})")
 
 
 def _choose(paths: list[Path], env: Environment) -> Path | None:
@@ -104,6 +131,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
     from rosx.client.script import shim_environ  # noqa: PLC0415
     from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
     from rosx.workspace.executables import find_executables, is_python_script  # noqa: PLC0415
+    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
 
     options = _options(argv)
     if options is None:
@@ -135,6 +163,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
             env.out("[rosrun] or not executable:")
             for other in found.not_executable:
                 env.out(f"[rosrun]   {other}")
+        _suggest(package, executable, rest, directory, env)
         return ExitStatus.NOT_FOUND
     chosen = found.executables[0]
     if len(found.executables) > 1:
@@ -143,7 +172,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
             return ExitStatus.NOT_FOUND
         chosen = picked
     path = chosen
-    environ = shim_environ(env.environ)
+    environ = shim_environ(env.environ, shim_dirs())
     if is_python_script(path):
         command = [sys.executable, "-m", "rosx_commands", "run-script", str(path)]
     else:

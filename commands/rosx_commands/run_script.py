@@ -20,5 +20,6 @@ def run_script(argv: Sequence[str], env: Environment) -> int:
         (env.stdout if args else env.stderr).write(_USAGE + "\n")
         return ExitStatus.OK if args else ExitStatus.USAGE
     from rosx.client.script import run_script as run  # noqa: PLC0415
+    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
 
-    return run(args[0], args[1:], stderr=env.stderr)
+    return run(args[0], args[1:], stderr=env.stderr, shim_dirs=shim_dirs())

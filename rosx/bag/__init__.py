@@ -5,22 +5,18 @@ Format code, with no I/O beyond files: `records` (the records as bytes), `reader
 writing, chunk by chunk), `reindex` (a bag whose writer never closed it), `info` (ROS 1's
 ``rosbag info`` text and YAML). Shells over the node runtime: `recorder` (raw subscriptions
 into a writer) and `player` (raw publications from a reader). `api` is the ``rosbag`` Python
-API of ROS 1 (``rosbag.Bag``) for users' scripts.
+API of ROS 1 (``rosbag.Bag``) for users' scripts, importable as ``rosbag`` from `SHIM_DIR`.
 
-This package imports `rosx.msg`, `rosx.node` and `rosx.names`, nothing above them.
+This package imports `rosx.msg`, `rosx.node` and `rosx.names`, nothing above them. Importing it
+loads none of its modules.
 """
 
 from __future__ import annotations
 
-from rosx.bag.errors import BagError, BagFormatError, BagUnindexedError
-from rosx.bag.reader import BagReader, Connection
-from rosx.bag.writer import BagWriter
+from pathlib import Path
 
-__all__ = [
-    "BagError",
-    "BagFormatError",
-    "BagReader",
-    "BagUnindexedError",
-    "BagWriter",
-    "Connection",
-]
+#: The import-path entry holding the ``rosbag`` module of users' scripts (see
+#: `rosx.client.script`; the commands put it on the path beside the client's).
+SHIM_DIR = Path(__file__).resolve().parent / "shim"
+
+__all__ = ["SHIM_DIR"]

@@ -18,6 +18,8 @@ The contract (ROS 1's ``rosbag record``, tools/rosbag/src/recorder.cpp):
 * Topics: those named (resolved in the node's namespace), ``all`` topics, those matching
   ``regex`` patterns (whole-name matches), those a ``node`` subscribes to; minus ``exclude``.
   Topics that appear later are picked up by asking the master every `DISCOVERY_PERIOD` s.
+* A write that fails (a full disk) stops the recording with one error line; the bag is closed
+  with what reached the disk before (see `rosx.bag.writer`), renamed, and opens.
 * ``limit`` messages per topic, then that topic is unsubscribed; when every named topic has
   its count, recording stops. ``max_size`` / ``max_duration`` stop the recording, or with
   ``split`` start the next file ``NAME_<n>.bag``, keeping at most ``max_splits`` files.
@@ -34,12 +36,13 @@ from collections import deque
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rosx.bag.writer import DEFAULT_CHUNK_THRESHOLD, BagWriter
+from rosx.bag.writer import DEFAULT_CHUNK_THRESHOLD, BagWriter, open_unbuffered
 from rosx.master.client import MasterError
 
 if TYPE_CHECKING:
     from collections.abc import Callable
 
+    from rosx.bag.writer import Opener
     from rosx.node import Node, RawMessage, Subscriber
 
 #: Seconds between two looks at the master for new topics.
@@ -131,8 +134,11 @@ class Recorder:
         node: Node,
         options: RecordOptions,
         log: Callable[[str, str], None],
+        *,
+        opener: Opener = open_unbuffered,
     ) -> None:
         self.node = node
+        self._opener = opener
         self.options = options
         self.log = log  # (level, text): "INFO", "WARN", "ERROR"
         self._lock = threading.Condition()
@@ -156,6 +162,7 @@ class Recorder:
         self._threads: list[threading.Thread] = []
         self.written = 0
         self.dropped = 0
+        self._failure: OSError | None = None
         self._conns: dict[tuple[str, int], int] = {}
         self._headers_kept: list[dict[str, str]] = []
 
@@ -346,8 +353,7 @@ class Recorder:
                 if self._stopping.is_set() and not self._queue:
                     break
         except OSError as exc:
-            self.error = f"Error writing: {exc}"
-            self.log("ERROR", self.error)
+            self._failure = exc
         finally:
             self._close_bag()
             self.request_stop()
@@ -398,6 +404,7 @@ class Recorder:
             self._target + ".active",
             compression=self.options.compression,
             chunk_threshold=self.options.chunk_size,
+            opener=self._opener,
         )
         if not self._file_start:
             self._file_start = time.time_ns()
@@ -406,14 +413,31 @@ class Recorder:
     def _close_bag(self) -> None:
         writer, self._writer = self._writer, None
         if writer is None:
+            self._report_failure(None)
             return
         self.log("INFO", f"Closing '{self._target}'.")
         try:
             writer.close()
         except OSError as exc:
-            self.log("ERROR", f"Error closing '{self._target}': {exc}")
-            return
+            if writer.failed is None:
+                self.log("ERROR", f"Error closing '{self._target}': {exc}")
+                return
+            self._failure = exc
         Path(writer.path).replace(self._target)
+        self._report_failure(writer)
+
+    def _report_failure(self, writer: BagWriter | None) -> None:
+        """The one error line of a write that failed (a full disk), once the bag is closed."""
+        if self._failure is None or self.error is not None:
+            return
+        self.error = (
+            f"Error writing to '{self._target}': {self._failure.strerror or self._failure}."
+        )
+        self.error += "  Recording stopped"
+        if writer is not None:
+            self.error += f"; the bag keeps the {writer.message_count} messages written before"
+        self.error += "."
+        self.log("ERROR", self.error)
 
     def _next_file(self) -> None:
         self._close_bag()

@@ -12,14 +12,23 @@ file only on close and cannot append, hence this writer.
 A connection's record is written in the chunk of its first message and again in the index, as
 ROS 1 does. Mode ``'a'`` reopens an indexed bag, drops its index and goes on after its last
 chunk.
+
+A write that fails (a full disk: ``ENOSPC``) cuts the file back to the end of the last complete
+chunk, drops the messages of the chunk that did not fit and raises the `OSError`; the writer then
+takes no more messages, and `BagWriter.close` still writes the index of the chunks on disk (the
+last chunks give way to it if cutting the partial one did not free enough room), so the bag
+opens with everything written before the failure. Files are written unbuffered, so nothing
+half-written stays in a buffer to be retried later.
 """
 
 from __future__ import annotations
 
+import contextlib
+import io
 import os
 import threading
 from pathlib import Path
-from typing import TYPE_CHECKING, BinaryIO
+from typing import TYPE_CHECKING, BinaryIO, Protocol
 
 from rosx.bag import records as rec
 from rosx.bag.errors import BagError
@@ -32,6 +41,17 @@ if TYPE_CHECKING:
 DEFAULT_CHUNK_THRESHOLD = 768 * 1024
 
 
+class Opener(Protocol):
+    """How a writer opens its file: ``opener(path, mode)`` (``'wb'`` or ``'r+b'``), unbuffered."""
+
+    def __call__(self, path: str, mode: str, /) -> BinaryIO: ...
+
+
+def open_unbuffered(path: str, mode: str) -> BinaryIO:
+    """The file at ``path`` opened in ``mode`` with no buffering (the default `Opener`)."""
+    return io.FileIO(path, mode)
+
+
 class BagWriter:
     """A bag being written (see the module's docstring); every method is thread-safe."""
 
@@ -42,11 +62,12 @@ class BagWriter:
         *,
         compression: str = "none",
         chunk_threshold: int = DEFAULT_CHUNK_THRESHOLD,
+        opener: Opener = open_unbuffered,
     ) -> None:
-        """Create (``'w'``) or reopen (``'a'``) the bag at ``path``.
+        """Create (``'w'``) or reopen (``'a'``) the bag at ``path``, opened with ``opener``.
 
         Raises:
-            OSError: the file cannot be created or opened.
+            OSError: the file cannot be created, opened or written.
             BagError: ``'a'`` on a file that is not an indexed bag; unknown compression.
         """
         if compression not in rec.COMPRESSIONS:
@@ -63,10 +84,17 @@ class BagWriter:
         self._index: dict[int, list[tuple[int, int]]] = {}
         self._times: tuple[int, int] = (0, 0)
         self.closed = False
+        #: The error that stopped writing (a full disk), if any.
+        self.failed: OSError | None = None
+        self._opener = opener
         if mode == "w":
-            self.file: BinaryIO = Path(self.path).open("wb")  # noqa: SIM115 - closed by close()
-            self.file.write(rec.MAGIC + rec.bag_header(0, 0, 0))
-            self.file.flush()
+            self.file: BinaryIO = opener(self.path, "wb")
+            try:
+                self._write_all(rec.MAGIC + rec.bag_header(0, 0, 0))
+            except OSError:
+                self.file.close()
+                Path(self.path).unlink(missing_ok=True)
+                raise
         elif mode == "a":
             self._reopen()
         else:
@@ -83,12 +111,19 @@ class BagWriter:
                 self._conn_ids[key] = conn.id
                 self._written_conns.add(conn.id)
             self.chunks = list(bag.chunks)
-        self.file = Path(self.path).open("r+b")  # noqa: SIM115
-        self.file.seek(13)
-        self.file.write(rec.bag_header(0, 0, 0))  # unindexed until closed again
+        self.file = self._opener(self.path, "r+b")
+        self.file.seek(len(rec.MAGIC))
+        self._write_all(rec.bag_header(0, 0, 0))  # unindexed until closed again
         self.file.truncate(end)
         self.file.seek(end)
-        self.file.flush()
+
+    def _write_all(self, data: bytes) -> None:
+        view = memoryview(data)
+        while view:
+            written = self.file.write(view)
+            if not written:
+                raise OSError(f"wrote nothing of {len(view)} bytes")
+            view = view[written:]
 
     # -- writing ------------------------------------------------------------------------------
 
@@ -110,6 +145,8 @@ class BagWriter:
         with self._lock:
             if self.closed:
                 raise BagError("Tried to write to a closed bag")
+            if self.failed is not None:
+                raise self.failed
             buffer = self._buffer
             if conn not in self._written_conns:
                 topic, header = self.connections[conn]
@@ -136,7 +173,7 @@ class BagWriter:
     def flush(self) -> None:
         """Close the open chunk now: it reaches the file with its index records."""
         with self._lock:
-            if not self.closed:
+            if not self.closed and self.failed is None:
                 self._flush_chunk()
 
     def _flush_chunk(self) -> None:
@@ -147,12 +184,26 @@ class BagWriter:
         pos = self.file.tell()
         parts = [rec.chunk_record_head(self.compression, len(raw), len(stored)), stored]
         parts += [rec.index_record(conn, self._index[conn]) for conn in sorted(self._index)]
-        self.file.write(b"".join(parts))
-        self.file.flush()
+        try:
+            self._write_all(b"".join(parts))
+        except OSError as error:
+            self._drop_chunk(pos, error)
+            raise
         counts = {conn: len(entries) for conn, entries in self._index.items()}
         self.chunks.append(ChunkInfo(pos, self._times[0], self._times[1], counts))
         self._buffer = bytearray()
         self._index = {}
+
+    def _drop_chunk(self, pos: int, error: OSError) -> None:
+        """Cut the file back to ``pos`` (the end of the last complete chunk) and forget the
+        chunk that did not fit: its messages, and the connections first written in it."""
+        self.failed = error
+        in_chunks = {conn for info in self.chunks for conn in info.counts}
+        self._written_conns &= in_chunks
+        self._buffer = bytearray()
+        self._index = {}
+        self.file.truncate(pos)
+        self.file.seek(pos)
 
     @property
     def size(self) -> int:
@@ -168,28 +219,48 @@ class BagWriter:
             return done + sum(len(e) for e in self._index.values())
 
     def close(self) -> None:
-        """Write the last chunk and the index, and close the file (idempotent)."""
+        """Write the last chunk and the index, and close the file (idempotent).
+
+        Raises:
+            OSError: the last chunk did not fit (the bag is closed with the chunks before it).
+        """
         with self._lock:
             if self.closed:
                 return
+            failed_before = self.failed
             try:
-                self._flush_chunk()
-                index_pos = self.file.tell()
-                parts = [
-                    rec.connection_record(conn, topic, header)
-                    for conn, (topic, header) in sorted(self.connections.items())
-                    if conn in self._written_conns
-                ]
-                parts += [rec.chunk_info_record(info) for info in self.chunks]
-                self.file.write(b"".join(parts))
-                self.file.truncate()
-                self.file.seek(len(rec.MAGIC))
-                conn_count = len(self._written_conns)
-                self.file.write(rec.bag_header(index_pos, conn_count, len(self.chunks)))
-                self.file.flush()
+                if self.failed is None:
+                    with contextlib.suppress(OSError):  # kept in self.failed, raised below
+                        self._flush_chunk()
+                self._write_index()
             finally:
                 self.closed = True
                 self.file.close()
+            if self.failed is not None and self.failed is not failed_before:
+                raise self.failed
+
+    def _write_index(self) -> None:
+        """The index after the last chunk, and the header pointing at it. Where the index does
+        not fit (a full disk), the last chunks give way to it, so the bag always opens."""
+        while True:
+            index_pos = self.file.tell()
+            parts = [
+                rec.connection_record(conn, topic, header)
+                for conn, (topic, header) in sorted(self.connections.items())
+                if conn in self._written_conns
+            ]
+            parts += [rec.chunk_info_record(info) for info in self.chunks]
+            try:
+                self._write_all(b"".join(parts))
+                break
+            except OSError as error:
+                if not self.chunks:
+                    raise
+                self._drop_chunk(self.chunks.pop().pos, self.failed or error)
+        self.file.truncate()
+        self.file.seek(len(rec.MAGIC))
+        conn_count = len(self._written_conns)
+        self._write_all(rec.bag_header(index_pos, conn_count, len(self.chunks)))
 
     def __enter__(self) -> BagWriter:
         return self
@@ -198,4 +269,4 @@ class BagWriter:
         self.close()
 
 
-__all__ = ["DEFAULT_CHUNK_THRESHOLD", "BagWriter"]
+__all__ = ["DEFAULT_CHUNK_THRESHOLD", "BagWriter", "Opener", "open_unbuffered"]

@@ -26,30 +26,32 @@ if TYPE_CHECKING:
     from collections.abc import Mapping, Sequence
     from typing import TextIO
 
-#: The directory holding the ``rospy`` shim package.
+#: The directory holding the ``rospy`` shim package. Higher layers that serve a ROS 1 module to
+#: scripts keep it in their own such directory; whoever runs scripts passes them all (``dirs``).
 SHIM_DIR = Path(__file__).resolve().parent / "shim"
 
 _SIGINT_STATUS = 130
 _API_DIR = str(Path(__file__).resolve().parent) + os.sep
 
 
-def shim_environ(environ: Mapping[str, str]) -> dict[str, str]:
-    """``environ`` with `SHIM_DIR` first on ``PYTHONPATH`` (once)."""
+def shim_environ(environ: Mapping[str, str], dirs: Sequence[Path] = (SHIM_DIR,)) -> dict[str, str]:
+    """``environ`` with the shim directories ``dirs`` first on ``PYTHONPATH`` (once each)."""
     env = dict(environ)
-    entries = [p for p in env.get("PYTHONPATH", "").split(os.pathsep) if p]
-    shim = str(SHIM_DIR)
-    env["PYTHONPATH"] = os.pathsep.join([shim, *[p for p in entries if p != shim]])
+    shims = [str(d) for d in dirs]
+    entries = [p for p in env.get("PYTHONPATH", "").split(os.pathsep) if p and p not in shims]
+    env["PYTHONPATH"] = os.pathsep.join([*shims, *entries])
     return env
 
 
-def prepare_imports() -> None:
-    """Make ``import rospy`` and ``<package>.msg`` give rosx's, in this process."""
+def prepare_imports(dirs: Sequence[Path] = (SHIM_DIR,)) -> None:
+    """Make ``import rospy`` (and the modules of the other ``dirs``) and ``<package>.msg``
+    give rosx's, in this process."""
     from rosx.client.modules import install  # noqa: PLC0415
 
-    shim = str(SHIM_DIR)
-    if shim not in sys.path:
-        sys.path.insert(0, shim)
-    os.environ.update({"PYTHONPATH": shim_environ(os.environ)["PYTHONPATH"]})
+    for shim in reversed([str(d) for d in dirs]):
+        if shim not in sys.path:
+            sys.path.insert(0, shim)
+    os.environ.update({"PYTHONPATH": shim_environ(os.environ, dirs)["PYTHONPATH"]})
     install()
 
 
@@ -69,8 +71,14 @@ def _user_traceback(error: BaseException, path: str) -> str:
     return "".join(report.format())
 
 
-def run_script(path: str, args: Sequence[str], stderr: TextIO | None = None) -> int:
-    """Run the Python script at ``path`` with ``args``; its exit status.
+def run_script(
+    path: str,
+    args: Sequence[str],
+    stderr: TextIO | None = None,
+    shim_dirs: Sequence[Path] = (SHIM_DIR,),
+) -> int:
+    """Run the Python script at ``path`` with ``args``, the modules of ``shim_dirs`` importable;
+    its exit status.
 
     Raises nothing for the script's own failures: they are printed on ``stderr``.
     """
@@ -87,7 +95,7 @@ def run_script(path: str, args: Sequence[str], stderr: TextIO | None = None) -> 
     except (SyntaxError, ValueError) as error:
         err.write("".join(traceback.format_exception_only(type(error), error)))
         return 1
-    prepare_imports()
+    prepare_imports(shim_dirs)
     sys.argv = [path, *args]
     sys.path.insert(0, str(Path(path).resolve().parent))
     main = types.ModuleType("__main__")

@@ -6,6 +6,7 @@ Vertex ids keep nodes and topics apart when they share a name: ``n:/name`` for a
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from enum import Enum
 
@@ -41,6 +42,10 @@ class ViewGraph:
 
     def vertex(self, vertex_id: str) -> Vertex | None:
         return next((v for v in self.vertices if v.id == vertex_id), None)
+
+
+#: What a vanished vertex's label says in the drawing.
+GONE = "(gone)"
 
 
 def node_id(name: str) -> str:
@@ -96,9 +101,15 @@ def vanished(before: ViewGraph, after: ViewGraph) -> ViewGraph:
 
 def with_ghosts(graph: ViewGraph, ghosts: ViewGraph) -> ViewGraph:
     """``graph`` with what vanished from it (``ghosts``) drawn in again, so a view can show it
-    faded: the ghost vertices, and the ghost edges whose ends are still drawn."""
+    faded: the ghost vertices, labelled ``(gone)`` (a faded colour alone is easily missed), and
+    the ghost edges whose ends are still drawn."""
     ids = {v.id for v in graph.vertices}
-    vertices = graph.vertices + tuple(v for v in ghosts.vertices if v.id not in ids)
+    gone = tuple(
+        dataclasses.replace(v, label=f"{v.label} {GONE}")
+        for v in ghosts.vertices
+        if v.id not in ids
+    )
+    vertices = graph.vertices + gone
     present = {v.id for v in vertices}
     edges = set(graph.edges)
     extra = tuple(

@@ -24,6 +24,8 @@ Modules, one concept each:
 - `params`: the parameter client and cache. `clock`: time, sleep, `Rate`.
 - `rosout`: log levels and console lines; `log_services`: ``/rosout`` and the logger services.
 - `signals`: optional SIGINT/SIGTERM handling. `errors`: the exceptions.
+- `stats`: what a subscriber measures of a topic (rate, bandwidth, delay), as ``rostopic
+  hz``/``bw``/``delay`` and rqt_topic report it.
 
 The names below are loaded on first use (PEP 562), so ``from rosx.node.service_client import
 ServiceClient`` costs a command-line tool that module alone, not the I/O loop and the rest.

@@ -28,7 +28,7 @@ from rosx.workspace.errors import BuildError
 from rosx.workspace.shell import setup_for_shell, setup_sh
 
 if TYPE_CHECKING:
-    from collections.abc import Iterator, Mapping
+    from collections.abc import Iterator, Mapping, Sequence
 
     from rosx.workspace.types import PackageTypes
 
@@ -144,14 +144,14 @@ class CatkinMake:
         layout: Layout,
         environ: Mapping[str, str],
         *,
-        shim_dir: Path,
+        shim_dirs: Sequence[Path],
         rosx: str,
         only: list[str] | None = None,
         install: bool = False,
     ) -> None:
         self.layout = layout
         self.environ = environ
-        self.shim_dir = shim_dir
+        self.shim_dirs = list(shim_dirs)
         self.rosx = rosx
         self.only = only
         self.install = install
@@ -260,7 +260,10 @@ class CatkinMake:
         """The setup files of a space (devel or install) whose packages are in ``source``."""
         files = {
             "setup.sh": setup_sh(
-                source=str(source), devel=str(space), shim=str(self.shim_dir), rosx=self.rosx
+                source=str(source),
+                devel=str(space),
+                shims=[str(d) for d in self.shim_dirs],
+                rosx=self.rosx,
             )
         }
         for shell in ("bash", "zsh"):

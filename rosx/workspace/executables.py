@@ -4,7 +4,8 @@ ROS 1's rosrun searches the whole package directory (following symbolic links, s
 ``build/``) for regular files of the given name with any execute bit set; a name containing
 ``/`` is taken as a path inside the package instead. `find_executables` does the same, and
 also lists the same-named files that are not executable, which rosrun reports. Like rosrun (with
-``catkin_find --libexec``) it looks first in an installed package's ``lib/PKG`` folder.
+``catkin_find --libexec``) it looks first in an installed package's ``lib/PKG`` folder. For a
+name not found, `suggestion` picks the executable the user most likely meant.
 
 `is_python_script` tells the scripts rosx runs with its own Python and ``rospy``, whatever their
 ``#!`` line says: a ``#!`` line naming python, or no ``#!`` line and a ``.py`` name.
@@ -77,6 +78,23 @@ def find_executables(package_dir: Path, name: str) -> Search:
             continue
         (executables if _runnable(path) else others).append(path)
     return Search(executables, others)
+
+
+def executable_names(package_dir: Path) -> list[str]:
+    """The names of every executable below ``package_dir`` (what rosrun could run), sorted."""
+    return sorted({path.name for path in _walk(package_dir) if _runnable(path)})
+
+
+def suggestion(name: str, following: list[str], known: list[str]) -> str | None:
+    """The executable a user most likely meant by ``name`` among ``known``: ``name`` joined to
+    the next argument by ``_`` (a space typed for an underscore, as in ``turtlesim node``), else
+    the closest name, if one is close."""
+    if following and f"{name}_{following[0]}" in known:
+        return f"{name}_{following[0]}"
+    import difflib  # noqa: PLC0415 - only for a name not found
+
+    close = difflib.get_close_matches(name, known, n=1, cutoff=0.6)
+    return close[0] if close else None
 
 
 def is_python_script(path: Path) -> bool:

@@ -53,6 +53,7 @@ ROS_COMMANDS = (
     "rqt_console",
     "rqt_logger_level",
     "rqt_plot",
+    "rqt_topic",
     "rqt",
 )
 
@@ -106,14 +107,15 @@ def shell_init(rosx: str, shell: str, commands: Sequence[str] = ROS_COMMANDS) ->
     return head + base_exports() + navigation_functions(rosx, shell) + functions
 
 
-def setup_sh(*, source: str, devel: str, shim: str, rosx: str) -> str:
+def setup_sh(*, source: str, devel: str, shims: Sequence[str], rosx: str) -> str:
     """A workspace's ``setup.sh`` (devel or install space): Noetic's environment with the
     workspace's packages (``source``) in front, their Python imports, roscd and rosls.
 
     Args:
         source: where the workspace's packages are (``src`` for devel, ``install/share``).
         devel: the space itself (``devel`` or ``install``).
-        shim: the folder holding rosx's ``rospy``, put on ``PYTHONPATH``.
+        shims: the folders of rosx's ``rospy`` and message modules, first one first on
+            ``PYTHONPATH``.
         rosx: how the shell runs rosx.
     """
     return (
@@ -121,7 +123,7 @@ def setup_sh(*, source: str, devel: str, shim: str, rosx: str) -> str:
         + base_exports()
         + prepend_path("ROS_PACKAGE_PATH", source)
         + prepend_path("CMAKE_PREFIX_PATH", devel)
-        + prepend_path("PYTHONPATH", shim)
+        + "".join(prepend_path("PYTHONPATH", shim) for shim in reversed(shims))
         + f"export ROSLISP_PACKAGE_DIRECTORIES={shlex.quote(devel + '/share/common-lisp')}\n"
         + navigation_functions(rosx)
     )

@@ -81,3 +81,25 @@ def test_fix_and_encrypt_say_they_are_not_supported(bag: str, tmp_path: Path) ->
     fixed = rosx("rosbag", "fix", bag, str(tmp_path / "out.bag"))
     assert fixed.status == 1 and fixed.err.startswith("rosx does not support rosbag fix")
     assert rosx("rosbag", "encrypt", bag).status == 1
+
+
+def test_progress_lines_are_ros1s(bag: str, tmp_path: Path) -> None:
+    with BagReader(bag) as source:
+        total = sum(source.chunk_header(i).size for i in range(len(source.chunks)))
+    size = f"{total / 1024:.1f} KB"
+    out = "o.bag"
+    result = rosx("rosbag", "decompress", "--output-dir", str(tmp_path), bag)
+    path = _shown(str(tmp_path / Path(bag).name))
+    assert result.status == 0, result.err
+    assert result.out == (
+        f"\r {path:<43}   0%   0.0 KB / {size:>8} --:-- ETA"
+        f"\r {path:<43} 100% {size:>19} 00:00    \n"
+    )
+    filtered = rosx("rosbag", "filter", bag, str(tmp_path / out), "True")
+    shown = _shown(str(tmp_path / out))
+    assert filtered.out.endswith(f"\r {shown:<43} 100% {size:>19} 00:00    \n")
+
+
+def _shown(path: str) -> str:
+    """A path as ROS 1's progress line shows it, 80 columns wide: its last 40 characters."""
+    return path if len(path) <= 43 else "..." + path[-40:]

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from rosx_commands.rostopic.stats import BandwidthTracker, DelayTracker, HzTracker, hz_table
+from rosx.node.stats import BandwidthTracker, DelayTracker, HzTracker, hz_table
 
 
 def test_hz_single_topic() -> None:

@@ -17,6 +17,7 @@ from typing import Any
 
 import pytest
 
+from rosx.bag import SHIM_DIR as BAG_SHIM_DIR
 from rosx.client.script import SHIM_DIR
 from tests.support.cli import clean_environ
 from tests.support.ros1 import ROS1_PYTHON, needs_ros1
@@ -220,9 +221,9 @@ def test_a_python_without_rosx_is_told_what_to_do(tmp_path: Path) -> None:
 @needs_ros1
 def test_ros1s_python_keeps_ros1s_rospy_with_the_shim_on_its_path(tmp_path: Path) -> None:
     env = {k: v for k, v in os.environ.items() if not k.startswith("ROS_")}
-    env["PYTHONPATH"] = str(SHIM_DIR)
+    env["PYTHONPATH"] = os.pathsep.join([str(SHIM_DIR), str(BAG_SHIM_DIR)])
     done = subprocess.run(
-        [ROS1_PYTHON, "-c", "import rospy, rospy.exceptions; print(rospy.__file__)"],
+        [ROS1_PYTHON, "-c", "import rospy, rospy.exceptions, rosbag; print(rospy.__file__)"],
         env=env,
         cwd=tmp_path,
         capture_output=True,
@@ -231,6 +232,15 @@ def test_ros1s_python_keeps_ros1s_rospy_with_the_shim_on_its_path(tmp_path: Path
     )
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "/usr/lib/python3/dist-packages/rospy/__init__.py"
+    rosbag = subprocess.run(
+        [ROS1_PYTHON, "-c", "import rosbag; print(rosbag.__file__)"],
+        env=env,
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert rosbag.stdout.strip() == "/usr/lib/python3/dist-packages/rosbag/__init__.py"
 
 
 @pytest.mark.parametrize("module", ["rospy.exceptions"])
@@ -240,3 +250,31 @@ def test_rospy_submodules_scripts_import(tmp_path: Path, module: str) -> None:
         f"import json, {module} as m\nprint(json.dumps(m.ROSInterruptException.__name__))\n",
     )
     assert json_of(done) == "ROSInterruptException"
+
+
+def test_scripts_import_rosbag_from_the_bag_layers_shim(tmp_path: Path) -> None:
+    writer = run_script(
+        tmp_path,
+        """\
+import rosbag
+from std_msgs.msg import Int32, String
+with rosbag.Bag('test.bag', 'w') as bag:
+    bag.write('chatter', String(data='foo'))
+    bag.write('numbers', Int32(data=42))
+""",
+    )
+    assert writer.returncode == 0, writer.stderr
+    reader = run_script(
+        tmp_path,
+        """\
+import json, rosbag
+bag = rosbag.Bag('test.bag')
+got = [(topic, str(msg).replace(chr(10), ' ')) for topic, msg, t in bag.read_messages()]
+print(json.dumps([rosbag.__file__, got]))
+bag.close()
+""",
+    )
+    where, got = json_of(reader)
+    assert Path(where).parent.parent.name == "shim"
+    assert Path(where).parent.parent.parent.name == "bag"
+    assert got == [["chatter", 'data: "foo"'], ["numbers", "data: 42"]]

@@ -28,6 +28,7 @@ from tests.support.procs import wait_for
 pytestmark = pytest.mark.skipif(not ros1_available(), reason="the ROS 1 reference is absent")
 
 ROSBAG = "/usr/bin/rosbag"
+RECORD = "/usr/lib/rosbag/record"
 COUNT = 100
 
 TALKER = """
@@ -90,6 +91,18 @@ class Graph:
             stderr=subprocess.PIPE,
         )
 
+    def ros1_record(self, *args: str) -> subprocess.Popen[str]:
+        """ROS 1's C++ recorder itself: Debian's ``rosbag record`` is a Python wrapper that
+        dies of SIGINT with a traceback and may leave its recorder child running."""
+        return subprocess.Popen(
+            [RECORD, *args],
+            env=self.env,
+            cwd=self.home,
+            text=True,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+        )
+
     def run(self, args: list[str], rosx: bool = False) -> subprocess.CompletedProcess[str]:
         command = (
             [sys.executable, "-m", "rosx_commands", *args] if rosx else [str(ROS1_PYTHON), *args]
@@ -119,9 +132,9 @@ def recorded(graph: Graph) -> Graph:
         graph.rosx("rosbag", "record", "-O", "rx_plain", "/chatter", "/cmd"),
         graph.rosx("rosbag", "record", "-O", "rx_bz2", "-j", "-a", "-x", "/rosout.*"),
         graph.rosx("rosbag", "record", "-O", "rx_lz4.bag", "--lz4", "/chatter", "/cmd"),
-        graph.ros1(ROSBAG, "record", "-O", "r1_plain", "/chatter", "/cmd"),
-        graph.ros1(ROSBAG, "record", "-O", "r1_bz2", "-j", "/chatter", "/cmd"),
-        graph.ros1(ROSBAG, "record", "-O", "r1_lz4", "--lz4", "/chatter", "/cmd"),
+        graph.ros1_record("-O", "r1_plain", "/chatter", "/cmd"),
+        graph.ros1_record("-O", "r1_bz2", "-j", "/chatter", "/cmd"),
+        graph.ros1_record("-O", "r1_lz4", "--lz4", "/chatter", "/cmd"),
     ]
     talker = graph.ros1("-c", TALKER, str(len(recorders)))
     try:

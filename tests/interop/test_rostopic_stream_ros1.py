@@ -268,7 +268,7 @@ print(json.dumps(reports))
 
 def test_hz_bw_delay_reports_match_ros1() -> None:
     from rosx.msg.codec.rostime import Time
-    from rosx_commands.rostopic.stats import BandwidthTracker, DelayTracker, HzTracker
+    from rosx.node.stats import BandwidthTracker, DelayTracker, HzTracker
     from tests.support.ros1 import ros1_python
 
     arrivals = [

@@ -3,17 +3,19 @@
 from __future__ import annotations
 
 import asyncio
+import dataclasses
 import time
 from collections.abc import Callable
 from typing import Any
 
+import pytest
 from textual.pilot import Pilot
 from textual.widgets import Input
 
 from rosx.graph.options import GraphOptions, Mode
 from rosx.graph.state import GraphState
-from rosx.graph.view import Vertex
-from rosx_commands.rqt_graph.app import make_graph_app
+from rosx.graph.view import Vertex, ViewGraph
+from rosx_commands.rqt_graph.app import GHOST_SECONDS, History, make_graph_app
 from rosx_commands.rqt_graph.view import GraphView
 from tests.graph.states import lab1
 from tests.tui.conftest import SNAPSHOT_SIZE, run
@@ -255,5 +257,68 @@ def test_the_details_panel_opens_with_a_selection_and_escape_closes_it() -> None
             await pilot.pause()
             assert app.selected is None and not details.display
             assert mark_at(app, "/teleop_turtle") == "node"
+
+    run(drive())
+
+
+def test_what_vanished_is_labelled_gone_and_dropped_after_a_while() -> None:
+    history = History().after(ViewGraph(), now=0.0)
+    before = lab1()
+    source = StaticSource(before)
+    app = make_graph_app(source, GraphOptions(mode=Mode.ACTIVE))
+
+    async def drive() -> None:
+        async with app.run_test(size=WIDE) as pilot:
+            await settle(pilot)
+            source.state = lab1(teleop_connected=False)
+            await pilot.press("r")
+            await settle(pilot)
+            text = "\n".join(app.query_one(GraphView).visible_text())
+            assert "/turtle1/cmd_vel (gone)" in text
+
+    run(drive())
+    graph = app.graph
+    assert graph is not None
+    shown = history.after(graph, now=1.0)
+    teleop_gone = dataclasses.replace(graph, vertices=graph.vertices[1:], edges=())
+    changed = shown.after(teleop_gone, now=2.0)
+    assert changed.ghosts.vertices and changed.changes
+    assert changed.after(teleop_gone, now=2.0 + GHOST_SECONDS - 0.1).ghosts.vertices
+    dropped = changed.after(teleop_gone, now=2.0 + GHOST_SECONDS)
+    assert not dropped.ghosts.vertices and not dropped.changes
+
+
+def test_a_failed_refresh_shows_the_whole_error_at_80_columns() -> None:
+    class Unreachable(StaticSource):
+        def snapshot(self) -> GraphState:
+            raise OSError(
+                "cannot connect to http://localhost:11311/: [Errno 111] Connection refused"
+            )
+
+    app = make_graph_app(Unreachable(lab1()))
+
+    async def drive() -> None:
+        async with app.run_test(size=(80, 24)) as pilot:
+            await settle(pilot)
+            status_line = app.query_one("#status")
+            error = (
+                "ERROR: cannot connect to http://localhost:11311/: [Errno 111] Connection refused"
+            )
+            assert str(status_line.render()).endswith(error)
+            assert status_line.size.height == 2  # wrapped, not cut at 80 columns
+
+    run(drive())
+
+
+@pytest.mark.parametrize("key", ["q", "ctrl+c"])
+def test_q_and_ctrl_c_quit(key: str) -> None:
+    app = make_graph_app(StaticSource(lab1()))
+
+    async def drive() -> None:
+        async with app.run_test(size=(80, 24)) as pilot:
+            await settle(pilot)
+            await pilot.press(key)
+            await pilot.pause()
+            assert not app.is_running
 
     run(drive())

@@ -3,6 +3,8 @@ and executables with ROS 1's texts and exit statuses, and the shell functions.""
 
 from __future__ import annotations
 
+import io
+import os
 import shutil
 import subprocess
 import sys
@@ -10,6 +12,8 @@ from pathlib import Path
 
 import pytest
 
+from rosx.bag import SHIM_DIR as BAG_SHIM_DIR
+from rosx.client.script import SHIM_DIR
 from rosx_commands.context import Environment
 from rosx_commands.rosrun import Launch, plan
 from tests.support.cli import clean_environ, rosx
@@ -101,7 +105,8 @@ def test_rosrun_runs_python_scripts_with_rosxs_python(workspace: Path) -> None:
     assert isinstance(launch, Launch)
     script = str(workspace / "lab2" / "scripts" / "pub.py")
     assert launch.argv == [sys.executable, "-m", "rosx_commands", "run-script", script, "a", "x:=y"]
-    assert launch.environ["PYTHONPATH"].endswith("rosx/client/shim")
+    shims = launch.environ["PYTHONPATH"].split(os.pathsep)[:2]
+    assert shims == [str(SHIM_DIR), str(BAG_SHIM_DIR)]
     prefixed = plan(["--prefix", "nice -n 5", "lab2", "scripts/pub.py"], env)
     assert isinstance(prefixed, Launch) and prefixed.argv[:3] == ["nice", "-n", "5"]
 
@@ -171,3 +176,30 @@ def test_shell_init_defines_the_ros_commands(workspace: Path, shell: str) -> Non
 def test_shell_init_refuses_unknown_shells() -> None:
     result = rosx("shell-init", "fish")
     assert result.status == 2 and "unknown shell 'fish'" in result.err
+
+
+class TerminalText(io.StringIO):
+    """A stream that says it is a terminal."""
+
+    def isatty(self) -> bool:
+        return True
+
+
+def test_rosrun_turtlesim_node_typo_suggests_turtlesim_node_on_a_terminal() -> None:
+    out, err = io.StringIO(), TerminalText()
+    env = Environment(stdout=out, stderr=err, environ=clean_environ())
+    assert plan(["turtlesim", "turtlesim", "node"], env) == 3
+    assert out.getvalue().startswith("[rosrun] Couldn't find executable named turtlesim below ")
+    assert err.getvalue() == (
+        "[rosrun] Did you mean turtlesim_node? (rosrun turtlesim turtlesim_node)\n"
+    )
+
+
+def test_rosrun_suggests_a_close_name_and_stays_ros1s_off_a_terminal(workspace: Path) -> None:
+    out, err = io.StringIO(), TerminalText()
+    env = Environment(stdout=out, stderr=err, environ=env_of(workspace))
+    assert plan(["lab2", "pubb.py", "x"], env) == 3
+    assert err.getvalue() == "[rosrun] Did you mean pub.py? (rosrun lab2 pub.py x)\n"
+    result = rosx("rosrun", "turtlesim", "turtlesim", "node", environ=env_of(workspace))
+    assert (result.status, result.err) == (3, "")
+    assert result.out.startswith("[rosrun] Couldn't find executable named turtlesim below ")

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import optparse
+import os
 import signal
 import sys
 import threading
@@ -217,7 +218,6 @@ def play(argv: list[str], env: Environment) -> int:
         name
         for name, given in (
             ("--pause-topics", options.pause_topics),
-            ("--wait-for-subscribers", options.wait_for_subscribers),
             ("--rate-control-topic", options.rate_control_topic),
         )
         if given
@@ -295,14 +295,25 @@ def _writer(env: Environment) -> Any:
 
 def _run(player: Player, options: optparse.Values, env: Environment) -> int:
     player.advertise()
-    if options.delay > 0:
-        env.stdout.write(f"\nWaiting {options.delay:g} seconds after advertising topics...")
-        env.stdout.flush()
-        time.sleep(options.delay)
-        env.stdout.write(" done.\n")
+    blank = "" if options.quiet else "\n"  # ROS 1's status line's room, which -q does without
+    env.stdout.write(f"{blank}Waiting {options.delay:g} seconds after advertising topics...")
+    env.stdout.flush()
+    time.sleep(max(options.delay, 0.0))
+    env.stdout.write(" done.\n")
     env.stdout.write("\nHit space to toggle paused, or 's' to step.\n")
     env.stdout.flush()
-    worker = threading.Thread(target=player.run, name="rosx-play", daemon=True)
+
+    def play() -> None:
+        if options.wait_for_subscribers:
+            env.stdout.write("Waiting for subscribers.\n")
+            env.stdout.flush()
+            if not player.wait_for_subscribers():
+                return
+            env.stdout.write("Finished waiting for subscribers.\n")
+            env.stdout.flush()
+        player.run()
+
+    worker = threading.Thread(target=play, name="rosx-play", daemon=True)
     with _signals_stop(player), _keys(player, env):
         worker.start()
         while worker.is_alive():
@@ -347,11 +358,12 @@ def _keys(player: Player, env: Environment) -> Iterator[None]:
             ready, _, _ = select.select([fd], [], [], 0.1)
             if not ready:
                 continue
-            key = stdin.read(1)
-            if key == " ":
-                player.toggle_pause()
-            elif key == "s":
-                player.step()
+            # The descriptor, not the text stream: keys typed together must not wait in its buffer.
+            for key in os.read(fd, 64).decode(errors="replace"):
+                if key == " ":
+                    player.toggle_pause()
+                elif key == "s":
+                    player.step()
 
     reader = threading.Thread(target=read_keys, name="rosx-play-keys", daemon=True)
     reader.start()

@@ -7,6 +7,7 @@ an old backup; ``--output-dir`` writes elsewhere instead), as ROS 1's do.
 
 from __future__ import annotations
 
+import io
 import os
 import shutil
 import time
@@ -61,12 +62,60 @@ def _open(env: Environment, path: str) -> BagReader | None:
     return None
 
 
-def _done_line(env: Environment, path: str, size: int, began: float) -> None:
-    elapsed = int(time.monotonic() - began)
-    env.stdout.write(
-        f"\r {path} 100% {human_size(size):>19} {elapsed // 60:02d}:{elapsed % 60:02d}    \n"
-    )
-    env.stdout.flush()
+class _Meter:
+    """ROS 1's progress line for a file being written: ``0%`` when it starts, ``100%`` with the
+    elapsed time when done; the path padded to the terminal's width (80 when not a terminal)."""
+
+    def __init__(self, env: Environment, path: str, total: int) -> None:
+        self.env = env
+        self.total = total
+        self.began = time.monotonic()
+        width = self._width() - 37
+        self.path = path if len(path) <= width else "..." + path[-width + 3 :]
+        self.width = width
+        if total > 0:
+            size = human_size(total)
+            self._write(f"{self.path:<{width}}   0% {'0.0 KB':>8} / {size:>8} --:-- ETA")
+        else:
+            self._write(self._done_text())
+
+    def _width(self) -> int:
+        try:
+            columns = os.get_terminal_size(self.env.stdout.fileno()).columns
+        except (AttributeError, OSError, ValueError, io.UnsupportedOperation):
+            columns = 0
+        if columns <= 0:
+            try:
+                columns = int(self.env.environ.get("COLUMNS", "0"))
+            except ValueError:
+                columns = 0
+        return columns if columns > 0 else 80
+
+    def _done_text(self) -> str:
+        elapsed = int(time.monotonic() - self.began)
+        done = f"{human_size(self.total):>19} {elapsed // 60:02d}:{elapsed % 60:02d}"
+        return f"{self.path:<{self.width}} 100% {done}    "
+
+    def _write(self, text: str) -> None:
+        self.env.stdout.write(f"\r {text}")
+        self.env.stdout.flush()
+
+    def finish(self) -> None:
+        self._write(self._done_text() + "\n")
+
+
+def _uncompressed_size(path: str) -> int:
+    """ROS 1's measure of a bag to copy: its chunks' uncompressed sizes (or the file's size)."""
+    with BagReader(path) as bag:
+        if not bag.chunks:
+            return bag.size
+        return sum(bag.chunk_header(i).size for i in range(len(bag.chunks)))
+
+
+def _data_size(path: str) -> int:
+    """ROS 1's measure of a bag to reindex: the file up to its index (all of it if none)."""
+    with BagReader(path, allow_unindexed=True) as bag:
+        return bag.index_pos or bag.size
 
 
 def _copy_messages(source: BagReader, target: Any, keep: Callable[[Any, int, bytes], bool]) -> None:
@@ -87,6 +136,7 @@ def _in_place(
     *,
     copy_first: bool,
     check: Callable[[str], bool],
+    measure: Callable[[str], int],
 ) -> int:
     status = ExitStatus.OK
     for path in paths:
@@ -116,15 +166,15 @@ def _in_place(
             source = backup
         elif copy_first:
             shutil.copy(path, out)
-        began = time.monotonic()
         try:
+            meter = None if options.quiet else _Meter(env, out, measure(source))
             operation(source, out)
         except (BagError, OSError) as exc:
             env.err(f"ERROR operating on {path}: {exc}")
             status = ExitStatus.ERROR
             continue
-        if not options.quiet:
-            _done_line(env, out, Path(out).stat().st_size, began)
+        if meter is not None:
+            meter.finish()
     return status
 
 
@@ -174,7 +224,9 @@ def _compression(argv: list[str], env: Environment, *, compress: bool) -> int:
         bag.close()
         return True
 
-    return _in_place(env, args, options, operation, copy_first=False, check=check)
+    return _in_place(
+        env, args, options, operation, copy_first=False, check=check, measure=_uncompressed_size
+    )
 
 
 def compress(argv: list[str], env: Environment) -> int:
@@ -222,7 +274,9 @@ def reindex(argv: list[str], env: Environment) -> int:
             return False
         return True
 
-    return _in_place(env, args, options, operation, copy_first=True, check=check)
+    return _in_place(
+        env, args, options, operation, copy_first=True, check=check, measure=_data_size
+    )
 
 
 def filter_bag(argv: list[str], env: Environment) -> int:
@@ -278,7 +332,7 @@ def filter_bag(argv: list[str], env: Environment) -> int:
     source = _open(env, inbag)
     if source is None:
         return ExitStatus.ERROR
-    began = time.monotonic()
+    meter = _Meter(env, outbag, _uncompressed_size(inbag))
 
     def keep(conn: Any, stamp: int, data: bytes) -> bool:
         names = {
@@ -297,7 +351,7 @@ def filter_bag(argv: list[str], env: Environment) -> int:
     except Exception as exc:  # the user's expression may raise anything
         env.err(f"ERROR: {type(exc).__name__}: {exc}")
         return ExitStatus.ERROR
-    _done_line(env, outbag, Path(outbag).stat().st_size, began)
+    meter.finish()
     return ExitStatus.OK
 
 

@@ -14,7 +14,6 @@ from rosx_commands.context import CommandError, Environment
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-
     from rosx.msg.codec.message import ServiceDefinition
     from rosx.msg.store import TypeStore
 

@@ -12,7 +12,6 @@ if TYPE_CHECKING:
     from typing import Any
 
     from rosx.master.client import MasterClient
-    from rosx.msg.store import TypeStore
 
 CALLER_ID = "/rostopic"
 
@@ -208,6 +207,8 @@ def topic_type(argv: list[str], env: Environment) -> int:
     parser = ToolArgumentParser(env, prog="rostopic type")
     parser.add_argument("topic_or_field", help="Topic or field name")
     name = resolve(env, parser.parse_args(argv).topic_or_field)
+    from rosx.msg.text.fieldpath import find_topic  # noqa: PLC0415 - only type needs it
+
     types = env.master(CALLER_ID).topic_types()
     found = find_topic(name, types)
     if found is None:
@@ -226,34 +227,6 @@ def topic_type(argv: list[str], env: Environment) -> int:
         field_type = next(f.type for f in spec.fields if f.name == part)
     env.out(f"{type_name} {field} {field_type}")
     return ExitStatus.OK
-
-
-def find_topic(
-    name: str, types: dict[str, str], store: TypeStore | None = None
-) -> tuple[str, str] | None:
-    """The topic ``name`` denotes, itself or the longest topic it is a field path of.
-
-    A topic whose type has no such field (in ``store``: the standard types by default) is
-    skipped, as ROS 1 does.
-    """
-    if name in types:
-        return name, types[name]
-    from rosx.msg.store import TypeStore, UnknownTypeError  # noqa: PLC0415 - field paths only
-
-    store = TypeStore([]) if store is None else store
-    for topic in sorted((t for t in types if name.startswith(t + "/")), reverse=True):
-        path = name[len(topic) + 1 :].rstrip("/").split("[")[0]
-        if not path:
-            return topic, types[topic]
-        try:
-            spec_type = types[topic]
-            for part in path.split("/"):
-                field = next(f for f in store.msg(spec_type).fields if f.name == part)
-                spec_type = field.base_type
-        except (StopIteration, UnknownTypeError):
-            continue
-        return topic, types[topic]
-    return None
 
 
 def find(argv: list[str], env: Environment) -> int:

@@ -1,4 +1,4 @@
-"""``rostopic hz``, ``bw`` and ``delay``: subscribe, measure (`rosx_commands.rostopic.stats`),
+"""``rostopic hz``, ``bw`` and ``delay``: subscribe, measure (`rosx.node.stats`),
 print a report every second until interrupted.
 
 hz and bw subscribe raw (rospy's ``AnyMsg``): messages are never decoded, so any type works and
@@ -11,11 +11,11 @@ from __future__ import annotations
 import time
 from typing import TYPE_CHECKING, Any
 
+from rosx.node.stats import BandwidthTracker, DelayTracker, HzTracker
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import Environment, ExitStatus
 from rosx_commands.rostopic.listing import resolve
 from rosx_commands.rostopic.session import MessageFilter, Session
-from rosx_commands.rostopic.stats import BandwidthTracker, DelayTracker, HzTracker
 
 if TYPE_CHECKING:
     from collections.abc import Callable

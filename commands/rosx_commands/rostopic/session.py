@@ -16,9 +16,10 @@ import threading
 import time
 from typing import TYPE_CHECKING, Any, NoReturn
 
+from rosx.msg.text.fieldpath import find_topic
 from rosx.names.anonymous import anonymous_node_name
 from rosx_commands.context import CommandError, Environment
-from rosx_commands.rostopic.listing import CALLER_ID, find_topic
+from rosx_commands.rostopic.listing import CALLER_ID
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Iterator

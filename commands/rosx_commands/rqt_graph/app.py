@@ -1,29 +1,31 @@
-"""`GraphApp`: rqt_graph in the terminal: the drawing, a details panel, a status line.
+"""`GraphPane`: rqt_graph in the terminal: the drawing, a details panel, a status line.
+`GraphApp` runs it alone (``rosx rqt_graph``), `graph_tab` as a tab of ``rosx rqt``.
 
 A timer starts a refresh on a worker thread every period (and ``r`` at once); the worker
 fetches, builds and draws, and hands the result to the UI with ``call_from_thread``, so the
 view pans and answers keys while a large graph is laid out. What appeared since the refresh
-before is green; what vanished stays drawn, faded red, until the graph changes again; the
-status line names both.
+before is green; what vanished stays drawn, faded red and labelled "(gone)", until the graph
+changes again or `GHOST_SECONDS` pass; the status line names both, and shows an error whole.
 
 ``tab`` / ``shift+tab`` select the next / previous node or topic: its edges light up (as
 rqt_graph's highlight), and its ``rosnode info`` / ``rostopic info`` (and a topic's live rate)
 show in a panel on the right, which ``escape`` closes. rqt_graph's controls are keys: ``m``
 cycles the modes, ``n`` and ``t`` edit the namespace and topic filters, ``g`` the depth of
-namespace groups, ``d`` toggles hiding debug names; ``q`` quits.
+namespace groups, ``d`` toggles hiding debug names; ``q`` or ``ctrl+c`` quit.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import time
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 from rich.text import Text
 from textual.app import App, ComposeResult  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
-from textual.containers import Horizontal, VerticalScroll  # noqa: TID253 - TUI code
-from textual.widgets import Footer, Input, Static  # noqa: TID253 - TUI code
+from textual.containers import Horizontal, Vertical, VerticalScroll  # noqa: TID253 - TUI code
+from textual.widgets import Input, Static  # noqa: TID253 - TUI code
 from textual.worker import get_current_worker  # noqa: TID253 - TUI code
 
 from rosx.graph.builder import build
@@ -32,8 +34,11 @@ from rosx.graph.text import Drawing, draw
 from rosx.graph.view import Changes, Kind, ViewGraph, changes, vanished, with_ghosts
 from rosx_commands.rqt_graph.source import GraphSource
 from rosx_commands.rqt_graph.view import GraphView, Marks
+from rosx_turtle.tui.quit import QuitFooter
 
 _MODES = list(Mode)
+#: Seconds the last changes stay marked (what vanished drawn as gone) on an unchanged graph.
+GHOST_SECONDS = 10.0
 #: Deepest namespace groups ``g`` steps through before going back to none.
 MAX_GROUP_DEPTH = 3
 _FILTERS = {"namespace_filter": "Namespace filter", "topic_filter": "Topic filter"}
@@ -41,27 +46,32 @@ _FILTERS = {"namespace_filter": "Namespace filter", "topic_filter": "Topic filte
 
 @dataclass(frozen=True)
 class History:
-    """The last graph shown, the changes it brought and what vanished with them."""
+    """The last graph shown, the changes it brought (and when) and what vanished with them."""
 
     graph: ViewGraph | None = None
     changes: Changes = field(default_factory=Changes)
     ghosts: ViewGraph = field(default_factory=ViewGraph)
+    since: float = 0.0
 
-    def after(self, graph: ViewGraph) -> History:
-        """The history once ``graph`` is shown; an unchanged graph keeps the marks."""
+    def after(self, graph: ViewGraph, now: float | None = None) -> History:
+        """The history once ``graph`` is shown at ``now`` (monotonic seconds); an unchanged
+        graph keeps the marks for `GHOST_SECONDS`, then drops them and what vanished."""
+        now = time.monotonic() if now is None else now
         if self.graph is None:
-            return History(graph)
+            return History(graph, since=now)
         diff = changes(self.graph, graph)
-        if not diff:
-            return dataclasses.replace(self, graph=graph)
-        return History(graph, diff, vanished(self.graph, graph))
+        if diff:
+            return History(graph, diff, vanished(self.graph, graph), now)
+        if self.changes and now - self.since >= GHOST_SECONDS:
+            return History(graph, since=now)
+        return dataclasses.replace(self, graph=graph)
 
 
-class GraphApp(App[int]):
-    CSS = """
+class GraphPane(Vertical):
+    DEFAULT_CSS = """
     #details { width: 40; border-left: solid $primary; padding: 0 1; display: none; }
     #details.open { display: block; }
-    #status { height: 1; background: $boost; }
+    #status { height: auto; background: $boost; }
     #filter { display: none; }
     #filter.editing { display: block; }
     """
@@ -74,13 +84,17 @@ class GraphApp(App[int]):
         Binding("t", "edit_filter('topic_filter')", "Topic filter"),
         Binding("g", "next_group_depth", "Groups"),
         Binding("d", "toggle_debug", "Debug"),
-        Binding("q", "quit", "Quit"),
     ]
 
     def __init__(
-        self, source: GraphSource, options: GraphOptions, period: float | None = None
+        self,
+        source: GraphSource,
+        options: GraphOptions,
+        period: float | None = None,
+        *,
+        id: str | None = None,
     ) -> None:
-        super().__init__()
+        super().__init__(id=id)
         self.source = source
         self.options = options
         self.period = period
@@ -106,7 +120,6 @@ class GraphApp(App[int]):
             with VerticalScroll(id="details"):
                 yield Static(id="info")
         yield Input(id="filter")
-        yield Footer()
 
     def on_mount(self) -> None:
         self.query_one(GraphView).focus()
@@ -129,12 +142,12 @@ class GraphApp(App[int]):
         try:
             graph = build(self.source.snapshot(), options)
         except Exception as error:
-            self.call_from_thread(self._failed, str(error) or type(error).__name__)
+            self.app.call_from_thread(self._failed, str(error) or type(error).__name__)
             return
         history = history.after(graph)
         drawing = draw(with_ghosts(graph, history.ghosts))
         if not get_current_worker().is_cancelled:
-            self.call_from_thread(self._show, history, drawing, options)
+            self.app.call_from_thread(self._show, history, drawing, options)
 
     def _failed(self, message: str) -> None:
         self.error = message
@@ -194,7 +207,7 @@ class GraphApp(App[int]):
         text = self.source.describe(vertex)
         if vertex.kind is Kind.TOPIC:
             text += "\n" + self.source.rate(vertex.label)
-        self.call_from_thread(self._show_details, vertex.id, text)
+        self.app.call_from_thread(self._show_details, vertex.id, text)
 
     def _show_details(self, vertex_id: str, text: str) -> None:
         if vertex_id == self.selected:
@@ -261,11 +274,53 @@ class GraphApp(App[int]):
         self.source.close()
 
 
+class GraphApp(App[int]):
+    """``rosx rqt_graph`` on its own: the pane and a footer; the pane's state reads through."""
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("q", "quit", "Quit"),
+        Binding("ctrl+c", "quit", "Quit", show=False, priority=True),
+    ]
+
+    def __init__(self, pane: GraphPane) -> None:
+        super().__init__()
+        self.pane = pane
+
+    def compose(self) -> ComposeResult:
+        yield self.pane
+        yield QuitFooter()
+
+    @property
+    def drawing(self) -> Drawing:
+        return self.pane.drawing
+
+    @property
+    def selected(self) -> str | None:
+        return self.pane.selected
+
+    @property
+    def options(self) -> GraphOptions:
+        return self.pane.options
+
+    @property
+    def graph(self) -> ViewGraph | None:
+        return self.pane.graph
+
+
+def graph_tab(env: Any) -> GraphPane:
+    """rqt_graph as a tab of ``rosx rqt``: live, with rqt_graph's defaults."""
+    from rosx_commands.rqt_graph import CALLER_ID, REFRESH_PERIOD  # noqa: PLC0415
+    from rosx_commands.rqt_graph.source import LiveSource  # noqa: PLC0415
+
+    source = LiveSource(env, env.master_uri, CALLER_ID, True)
+    return GraphPane(source, GraphOptions(), REFRESH_PERIOD)
+
+
 def make_graph_app(
     source: GraphSource, options: GraphOptions | None = None, period: float | None = None
 ) -> GraphApp:
     """The app the CLI runs and the tests drive."""
-    return GraphApp(source, options or GraphOptions(), period)
+    return GraphApp(GraphPane(source, options or GraphOptions(), period))
 
 
 def run_app(env: Any, uri: str, options: GraphOptions, period: float, bus_info: bool) -> int:

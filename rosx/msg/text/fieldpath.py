@@ -11,9 +11,12 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rosx.msg.spec import PRIMITIVE_TYPES, MsgSpec
+
+if TYPE_CHECKING:
+    from rosx.msg.store import TypeStore
 
 
 class FieldPathError(ValueError):
@@ -123,4 +126,39 @@ def field_type(lookup: Callable[[str], MsgSpec], msg_type: str, path: FieldPath)
     return found
 
 
-__all__ = ["FieldPath", "FieldPathError", "Step", "field_type", "parse_field_path"]
+def find_topic(
+    name: str, types: dict[str, str], store: TypeStore | None = None
+) -> tuple[str, str] | None:
+    """The topic ``name`` denotes, itself or the longest topic it is a field path of.
+
+    A topic whose type has no such field (in ``store``: the standard types by default) is
+    skipped, as ROS 1 does.
+    """
+    if name in types:
+        return name, types[name]
+    from rosx.msg.store import TypeStore, UnknownTypeError  # noqa: PLC0415 - parsed only for field paths
+
+    store = TypeStore([]) if store is None else store
+    for topic in sorted((t for t in types if name.startswith(t + "/")), reverse=True):
+        path = name[len(topic) + 1 :].rstrip("/").split("[")[0]
+        if not path:
+            return topic, types[topic]
+        try:
+            spec_type = types[topic]
+            for part in path.split("/"):
+                field = next(f for f in store.msg(spec_type).fields if f.name == part)
+                spec_type = field.base_type
+        except (StopIteration, UnknownTypeError):
+            continue
+        return topic, types[topic]
+    return None
+
+
+__all__ = [
+    "FieldPath",
+    "FieldPathError",
+    "Step",
+    "field_type",
+    "find_topic",
+    "parse_field_path",
+]

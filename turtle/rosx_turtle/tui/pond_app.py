@@ -6,10 +6,10 @@ from typing import TYPE_CHECKING, ClassVar
 
 from textual.app import App  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
-from textual.widgets import Footer  # noqa: TID253 - TUI code
 
 from rosx_turtle.tui.log_line import LogLine
 from rosx_turtle.tui.pond import PondView
+from rosx_turtle.tui.quit import QuitFooter
 from rosx_turtle.tui.status import PoseLine
 
 if TYPE_CHECKING:
@@ -39,4 +39,4 @@ class PondApp(App[None]):
         yield PondView(self.scenes, id="pond")
         yield PoseLine(self.scenes, id="poses")
         yield LogLine(self.logs, id="log")
-        yield Footer()
+        yield QuitFooter()

@@ -12,12 +12,13 @@ from typing import TYPE_CHECKING, ClassVar
 from textual.app import App  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import Horizontal, Vertical  # noqa: TID253 - TUI code
-from textual.widgets import Footer, Header  # noqa: TID253 - TUI code
+from textual.widgets import Header  # noqa: TID253 - TUI code
 
 from rosx_turtle.tui.log_line import LogLine
 from rosx_turtle.tui.nodes import NodesPanel
 from rosx_turtle.tui.pond import PondView
 from rosx_turtle.tui.pose import PosePanel
+from rosx_turtle.tui.quit import QuitFooter
 from rosx_turtle.tui.status import PoseLine
 from rosx_turtle.tui.teleop import TeleopPad
 from rosx_turtle.tui.topics import TopicsPanel
@@ -67,4 +68,4 @@ class SimApp(App[None]):
                 yield TopicsPanel(link.graph, id="topics")
                 yield NodesPanel(link.graph, id="nodes")
                 yield PosePanel(link.scenes, id="pose")
-        yield Footer()
+        yield QuitFooter()

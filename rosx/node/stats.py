@@ -1,5 +1,7 @@
 """What ``rostopic hz``, ``bw`` and ``delay`` measure, and the text they print each second.
 
+Also the rates and bandwidths of ``rosx rqt_topic``: one home for a topic's statistics.
+
 Pure bookkeeping: each tracker is fed arrival times (and sizes or stamps) by a subscriber's
 callback and asked for its report by the printing loop; neither sockets nor clocks live here,
 the caller passes the current time in. The rules are ROS 1's:
@@ -154,6 +156,14 @@ class BandwidthTracker:
             if len(self.times) > self.window:
                 self.times.popleft()
                 self.sizes.popleft()
+
+    def rate(self, now: float) -> float | None:
+        """Bytes per second at ``now`` over the window, or None (fewer than two messages)."""
+        with self._lock:
+            if len(self.times) < 2:
+                return None
+            elapsed = now - self.times[0]
+            return sum(self.sizes) / elapsed if elapsed > 0 else math.inf
 
     def report(self, now: float) -> str | None:
         """What ``rostopic bw`` prints at ``now``, or None (fewer than two messages)."""

@@ -1,8 +1,8 @@
 """``rosbag`` for scripts that rosx runs: ROS 1's bag API, served by `rosx.bag.api`.
 
-Like the ``rospy`` next to it, this directory is on ``sys.path`` only for the scripts rosx
-runs; it is not part of the client layer's code, only of its import path. A Python that
-cannot import rosx gets the next ``rosbag`` on its path instead.
+Like ``rospy`` (in the client layer's shim directory), this directory (`rosx.bag.SHIM_DIR`) is
+on ``sys.path`` only for the scripts rosx runs; it is part of the bag layer's import path, not
+of its code. A Python that cannot import rosx gets the next ``rosbag`` on its path instead.
 """
 
 from __future__ import annotations

@@ -1,0 +1,272 @@
+"""``rosx rosbag play``'s options as a user sees them: what a subscriber receives, and when.
+
+Each test runs the command as a process on the test's master and listens with a rosx
+subscriber in this process. The keys (space, ``s``) are typed into a pseudo-terminal that is
+the player's stdin.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import termios
+import threading
+import time
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from rosx.bag import api
+from rosx.msg.codec.classes import get_message_class
+from rosx.msg.codec.rostime import Time
+from rosx.node import Node
+from tests.support.cli import clean_environ
+from tests.support.procs import stop, wait_for
+
+String = get_message_class("std_msgs/String")
+Clock = get_message_class("rosgraph_msgs/Clock")
+
+
+def write_bag(path: Path, stamps: list[float], topics: tuple[str, ...] = ("/chatter",)) -> str:
+    """A bag with one ``String`` per topic at each stamp (seconds); data ``TOPIC:INDEX``."""
+    with api.Bag(path, "w") as bag:
+        for i, stamp in enumerate(stamps):
+            for topic in topics:
+                bag.write(topic, String(data=f"{topic}:{i}"), Time.from_sec(100 + stamp))
+    return str(path)
+
+
+class Listener:
+    """The data of every message received on ``topic``, in order."""
+
+    def __init__(self, node: Node, topic: str, cls: Any = String) -> None:
+        self.got: list[Any] = []
+        self.at: list[float] = []
+        self._lock = threading.Lock()
+        self.sub = node.subscribe(topic, cls, self._heard)
+
+    def _heard(self, msg: Any) -> None:
+        with self._lock:
+            self.got.append(getattr(msg, "data", msg))
+            self.at.append(time.monotonic())
+
+    def wait(self, count: int, timeout: float = 15.0) -> list[Any]:
+        wait_for(lambda: len(self.got) >= count, timeout=timeout, what=f"{count} messages")
+        with self._lock:
+            return list(self.got)
+
+
+class Play:
+    """``rosx rosbag play ARGS…`` running; its output once it ends."""
+
+    def __init__(self, master: str, args: list[str], stdin: Any = subprocess.DEVNULL) -> None:
+        self.process = subprocess.Popen(
+            [sys.executable, "-m", "rosx_commands", "rosbag", "play", *args],
+            env=clean_environ(ROS_MASTER_URI=master),
+            stdin=stdin,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+            start_new_session=True,
+        )
+        self.out = ""
+        self.err = ""
+
+    def finish(self, timeout: float = 30) -> int:
+        self.out, self.err = self.process.communicate(timeout=timeout)
+        return self.process.returncode
+
+    def interrupt(self) -> int:
+        os.killpg(self.process.pid, signal.SIGINT)
+        return self.finish()
+
+
+@pytest.fixture
+def play(master: str) -> Iterator[Callable[..., Play]]:
+    started: list[Play] = []
+
+    def start(*args: str, stdin: Any = subprocess.DEVNULL) -> Play:
+        started.append(Play(master, list(args), stdin))
+        return started[-1]
+
+    yield start
+    for player in started:
+        stop(player.process)
+
+
+def wait_for_publisher(listener: Listener) -> None:
+    wait_for(
+        lambda: listener.sub.get_num_connections() > 0,
+        what="the player's publisher",
+    )
+
+
+def wait_for_keys(terminal: int) -> None:
+    """Until the player reads keys one by one (its terminal out of line mode)."""
+    wait_for(lambda: not termios.tcgetattr(terminal)[3] & termios.ICANON, what="the player's keys")
+
+
+def test_pause_then_step_with_s_and_resume_with_space(
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+) -> None:
+    bag = write_bag(tmp_path / "p.bag", [0.0, 0.01, 0.02, 0.03, 0.04])
+    listener = Listener(make_node("listener"), "/chatter")
+    keys, terminal = os.openpty()
+    try:
+        player = play("--pause", "-d", "0", bag, stdin=terminal)
+        wait_for_publisher(listener)
+        wait_for_keys(terminal)
+        os.write(keys, b"s")
+        assert listener.wait(1) == ["/chatter:0"]
+        os.write(keys, b"s")
+        assert listener.wait(2) == ["/chatter:0", "/chatter:1"]
+        os.write(keys, b" ")
+        assert listener.wait(5) == [f"/chatter:{i}" for i in range(5)]
+        assert player.finish() == 0
+    finally:
+        os.close(keys)
+        os.close(terminal)
+    assert " [PAUSED ]  Bag Time:    100.000000   Duration: 0.000000 / 0.040000" in player.out
+    assert " [RUNNING]  Bag Time:    100.0" in player.out
+    assert player.out.endswith("\nDone.\n")
+
+
+def test_space_pauses_a_running_playback(
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+) -> None:
+    bag = write_bag(tmp_path / "slow.bag", [0.0, 0.1, 3600.0])
+    listener = Listener(make_node("listener"), "/chatter")
+    keys, terminal = os.openpty()
+    try:
+        player = play("-d", "0", "--wait-for-subscribers", bag, stdin=terminal)
+        assert listener.wait(2) == ["/chatter:0", "/chatter:1"]
+        wait_for_keys(terminal)
+        os.write(keys, b" ")  # paused: the hour-long gap waits for the step
+        os.write(keys, b"s")
+        assert listener.wait(3) == ["/chatter:0", "/chatter:1", "/chatter:2"]
+        assert player.finish() == 0
+    finally:
+        os.close(keys)
+        os.close(terminal)
+
+
+def test_clock_is_published_at_hz(
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+) -> None:
+    bag = write_bag(tmp_path / "c.bag", [i * 0.1 for i in range(16)])
+    node = make_node("listener")
+    clock = Listener(node, "/clock", Clock)
+    chatter = Listener(node, "/chatter")
+    player = play("--clock", "--hz", "20", "-d", "0", "-q", "--wait-for-subscribers", bag)
+    chatter.wait(16)
+    assert player.finish() == 0
+    times = [msg.clock.to_sec() for msg in clock.got]
+    assert times == sorted(times)
+    assert all(100.0 <= t <= 101.5 for t in times)
+    gaps = sorted(b - a for a, b in zip(clock.at, clock.at[1:], strict=False))
+    assert 0.025 < gaps[len(gaps) // 2] < 0.1  # about 1 / 20 Hz apart
+    assert Clock._type == clock.sub.type
+
+
+def test_loop_plays_again_until_interrupted(
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+) -> None:
+    bag = write_bag(tmp_path / "l.bag", [0.0, 0.01, 0.02])
+    listener = Listener(make_node("listener"), "/chatter")
+    player = play("-l", "-q", "-d", "0", "--wait-for-subscribers", bag)
+    assert listener.wait(7)[:7] == [f"/chatter:{i % 3}" for i in range(7)]
+    assert player.process.poll() is None
+    assert player.interrupt() == 0
+
+
+def test_keep_alive_serves_latched_topics_after_the_end(
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+) -> None:
+    path = tmp_path / "k.bag"
+    header = {
+        "callerid": "/talker",
+        "latching": "1",
+        "md5sum": String._md5sum,
+        "message_definition": String._full_text,
+        "type": String._type,
+    }
+    with api.Bag(path, "w") as bag:
+        for i in range(3):
+            bag.write("/latched", String(data=str(i)), Time(100 + i), connection_header=header)
+    first = Listener(make_node("early"), "/latched")
+    player = play("-k", "-q", "-d", "0", "--wait-for-subscribers", str(path))
+    assert first.wait(3) == ["0", "1", "2"]
+    late = Listener(make_node("late"), "/latched")
+    assert late.wait(1) == ["2"]
+    assert player.process.poll() is None
+    assert player.interrupt() == 0
+    assert player.out.endswith("\nDone.\n")
+
+
+def test_start_and_duration_select_a_window_as_ros1(
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+) -> None:
+    bag = write_bag(tmp_path / "w.bag", [i * 0.5 for i in range(7)])
+    listener = Listener(make_node("listener"), "/chatter")
+    player = play("-s", "1", "-u", "1", "-i", "--wait-for-subscribers", bag)
+    assert player.finish() == 0
+    assert listener.wait(3) == ["/chatter:2", "/chatter:3", "/chatter:4"]
+    assert " [RUNNING]  Bag Time:    101.000000   Duration: 0.000000 / 1.000000" in player.out
+
+
+def test_topics_and_remaps_choose_and_rename_what_is_played(
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+) -> None:
+    bag = write_bag(tmp_path / "t.bag", [0.0, 0.01], topics=("/a", "/b", "/c"))
+    node = make_node("listener")
+    renamed = Listener(node, "/renamed")
+    others = {topic: Listener(node, topic) for topic in ("/a", "/b", "/c")}
+    player = play("-q", "--wait-for-subscribers", bag, "--topics", "/a", "/b", "/a:=/renamed")
+    assert renamed.wait(2) == ["/a:0", "/a:1"]
+    assert others["/b"].wait(2) == ["/b:0", "/b:1"]
+    assert player.finish() == 0
+    assert others["/a"].got == []
+    assert others["/c"].got == []
+
+
+def test_delay_waits_after_advertising(
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+) -> None:
+    bag = write_bag(tmp_path / "d.bag", [0.0])
+    listener = Listener(make_node("listener"), "/chatter")
+    player = play("-d", "1.5", "-q", bag)
+    wait_for_publisher(listener)
+    advertised = time.monotonic()
+    listener.wait(1)
+    assert listener.at[0] - advertised >= 1.0
+    assert player.finish() == 0
+    assert "\nWaiting 1.5 seconds after advertising topics... done.\n" in player.out
+
+
+def test_wait_for_subscribers_holds_playback_until_each_topic_has_one(
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+) -> None:
+    bag = write_bag(tmp_path / "ws.bag", [0.0, 0.01], topics=("/a", "/b"))
+    node = make_node("listener")
+    first = Listener(node, "/a")
+    player = play("-d", "0", "--wait-for-subscribers", bag)
+    wait_for_publisher(first)
+    second = Listener(node, "/b")
+    assert first.wait(2) == ["/a:0", "/a:1"]
+    assert second.wait(2) == ["/b:0", "/b:1"]
+    assert player.finish() == 0
+    assert "Waiting for subscribers.\nFinished waiting for subscribers.\n" in player.out
+
+
+def test_skip_empty_jumps_over_long_gaps(
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+) -> None:
+    bag = write_bag(tmp_path / "gap.bag", [0.0, 0.01, 3600.0, 3600.01])
+    listener = Listener(make_node("listener"), "/chatter")
+    player = play("--skip-empty", "1", "-q", "-d", "0", "--wait-for-subscribers", bag)
+    assert listener.wait(4) == [f"/chatter:{i}" for i in range(4)]
+    assert player.finish() == 0

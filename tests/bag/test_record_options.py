@@ -1,0 +1,182 @@
+"""``rosbag record``'s splitting, ``--node`` and ``-b`` on a live graph, in this process.
+
+File names are ROS 1's (Debian's C++ recorder, ``-O NAME --split``): ``NAME_0.bag``,
+``NAME_1.bag``…; with ``--max-splits N`` the N newest closed files stay beside the one being
+written.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any, BinaryIO
+
+from rosx.bag.reader import BagReader
+from rosx.bag.recorder import Recorder, RecordOptions
+from rosx.bag.writer import open_unbuffered
+from rosx.msg.codec.classes import get_message_class
+from rosx.node import Node
+from tests.support.procs import wait_for
+
+String = get_message_class("std_msgs/String")
+
+
+def _record(
+    node: Node, prefix: Path, /, log: Any = None, opener: Any = open_unbuffered, **options: Any
+) -> Recorder:
+    recorder = Recorder(
+        node,
+        RecordOptions(prefix=str(prefix), append_date=False, **options),
+        log or (lambda level, text: None),
+        opener=opener,
+    )
+    recorder.start()
+    return recorder
+
+
+def _texts(path: Path) -> list[str]:
+    with BagReader(path) as bag:
+        return [String().deserialize(d).data for _, _, d in bag.messages()]
+
+
+def _bags(folder: Path) -> list[str]:
+    return sorted((p.name for p in folder.glob("*.bag*")), key=lambda n: (len(n), n))
+
+
+def test_split_by_size_writes_name_0_name_1_and_loses_nothing(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    pub = make_node("talker").advertise("/chatter", String, queue_size=None)
+    recorder = _record(
+        make_node("record"),
+        tmp_path / "NAME.bag",
+        topics=["/chatter"],
+        split=True,
+        max_size=20_000,
+        chunk_size=4096,
+    )
+    wait_for(lambda: pub.get_num_connections() == 1, what="the recorder")
+    for i in range(1000):
+        pub.publish(String(data=f"{i:04d} " + "x" * 50))
+    wait_for(lambda: recorder.written == 1000, what="every message written")
+    recorder.stop()
+    names = _bags(tmp_path)
+    assert len(names) > 2
+    assert names == [f"NAME_{i}.bag" for i in range(len(names))]
+    got = [text for name in names for text in _texts(tmp_path / name)]
+    assert got == [f"{i:04d} " + "x" * 50 for i in range(1000)]
+    assert all((tmp_path / n).stat().st_size < 20_000 + 4096 + 8192 for n in names)
+
+
+def test_split_by_duration_and_max_splits_keep_the_newest_files(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    logged: list[str] = []
+    pub = make_node("talker").advertise("/chatter", String, queue_size=None)
+    recorder = _record(
+        make_node("record"),
+        tmp_path / "NAME",
+        lambda level, text: logged.append(text),
+        topics=["/chatter"],
+        split=True,
+        max_duration=0.2,
+        max_splits=2,
+    )
+    wait_for(lambda: pub.get_num_connections() == 1, what="the recorder")
+    sent = 0
+
+    def published_into_file(n: int) -> bool:
+        nonlocal sent
+        pub.publish(String(data=str(sent)))
+        sent += 1
+        return f"Recording to '{tmp_path}/NAME_{n}.bag'." in logged
+
+    wait_for(lambda: published_into_file(5), what="the sixth file")
+    pub.publish(String(data=str(sent)))
+    wait_for(lambda: recorder.written == sent + 1, what="every message written")
+    recorder.stop()
+    assert _bags(tmp_path) == ["NAME_3.bag", "NAME_4.bag", "NAME_5.bag"]
+    assert f"Closing '{tmp_path}/NAME_0.bag'." in logged
+    kept = [int(t) for name in _bags(tmp_path) for t in _texts(tmp_path / name)]
+    assert kept == list(range(kept[0], sent + 1))
+
+
+def test_node_records_what_that_node_subscribes_to(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    listener = make_node("listener")
+    listener.subscribe("/heard", String, lambda msg: None)
+    talker = make_node("talker")
+    heard = talker.advertise("/heard", String, queue_size=None)
+    other = talker.advertise("/other", String, queue_size=None)
+    recorder = _record(make_node("record"), tmp_path / "node", node="/listener")
+    wait_for(lambda: heard.get_num_connections() == 2, what="the recorder on /heard")
+    heard.publish(String(data="yes"))
+    other.publish(String(data="no"))
+    wait_for(lambda: recorder.written == 1, what="the message written")
+    recorder.stop()
+    assert other.get_num_connections() == 0
+    with BagReader(tmp_path / "node.bag") as bag:
+        assert [c.topic for c in bag.connections.values()] == ["/heard"]
+    assert _texts(tmp_path / "node.bag") == ["yes"]
+
+
+class _Gate:
+    """A file whose writes wait until the gate opens (a disk that stalls)."""
+
+    def __init__(self) -> None:
+        self.armed = threading.Event()
+        self.open = threading.Event()
+        self.waiting = threading.Event()
+
+    def opener(self, path: str, mode: str) -> BinaryIO:
+        raw = open_unbuffered(path, mode)
+        write = raw.write
+        gate = self
+
+        class Stalling:
+            def __getattr__(self, name: str) -> Any:
+                return getattr(raw, name)
+
+            def write(self, data: Any) -> int:
+                if gate.armed.is_set():
+                    gate.waiting.set()
+                    gate.open.wait(30)
+                return write(data)
+
+        return Stalling()  # type: ignore[return-value]
+
+
+def test_a_full_buffer_drops_the_oldest_messages_with_ros1s_warning(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    logged: list[tuple[str, str]] = []
+    gate = _Gate()
+    pub = make_node("talker").advertise("/chatter", String, queue_size=None)
+    recorder = _record(
+        make_node("record"),
+        tmp_path / "b",
+        lambda level, text: logged.append((level, text)),
+        topics=["/chatter"],
+        buffer_size=100_000,
+        chunk_size=1,
+        opener=gate.opener,
+    )
+    wait_for(lambda: pub.get_num_connections() == 1, what="the recorder")
+    gate.armed.set()
+    pub.publish(String(data="first " + "x" * 5000))
+    wait_for(gate.waiting.is_set, what="the writer to stall")
+    for i in range(100):
+        pub.publish(String(data=f"{i:03d} " + "y" * 5000))
+    wait_for(lambda: recorder.dropped > 0 and len(recorder._queue) > 0, what="drops")
+    gate.open.set()
+    wait_for(lambda: recorder.written + recorder.dropped == 101, what="the rest written")
+    recorder.stop()
+    warnings = [text for level, text in logged if level == "WARN"]
+    assert warnings == ["rosbag record buffer exceeded.  Dropping oldest queued message."]
+    got = _texts(tmp_path / "b.bag")
+    assert got[0].startswith("first ")
+    assert len(got) == 101 - recorder.dropped
+    assert got[-1] == "099 " + "y" * 5000
+    assert [t[:3] for t in got[1:]] == [f"{i:03d}" for i in range(100 - len(got) + 1, 100)]
