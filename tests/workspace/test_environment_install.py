@@ -169,3 +169,17 @@ def test_install_rules_that_rosx_cannot_evaluate_are_skipped(tmp_path: Path) -> 
         InstallRule("FILES", ("a file.txt", "b.yaml"), "share/pkg/cfg")
     ]
     assert rosx("catkin_make", "--help").status == 0
+
+
+def test_rosrun_of_a_cpp_target_says_it_was_not_built(tmp_path: Path) -> None:
+    ws = _workspace(tmp_path)
+    env = clean_environ(ROS_PACKAGE_PATH=str(ws / "src"))
+    result = rosx("rosrun", "beginner_tutorials", "listener", environ=env)
+    assert result.status == 3
+    assert result.out.startswith(
+        f"[rosrun] Couldn't find executable named listener below {ws}/src/beginner_tutorials\n"
+    )
+    assert result.err == (
+        "[rosx] listener is a C++ target of the package's CMakeLists.txt; rosx compiles no C++, "
+        "so it was not built (write the node in Python to run it with rosx)\n"
+    )
