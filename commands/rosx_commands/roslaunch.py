@@ -357,6 +357,7 @@ def _launch(
     from rosx.launch.runner import LaunchFailedError, LaunchRun, LaunchSettings  # noqa: PLC0415
     from rosx.packages.index import PackageIndex  # noqa: PLC0415
     from rosx_commands.invocation import script_command  # noqa: PLC0415
+    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
 
     index = PackageIndex.from_environ(env.environ)
     try:
@@ -376,6 +377,7 @@ def _launch(
         titles=not opts["disable_title"],
         sigint_timeout=opts["sigint_timeout"],
         sigterm_timeout=opts["sigterm_timeout"],
+        shim_dirs=shim_dirs(),
     )
     console = LaunchConsole(env.stdout, env.stderr, titles=not opts["disable_title"])
     run = LaunchRun(

@@ -104,7 +104,7 @@ def _choose(paths: list[Path], env: Environment) -> Path | None:
     env.stderr.write("#? ")
     env.stderr.flush()
     answer = env.stdin.readline().strip()
-    if answer.isdigit() and 1 <= int(answer) <= len(paths):
+    if answer.isascii() and answer.isdigit() and 1 <= int(answer) <= len(paths):
         return paths[int(answer) - 1]
     return None
 

@@ -42,10 +42,9 @@ from rosx.launch.monitor import (
     LocalProcess,
     ProcessMonitor,
 )
+from rosx.master.client import MasterClient, MasterError, MasterUnreachable
 from rosx.names.resolution import ns_join
 from rosx.transport.address import advertised_host, http_uri, is_local_host
-from rosx.transport.client import XmlRpcClient
-from rosx.transport.errors import FaultError, TransportError
 from rosx.workspace import logdir
 from rosx.workspace.executables import bundled_program, is_python_script
 
@@ -86,6 +85,7 @@ class LaunchSettings:
         titles: bool = True,
         sigint_timeout: float = DEFAULT_SIGINT_TIMEOUT,
         sigterm_timeout: float = DEFAULT_SIGTERM_TIMEOUT,
+        shim_dirs: Sequence[Path] = (),
     ) -> None:
         self.port = port
         self.wait_for_master = wait_for_master
@@ -99,6 +99,10 @@ class LaunchSettings:
         self.titles = titles
         self.sigint_timeout = sigint_timeout
         self.sigterm_timeout = sigterm_timeout
+        #: The directories of the ROS modules rosx serves to Python nodes (``rospy``,
+        #: ``rosbag``…), composed by the command above every layer that has one; the client
+        #: layer's alone when empty.
+        self.shim_dirs = tuple(shim_dirs)
 
 
 def provided_program(package: str, node_type: str) -> list[str] | None:
@@ -127,49 +131,6 @@ def _uri_host_port(uri: str) -> tuple[str, int]:
 
 def _hostname_to_rosname(host: str) -> str:
     return "host_" + "".join(c if c.isascii() and c.isalnum() else "_" for c in host.lower())
-
-
-class _MasterLink:
-    """Calls to the master as ``/roslaunch``: values, or `LaunchFailedError` with ROS 1's texts."""
-
-    def __init__(self, uri: str) -> None:
-        self.uri = uri
-        self.client = XmlRpcClient(timeout=_CONNECT_TIMEOUT)
-
-    def _unreachable(self, exc: Exception) -> LaunchFailedError:
-        return LaunchFailedError(f"ERROR: could not contact master [{self.uri}]: {exc}")
-
-    def answers(self) -> bool:
-        try:
-            self.client.call(self.uri, "getPid", _CALLER)
-        except (TransportError, FaultError, OSError):
-            return False
-        return True
-
-    def call(self, method: str, *params: object) -> Any:
-        try:
-            reply = self.client.call(self.uri, method, _CALLER, *params, timeout=10.0)
-        except (TransportError, FaultError, OSError) as exc:
-            raise self._unreachable(exc) from None
-        if not isinstance(reply, list) or len(reply) != 3:
-            raise LaunchFailedError(f"ERROR: the master at [{self.uri}] sent a malformed reply")
-        return reply
-
-    def multicall(self, calls: Sequence[tuple[str, tuple[object, ...]]]) -> list[Any]:
-        """``system.multicall`` of ``(method, params)`` pairs; each reply."""
-        if not calls:
-            return []
-        payload = [{"methodName": m, "params": [_CALLER, *p]} for m, p in calls]
-        try:
-            replies = self.client.call(self.uri, "system.multicall", payload, timeout=60.0)
-        except FaultError:  # a master without multicall: one call each
-            return [self.call(method, *params) for method, params in calls]
-        except (TransportError, OSError) as exc:
-            raise self._unreachable(exc) from None
-        return [r[0] if isinstance(r, list) and r else r for r in replies]
-
-    def close(self) -> None:
-        self.client.close()
 
 
 def unify_clear_params(namespaces: Sequence[str]) -> list[str]:
@@ -232,13 +193,19 @@ class LaunchRun:
         self.run_id = ""
         self.log_dir: Path | None = None
         self._counter = 0
-        self._master = _MasterLink(self.uri)
+        self._master = MasterClient(self.uri, _CALLER, timeout=_CONNECT_TIMEOUT)
         #: Python nodes are forks of a process that has loaded rosx's rospy (see
         #: `rosx.launch.zygote`); False starts each as a new Python process.
         self.fork_python_nodes = True
         self.zygote: ZygoteClient | None = None
 
     # -- the run ---------------------------------------------------------------------------
+
+    def _script_environ(self, environ: Mapping[str, str]) -> dict[str, str]:
+        """``environ`` for a Python node: the shim directories first on ``PYTHONPATH``."""
+        from rosx.client.script import SHIM_DIR, shim_environ  # noqa: PLC0415
+
+        return shim_environ(environ, self.settings.shim_dirs or (SHIM_DIR,))
 
     def run(self) -> int:
         """Run the launch to its end; the exit status (0, as roslaunch, once it has started).
@@ -252,7 +219,9 @@ class LaunchRun:
 
             # Started first, so that it loads Python's side of the nodes while the launcher
             # starts the core.
-            self.zygote = ZygoteClient(self.environ, on_exit=self.monitor.wake)
+            self.zygote = ZygoteClient(
+                self._script_environ(self.environ), on_exit=self.monitor.wake
+            )
         with self.monitor.signals():
             try:
                 return self._run()
@@ -267,7 +236,7 @@ class LaunchRun:
         from rosx.launch.printing import summary_text  # noqa: PLC0415
         from rosx.launch.server import LaunchServer  # noqa: PLC0415
 
-        running = self._master.answers()
+        running = self._master.is_online()
         if self.settings.wait_for_master and not running:
             running = self._wait_for_master()
             if not running:
@@ -370,10 +339,23 @@ class LaunchRun:
         machine = self.plan.machines.get(node.machine)
         return machine is None or is_local_host(machine.address)
 
+    def _ask(self, method: str, *params: object) -> tuple[bool, Any]:
+        """``method(*params)`` on the master: (True, its value), or (False, its status) when
+        the master refuses; `LaunchFailedError` with ROS 1's text when it does not answer."""
+        try:
+            return True, self._master.call(method, *params, timeout=10.0)
+        except MasterError as exc:
+            return False, exc.status
+        except MasterUnreachable as exc:
+            raise self._unreachable(exc) from None
+
+    def _unreachable(self, exc: MasterUnreachable) -> LaunchFailedError:
+        return LaunchFailedError(f"ERROR: could not contact master [{self.uri}]: {exc}")
+
     def _wait_for_master(self) -> bool:
         self.console.line("roscore/master is not yet running, will wait for it to start")
         while not self.monitor.stop_requested:
-            if self._master.answers():
+            if self._master.is_online():
                 self.console.line("master has started, initiating launch")
                 return True
             self.monitor.sleep(0.1)
@@ -382,8 +364,8 @@ class LaunchRun:
     def _run_id(self, running: bool) -> str:
         """The running master's ``/run_id``, or the run id of the core this launch starts."""
         if running:
-            code, _, value = self._master.call("getParam", "/run_id")
-            if code == 1 and isinstance(value, str) and value:
+            ok, value = self._ask("getParam", "/run_id")
+            if ok and isinstance(value, str) and value:
                 return value
             import uuid  # noqa: PLC0415
 
@@ -459,15 +441,15 @@ class LaunchRun:
             raise LaunchFailedError(f"ERROR: could not contact master [{self.uri}]") from None
 
     def _check_run_id(self) -> None:
-        code, _, present = self._master.call("hasParam", "/run_id")
-        if code == 1 and not present:
+        ok, present = self._ask("hasParam", "/run_id")
+        if ok and not present:
             self.console.bold(f"setting /run_id to {self.run_id}")
-            self._master.call("setParam", "/run_id", self.run_id)
+            self._ask("setParam", "/run_id", self.run_id)
 
     def _set_launch_uri(self, server_uri: str) -> None:
         host, port = _uri_host_port(server_uri)
         key = f"/roslaunch/uris/{_hostname_to_rosname(host)}__{port}"
-        self._master.call("setParam", key, server_uri)
+        self._ask("setParam", key, server_uri)
 
     # -- parameters ------------------------------------------------------------------------
 
@@ -477,13 +459,13 @@ class LaunchRun:
         for step in self.plan.rosparam_commands:
             if step.command == "delete":
                 self.console.plain(f"running rosparam delete {step.param}")
-                code, _, _ = self._master.call("deleteParam", step.param)
-                if code != 1:
+                ok, _ = self._ask("deleteParam", step.param)
+                if not ok:
                     self.console.error(f"ERROR: parameter [{step.param}] is not set")
                 continue
             self.console.plain(f"running rosparam dump {step.file} {step.param}")
-            code, _, value = self._master.call("getParam", step.param)
-            if code != 1:
+            ok, value = self._ask("getParam", step.param)
+            if not ok:
                 self.console.error(f"ERROR: parameter [{step.param}] is not set")
                 continue
             try:
@@ -494,17 +476,17 @@ class LaunchRun:
     def _load_parameters(self) -> None:
         clear = []
         for namespace in unify_clear_params(self.plan.clear_params):
-            code, _, present = self._master.call("hasParam", namespace)
-            if code == 1 and present:
+            ok, present = self._ask("hasParam", namespace)
+            if ok and present:
                 clear.append(("deleteParam", (namespace,)))
-        for reply in self._master.multicall(clear):
-            if isinstance(reply, list) and reply and reply[0] != 1:
-                raise LaunchFailedError(f"Failed to clear parameter: {reply[1]}")
         sets = [("setParam", (p.name, p.value)) for p in self.plan.params.values()]
-        for reply in self._master.multicall(sets):
-            if not isinstance(reply, list) or not reply or reply[0] != 1:
-                message = reply[1] if isinstance(reply, list) and len(reply) > 1 else reply
-                raise LaunchFailedError(f"Failed to set parameter: {message}")
+        for what, calls in (("clear", clear), ("set", sets)):
+            try:
+                self._master.multicall(calls, timeout=60.0)
+            except MasterError as exc:
+                raise LaunchFailedError(f"Failed to {what} parameter: {exc.status}") from None
+            except MasterUnreachable as exc:
+                raise self._unreachable(exc) from None
 
     # -- nodes -----------------------------------------------------------------------------
 
@@ -532,9 +514,7 @@ class LaunchRun:
         environ[HEADLESS] = "1"
         argv, executable = self._program(node, command)
         if executable is not None and is_python_script(executable):
-            from rosx.client.script import shim_environ  # noqa: PLC0415
-
-            environ = shim_environ(environ)
+            environ = self._script_environ(environ)
         name = ns_join(node.namespace, node.name)
         name = f"{name}-{counter}".lstrip("/")
         output = node.output

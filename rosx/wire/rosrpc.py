@@ -21,6 +21,7 @@ from __future__ import annotations
 import struct
 
 from rosx.record import Record
+from rosx.wire._digits import is_ascii_number
 from rosx.wire.errors import OversizedError, ProtocolError
 from rosx.wire.framing import DEFAULT_MAX_FRAME_SIZE, DEFAULT_MAX_HEADER_SIZE
 from rosx.wire.header import Refused, decode_header
@@ -139,7 +140,7 @@ def parse_rosrpc_uri(uri: str) -> tuple[str, int]:
     if not uri.startswith(_ROSRPC):
         raise ProtocolError(f"Invalid protocol for ROS service URL: {uri}")
     parts = uri[len(_ROSRPC) :].partition("/")[0].split(":")
-    if len(parts) != 2 or not parts[0] or not parts[1].isdigit():
+    if len(parts) != 2 or not parts[0] or not is_ascii_number(parts[1]):
         raise ProtocolError(f"ROS service URL is invalid: {uri}")
     return parts[0], int(parts[1])
 

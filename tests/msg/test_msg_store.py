@@ -141,12 +141,27 @@ def test_user_packages_and_full_text(tmp_path: Path) -> None:
     assert store.find("Goal", "msg") == ["lab2/Goal"]
 
 
-def test_first_package_on_the_path_wins_and_shadows_the_standard_one(tmp_path: Path) -> None:
+def test_first_package_on_the_path_wins_for_the_types_it_has(tmp_path: Path) -> None:
     _package(tmp_path / "a", "std_msgs", {"String": "string data\nint8 extra\n"})
     _package(tmp_path / "b", "std_msgs", {"String": "int8 other\n"})
     store = TypeStore([tmp_path / "a", tmp_path / "b"])
     assert [f.name for f in store.msg("std_msgs/String").fields] == ["data", "extra"]
-    assert not store.has_msg("std_msgs/Header")  # the whole package is shadowed, as with rospack
+    assert [f.name for f in store.msg("std_msgs/Header").fields] == ["seq", "stamp", "frame_id"]
+    assert {"std_msgs/String", "std_msgs/Header"} <= set(store.types("msg"))
+
+
+def test_a_package_without_types_shadows_none_of_the_bundled_ones(tmp_path: Path) -> None:
+    # Debian's libroscpp-dev leaves /usr/share/roscpp holding a manifest and no msg/srv files.
+    (tmp_path / "roscpp").mkdir()
+    (tmp_path / "roscpp" / "package.xml").write_text("<package><name>roscpp</name></package>\n")
+    store = TypeStore([tmp_path])
+    bundled = TypeStore([])
+    assert store.md5("roscpp/Logger") == bundled.md5("roscpp/Logger")
+    assert store.srv_md5("roscpp/GetLoggers") == bundled.srv_md5("roscpp/GetLoggers")
+    assert store.types("srv") == bundled.types("srv")
+    with pytest.raises(UnknownTypeError) as caught:
+        store.msg("roscpp/Nope")
+    assert caught.value.package_known
 
 
 def test_crawl_skips_ignored_and_hidden_directories(tmp_path: Path) -> None:

@@ -108,6 +108,17 @@ def test_rosrun_usage_and_invalid_names(workspace: Path) -> None:
     assert (invalid.status, invalid.out) == (1, "Invalid filename:  scripts/\n")
 
 
+@pytest.mark.parametrize("answer", ["x", "²", "3"])
+def test_rosrun_refuses_a_choice_that_is_not_a_listed_number(workspace: Path, answer: str) -> None:
+    for folder in ("bin", "scripts"):
+        (workspace / "lab2" / folder).mkdir(exist_ok=True)
+        (workspace / "lab2" / folder / "twice").write_text("#!/bin/sh\n")
+        (workspace / "lab2" / folder / "twice").chmod(0o755)
+    result = rosx("rosrun", "lab2", "twice", stdin=answer + "\n", environ=env_of(workspace))
+    assert result.status == 3
+    assert result.err.endswith("2) " + str(workspace / "lab2" / "scripts" / "twice") + "\n#? ")
+
+
 def test_rosrun_runs_python_scripts_with_rosxs_python(workspace: Path) -> None:
     env = Environment(environ=env_of(workspace))
     launch = plan(["lab2", "pub.py", "a", "x:=y"], env)
