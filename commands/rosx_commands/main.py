@@ -24,6 +24,10 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rosnode": ("rosx_commands.rosnode:rosnode", "Print information about ROS nodes."),
     "rosservice": ("rosx_commands.rosservice:rosservice", "List, inspect and call ROS services."),
     "rosparam": ("rosx_commands.rosparam:rosparam", "Get and set ROS parameters."),
+    "roslaunch": (
+        "rosx_commands.roslaunch:roslaunch",
+        "Start the nodes and parameters of launch files (and a core when none runs).",
+    ),
     "rosbag": (
         "rosx_commands.rosbag:rosbag",
         "Record, play back and inspect bag files (ROS 1's format 2.0).",
@@ -59,6 +63,7 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rosrun": ("rosx_commands.rosrun:rosrun", "Run an executable of a ROS package."),
     "roscd": ("rosx_commands.roscd:roscd", "Where roscd goes (roscd itself is a shell function)."),
     "rosls": ("rosx_commands.roscd:rosls", "List a package's directory."),
+    "rosclean": ("rosx_commands.rosclean:rosclean", "Check or purge the ROS log folders."),
     "shell-init": (
         "rosx_commands.shell_init:shell_init",
         "Print shell functions: ROS 1's command names, roscd, rosls.",

@@ -251,7 +251,13 @@ class Node:
             await self._aclient.close()
 
     def request_shutdown(self, reason: str) -> None:
-        """Shut down on a thread of its own (for the Slave API, which runs on the loop)."""
+        """Shut down on a thread of its own (for the Slave API, which runs on the loop).
+
+        The Slave API stops taking connections at once, as rospy's has closed by the time it
+        answers ``shutdown``: a ``rosnode ping`` right after ``rosnode kill`` finds no node.
+        """
+        if self._xmlrpc is not None:
+            self._xmlrpc.stop_listening()
         threading.Thread(target=self.shutdown, args=(reason,), daemon=True).start()
 
     def _check_alive(self) -> None:

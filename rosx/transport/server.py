@@ -156,6 +156,11 @@ class XmlRpcServer:
         if self._sweeper is None:
             self._sweeper = asyncio.get_running_loop().create_task(self._sweep())
 
+    def stop_listening(self) -> None:
+        """Refuse new connections from now on; calls under way still get their replies."""
+        if self._server is not None:
+            self._server.close()
+
     async def close(self) -> None:
         """Stop listening and close every connection."""
         server, self._server = self._server, None

@@ -6,6 +6,11 @@ ROS 1's rosrun searches the whole package directory (following symbolic links, s
 also lists the same-named files that are not executable, which rosrun reports. For a name not
 found, `suggestion` picks the executable the user most likely meant.
 
+`bundled_program` finds the programs of the packages rosx ships (turtlesim's ``turtlesim_node``,
+``mimic``…, roscpp_tutorials' in ``lib/roscpp_tutorials``, rospy_tutorials' scripts):
+they are rosx's whatever else ``ROS_PACKAGE_PATH`` holds under the same package
+name, as ``rosx rosrun turtlesim …`` runs rosx's turtlesim. ``roslaunch`` starts them from there.
+
 `is_python_script` tells the scripts rosx runs with its own Python and ``rospy``, whatever their
 ``#!`` line says: a ``#!`` line naming python, or no ``#!`` line and a ``.py`` name.
 """
@@ -84,6 +89,20 @@ def suggestion(name: str, following: list[str], known: list[str]) -> str | None:
     return close[0] if close else None
 
 
+def bundled_program(package: str, name: str) -> Path | None:
+    """The executable ``name`` of the package ``package`` that rosx ships, if it has one."""
+    if "/" in name:
+        return None
+    from rosx.packages.crawl import bundled_libexec, bundled_packages  # noqa: PLC0415
+
+    # As catkin's rosrun: the package's libexec folder (``lib/<package>``) first.
+    for directory in (bundled_libexec(package), bundled_packages().get(package)):
+        found = find_executables(directory, name).executables if directory else []
+        if found:
+            return found[0]
+    return None
+
+
 def is_python_script(path: Path) -> bool:
     """Whether rosx runs ``path`` with its own Python (see the module docstring)."""
     try:
@@ -96,4 +115,11 @@ def is_python_script(path: Path) -> bool:
     return path.suffix == ".py"
 
 
-__all__ = ["Search", "find_executables", "is_python_script"]
+__all__ = [
+    "Search",
+    "bundled_program",
+    "executable_names",
+    "find_executables",
+    "is_python_script",
+    "suggestion",
+]

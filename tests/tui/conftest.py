@@ -92,6 +92,13 @@ def scripted_pond() -> Pond:
     return pond
 
 
+TOPIC_TYPES = {
+    "/rosout": "rosgraph_msgs/Log",
+    "/rosout_agg": "rosgraph_msgs/Log",
+    "/turtle1/cmd_vel": "geometry_msgs/Twist",
+    "/turtle1/color_sensor": "turtlesim/Color",
+    "/turtle1/pose": "turtlesim/Pose",
+}
 LAB1_GRAPH = Graph.of(
     GraphState(
         publishers={
@@ -102,13 +109,7 @@ LAB1_GRAPH = Graph.of(
             "/turtle1/pose": ("/turtlesim",),
         },
         subscribers={"/rosout": ("/rosout",), "/turtle1/cmd_vel": ("/turtlesim",)},
-        topic_types={
-            "/rosout": "rosgraph_msgs/Log",
-            "/rosout_agg": "rosgraph_msgs/Log",
-            "/turtle1/cmd_vel": "geometry_msgs/Twist",
-            "/turtle1/color_sensor": "turtlesim/Color",
-            "/turtle1/pose": "turtlesim/Pose",
-        },
+        topic_types=TOPIC_TYPES,
     )
 )
 
@@ -127,9 +128,21 @@ class StaticLink:
             LogRecord(WARN, " WARN", wall_warning(11.120889, 5.544445))
         )
         self.sent: list[tuple[float, float]] = []
+        self.echoes: dict[str, Callable[[str], object]] = {}
 
     def drive(self, linear: float, angular: float) -> None:
         self.sent.append((linear, angular))
+
+    def describe_topic(self, topic: str) -> str:
+        return f"Type: {TOPIC_TYPES.get(topic, 'unknown type')}\n\nPublishers: None\n"
+
+    def describe_node(self, node: str) -> str:
+        return f"Node [{node}]\n"
+
+    def echo(self, topic: str, offer: Callable[[str], object]) -> Callable[[], None]:
+        """Records ``offer`` in `echoes` (tests call it); stopping removes it."""
+        self.echoes[topic] = offer
+        return lambda: self.echoes.pop(topic, None) and None
 
 
 @pytest.fixture
