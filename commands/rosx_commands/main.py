@@ -68,6 +68,28 @@ TOOLS: dict[str, tuple[str, str]] = {
         "rosx_commands.shell_init:shell_init",
         "Print shell functions: ROS 1's command names, roscd, rosls.",
     ),
+    "rosed": ("rosx_commands.rosed:rosed", "Edit a file of a ROS package with $EDITOR."),
+    "roscp": ("rosx_commands.rosed:roscp", "Copy a file of a ROS package."),
+    "roswtf": (
+        "rosx_commands.roswtf:roswtf",
+        "Check the ROS environment and the running graph for problems.",
+    ),
+    "rosversion": (
+        "rosx_commands.rosversion:rosversion",
+        "Print a package's version or the ROS distribution.",
+    ),
+    "rosmsg-proto": (
+        "rosx_commands.rosmsg_proto:rosmsg_proto",
+        "Print a default message or service request as YAML (for tab completion).",
+    ),
+    "rossrv-proto": (
+        "rosx_commands.rosmsg_proto:rosmsg_proto",
+        "The same as rosmsg-proto.",
+    ),
+    "complete": (
+        "rosx_commands.complete:complete",
+        "Print the completions of a ROS command line (used by the shells' tab completion).",
+    ),
     "run-script": (
         "rosx_commands.run_script:run_script",
         "Run a Python script with rosx's rospy and message modules.",

@@ -109,6 +109,17 @@ def _choose(paths: list[Path], env: Environment) -> Path | None:
     return None
 
 
+def _cpp_notice(executable: str, directory: Path, env: Environment) -> None:
+    """Say once, plainly, when the executable is a C++ target of the package (never built)."""
+    from rosx.workspace.cmake import cpp_targets  # noqa: PLC0415
+
+    if executable in cpp_targets(directory / "CMakeLists.txt"):
+        env.err(
+            f"[rosx] {executable} is a C++ target of the package's CMakeLists.txt; rosx compiles "
+            "no C++, so it was not built (write the node in Python to run it with rosx)"
+        )
+
+
 def _options(argv: list[str]) -> tuple[list[str], bool, list[str]] | None:
     """``(prefix, debug, [PACKAGE, EXECUTABLE, ARGS…])``, or None for the usage text."""
     prefix: list[str] = []
@@ -165,6 +176,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
             env.out("[rosrun] or not executable:")
             for other in found.not_executable:
                 env.out(f"[rosrun]   {other}")
+        _cpp_notice(executable, directory, env)
         _suggest(package, executable, rest, directory, env)
         return ExitStatus.NOT_FOUND
     chosen = found.executables[0]

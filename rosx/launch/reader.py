@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from rosx.launch import substitution
 from rosx.launch.context import LoadContext
@@ -28,9 +28,13 @@ from rosx.launch.xmldoc import Element, XmlSyntaxError, parse_launch
 from rosx.names.resolution import canonicalize, make_global_ns, ns_join
 
 if TYPE_CHECKING:
-    from collections.abc import Iterator, Mapping
+    from collections.abc import Callable, Iterator, Mapping
 
     from rosx.launch.values import CommandRunner
+
+
+#: An attribute's number: ``float`` or ``int``, as the attribute takes it.
+_Number = TypeVar("_Number", float, int)
 
 
 class AbortError(Exception):
@@ -269,6 +273,19 @@ class Reader:
                     f"parameter [{key}] conflicts with parent parameter [{parent}]",
                 )
         self.plan.params[key] = Param(key, value, source or self.source(context, element))
+
+    def number(
+        self,
+        context: LoadContext,
+        element: Element,
+        convert: Callable[[str], _Number],
+        attr: str,
+        text: str,
+    ) -> _Number:
+        try:
+            return convert(text)
+        except ValueError:
+            raise self.fail(context, element, f"'{attr}' must be a number: [{text}]") from None
 
     def seconds(
         self, context: LoadContext, element: Element, value: str | None, label: str

@@ -76,8 +76,13 @@ def _crawl(directory: Path, found: dict[str, Path]) -> None:
 def bundled_packages() -> dict[str, Path]:
     """The ROS package directories shipped with rosx (`PREFIX`'s and turtlesim's), by name."""
     # rosx's own folders are named as their packages (a test checks it): no manifest is read.
+    # share/ros is ROS_ROOT, without a package.xml (see its README).
     share = PREFIX / "share"
-    found = {entry.name: share / entry.name for entry in sorted(share.iterdir(), key=str)}
+    found = {
+        entry.name: share / entry.name
+        for entry in sorted(share.iterdir(), key=str)
+        if (entry / "package.xml").is_file()
+    }
     for module in BUNDLED_MODULES:
         spec = importlib.util.find_spec(module)
         if spec is not None and spec.origin is not None:

@@ -3,8 +3,9 @@
 ROS 1's rosrun searches the whole package directory (following symbolic links, skipping
 ``build/``) for regular files of the given name with any execute bit set; a name containing
 ``/`` is taken as a path inside the package instead. `find_executables` does the same, and
-also lists the same-named files that are not executable, which rosrun reports. For a name not
-found, `suggestion` picks the executable the user most likely meant.
+also lists the same-named files that are not executable, which rosrun reports. Like rosrun (with
+``catkin_find --libexec``) it looks first in an installed package's ``lib/PKG`` folder. For a
+name not found, `suggestion` picks the executable the user most likely meant.
 
 `bundled_program` finds the programs of the packages rosx ships (turtlesim's ``turtlesim_node``,
 ``mimic``…, roscpp_tutorials' in ``lib/roscpp_tutorials``, rospy_tutorials' scripts):
@@ -57,15 +58,27 @@ def _runnable(path: Path) -> bool:
         return False
 
 
+def libexec_dir(package_dir: Path) -> Path | None:
+    """Where an installed package's programs are: ``PREFIX/lib/PKG`` for a package in
+    ``PREFIX/share/PKG`` (catkin's ``CATKIN_PACKAGE_BIN_DESTINATION``), if it exists."""
+    if package_dir.parent.name != "share":
+        return None
+    folder = package_dir.parent.parent / "lib" / package_dir.name
+    return folder if folder.is_dir() else None
+
+
 def find_executables(package_dir: Path, name: str) -> Search:
-    """The files called ``name`` below ``package_dir`` (``name`` may be a relative path)."""
+    """The files called ``name`` in the package's ``lib/PKG`` folder (`libexec_dir`) and below
+    ``package_dir`` (``name`` may be a relative path)."""
     if "/" in name:
         path = package_dir / name
         runnable = [path] if _runnable(path) else []
         return Search(runnable, [] if runnable or not path.exists() else [path])
     executables: list[Path] = []
     others: list[Path] = []
-    for path in _walk(package_dir):
+    libexec = libexec_dir(package_dir)
+    searched = [*(_walk(libexec) if libexec else []), *_walk(package_dir)]
+    for path in searched:
         if path.name != name:
             continue
         (executables if _runnable(path) else others).append(path)
@@ -121,5 +134,6 @@ __all__ = [
     "executable_names",
     "find_executables",
     "is_python_script",
+    "libexec_dir",
     "suggestion",
 ]

@@ -168,21 +168,11 @@ def test_attrs(reader: Reader, context: LoadContext, element: Element) -> tuple[
     retry_text = reader.resolve(context, element, element.attrs.get("retry", ""))
     time_limit, retry = _TEST_TIME_LIMIT, 0
     if limit_text:
-        try:
-            time_limit = float(limit_text)
-        except ValueError:
-            raise reader.fail(
-                context, element, f"'time-limit' must be a number: [{limit_text}]"
-            ) from None
+        time_limit = reader.number(context, element, float, "time-limit", limit_text)
         if time_limit <= 0.0:
             raise reader.fail(context, element, "'time-limit' must be a positive number")
     if retry_text:
-        try:
-            retry = int(retry_text)
-        except ValueError:
-            raise reader.fail(
-                context, element, f"'retry' must be a number: [{retry_text}]"
-            ) from None
+        retry = reader.number(context, element, int, "retry", retry_text)
     return test_name, time_limit, retry
 
 
