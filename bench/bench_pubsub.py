@@ -10,6 +10,9 @@ with rosx under this Python, and prints:
 * latency from ``publish`` to the callback at 1 kHz: p50 and p99, the first messages ignored
   as a warm-up, medians over several rounds with rospy and rosx alternating;
 * 1 MiB messages (``sensor_msgs/Image``): bytes/s delivered;
+* publisher and subscriber in one process (``inproc``: Twist flood and latency at 1 kHz): rospy
+  has one node per process, its publisher and subscriber talking over loopback TCPROS; rosx
+  has two `Node` objects linked in-process (``ROSX_INTRAPROCESS=0``: over TCPROS, shown too);
 
 and the ratios rosx/rospy. Run:
 ``python bench/bench_pubsub.py [--quick] [--only CASE] [--rounds N]``.
@@ -36,6 +39,8 @@ API_ROSPY = """
 import rospy
 def make_node(name):
     rospy.init_node(name, disable_signals=True)
+def second_node(name):
+    pass  # one node per process
 def publisher(topic, cls, queue_size):
     return rospy.Publisher(topic, cls, queue_size=queue_size)
 def subscriber(topic, cls, cb, queue_size):
@@ -53,10 +58,64 @@ from rosx.msg.codec.classes import get_message_class as msg_class
 _node = []
 def make_node(name):
     _node.append(Node(name, master_uri=os.environ['ROS_MASTER_URI']).start())
+second_node = make_node
 def publisher(topic, cls, queue_size):
     return _node[0].advertise(topic, cls, queue_size=queue_size)
 def subscriber(topic, cls, cb, queue_size):
-    return _node[0].subscribe(topic, cls, cb, queue_size=queue_size)
+    return _node[-1].subscribe(topic, cls, cb, queue_size=queue_size)
+"""
+
+# Publisher and subscriber in one process: rospy's one node, or two rosx nodes.
+INPROC = """
+import sys, time, json, threading
+count, pub_queue, sub_queue = int(sys.argv[1]), json.loads(sys.argv[2]), json.loads(sys.argv[3])
+period, warmup = float(sys.argv[4]), int(sys.argv[5])
+make_node('bench_inproc_pub')
+second_node('bench_inproc_sub')
+cls = msg_class('geometry_msgs/Twist')
+state = {'n': 0, 'first': 0.0, 'last': 0.0}
+lat = []
+done = threading.Event()
+clock = time.time
+def cb(msg):
+    now = clock()
+    if state['n'] == 0:
+        state['first'] = now
+    state['n'] += 1
+    state['last'] = now
+    if msg.linear.y >= warmup:
+        lat.append(now - msg.linear.x)
+    if msg.linear.y == count - 1:
+        done.set()
+sub = subscriber('/bench_inproc', cls, cb, sub_queue)
+pub = publisher('/bench_inproc', cls, pub_queue)
+while pub.get_num_connections() == 0:
+    time.sleep(0.01)
+time.sleep(0.5)
+msg = cls()
+start = clock()
+for i in range(count):
+    msg.linear.x = clock()
+    msg.linear.y = i
+    pub.publish(msg)
+    if period:
+        time.sleep(period)
+pub_rate = count / (clock() - start)
+deadline = time.monotonic() + 120
+while not done.is_set() and time.monotonic() < deadline:
+    before = state['n']
+    done.wait(3.0)
+    if state['n'] == before:
+        break
+span = max(state['last'] - state['first'], 1e-9)
+lat.sort()
+result = {'received': state['n'], 'rate': state['n'] / span, 'pub_rate': pub_rate}
+if lat:
+    result['p50'] = lat[len(lat) // 2] * 1e6
+    result['p99'] = lat[min(len(lat) - 1, int(len(lat) * 0.99))] * 1e6
+print(json.dumps(result), flush=True)
+import os
+os._exit(0)
 """
 
 PUBLISHER = """
@@ -205,17 +264,125 @@ def run_case(
     return result
 
 
+def run_inproc(
+    lib: str,
+    master: str,
+    count: int,
+    pub_queue: int | None,
+    sub_queue: int | None,
+    period: float,
+    warmup: int = 0,
+) -> dict[str, float]:
+    """One process publishing to itself; ``lib`` ``rosx-tcp`` is rosx without in-process links."""
+    python = ROS1_PYTHON if lib == "rospy" else sys.executable
+    api = API_ROSPY if lib == "rospy" else API_ROSX
+    env = dict(os.environ, ROS_MASTER_URI=master, PYTHONPATH=str(ROOT))
+    if lib == "rospy":
+        env["ROS_PACKAGE_PATH"] = "/usr/share"
+    if lib == "rosx-tcp":
+        env["ROSX_INTRAPROCESS"] = "0"
+    argv = [str(count), json.dumps(pub_queue), json.dumps(sub_queue), str(period), str(warmup)]
+    done = subprocess.run(
+        [python, "-c", api + INPROC, *argv],
+        capture_output=True,
+        env=env,
+        cwd=ROOT,
+        text=True,
+        timeout=240,
+        check=False,
+    )
+    result: dict[str, float] = json.loads(done.stdout.strip().splitlines()[-1])
+    result["lost"] = count - result["received"]
+    return result
+
+
+InprocRow = tuple[str, dict[str, dict[str, float]], str]
+
+
+def inproc_cases(
+    master: str, small: int, latency: int, rounds: int, warmup: int
+) -> list[InprocRow]:
+    """The one-process cases, rospy, rosx over TCPROS and rosx in-process alternating."""
+    rows: list[InprocRow] = []
+    cases = [
+        ("Twist flood, one process (queue_size=100 both)", small, 100, 100, 0.0, "rate"),
+        ("Twist at 1 kHz, one process, latency", latency, 100, None, 0.001, "p50"),
+    ]
+    for title, count, pq, sq, period, key in cases:
+        libs: dict[str, list[dict[str, float]]] = {"rospy": [], "rosx-tcp": [], "rosx": []}
+        for _ in range(rounds):
+            for lib, results in libs.items():
+                results.append(run_inproc(lib, master, count, pq, sq, period, warmup))
+        merged: dict[str, dict[str, float]] = {}
+        for lib, results in libs.items():
+            res = dict(results[-1])
+            for field in ("p50", "p99", "rate", "received", "lost"):
+                if field in res:
+                    res[field] = median([r[field] for r in results])
+            res["rounds"] = [round(r[key]) for r in results]  # type: ignore[assignment]
+            merged[lib] = res
+        rows.append((title, merged, key))
+    return rows
+
+
+def print_inproc(rows: list[InprocRow], rounds: int) -> None:
+    """Print the one-process cases."""
+    for title, by_lib, key in rows:
+        print(title)
+        for lib, res in by_lib.items():
+            parts = [f"received {int(res['received'])}", f"lost {int(res['lost'])}"]
+            parts.append(f"{res['rate']:,.0f} msgs/s")
+            if key == "p50":
+                parts.append(f"latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us")
+            parts.append(f"(median of {rounds} rounds: {res['rounds']})")
+            print(f"  {lib:8}: " + ", ".join(parts))
+        base, mine = by_lib["rospy"], by_lib["rosx"]
+        if key == "p50":
+            print(
+                f"  ratio rosx/rospy latency p50: {mine['p50'] / base['p50']:.2f}, "
+                f"p99: {mine['p99'] / base['p99']:.2f}"
+            )
+        else:
+            print(f"  ratio rosx/rospy: {mine['rate'] / base['rate']:.1f}x (target >= 20)")
+
+
 def median(values: list[float]) -> float:
     ordered = sorted(values)
     mid = len(ordered) // 2
     return ordered[mid] if len(ordered) % 2 else (ordered[mid - 1] + ordered[mid]) / 2
 
 
+def print_rows(
+    rows: list[tuple[str, dict[str, float], dict[str, float], str]], rounds: int
+) -> None:
+    """Print the two-process cases."""
+    for title, ros, rx, key in rows:
+        print(title)
+        for lib, res in (("rospy", ros), ("rosx ", rx)):
+            parts = [f"received {int(res['received'])}", f"lost {int(res['lost'])}"]
+            if key == "bytes_rate":
+                parts.append(f"{res['bytes_rate'] / 2**30:.2f} GiB/s")
+            else:
+                parts.append(f"{res['rate']:,.0f} msgs/s")
+            if key == "p50":
+                parts.append(f"latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us")
+            if "rounds_p50" in res:
+                parts.append(f"(median of {rounds} rounds, p50s {res['rounds_p50']})")
+            print(f"  {lib}: " + ", ".join(parts))
+        base, mine = ros[key], rx[key]
+        if key == "p50":
+            print(f"  ratio rosx/rospy latency p50: {mine / base:.2f} (target <= 0.5)")
+        else:
+            print(f"  ratio rosx/rospy: {mine / base:.1f}x")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer messages")
     parser.add_argument(
-        "--only", choices=("async", "sync", "latency", "image"), help="run only this case"
+        "--only",
+        choices=("async", "sync", "latency", "image", "inproc"),
+        help="run only this case",
     )
     parser.add_argument(
         "--rounds", type=int, default=5, help="latency rounds, rospy and rosx alternating"
@@ -227,6 +394,7 @@ def main() -> None:
     rounds = max(1, args.rounds if not args.quick else min(args.rounds, 2))
     proc, master = start_master()
     rows: list[tuple[str, dict[str, float], dict[str, float], str]] = []
+    inproc_rows: list[InprocRow] = []
     try:
         cases = [
             (
@@ -266,6 +434,8 @@ def main() -> None:
                 "bytes_rate",
             ),
         ]
+        if not args.only or args.only == "inproc":
+            inproc_rows = inproc_cases(master, small, latency, rounds, warmup)
         for name, title, kind, count, pq, period, key in cases:
             if args.only and name != args.only:
                 continue
@@ -291,24 +461,8 @@ def main() -> None:
     finally:
         proc.terminate()
         proc.wait()
-    for title, ros, rx, key in rows:
-        print(title)
-        for lib, res in (("rospy", ros), ("rosx ", rx)):
-            parts = [f"received {int(res['received'])}", f"lost {int(res['lost'])}"]
-            if key == "bytes_rate":
-                parts.append(f"{res['bytes_rate'] / 2**30:.2f} GiB/s")
-            else:
-                parts.append(f"{res['rate']:,.0f} msgs/s")
-            if key == "p50":
-                parts.append(f"latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us")
-            if "rounds_p50" in res:
-                parts.append(f"(median of {rounds} rounds, p50s {res['rounds_p50']})")
-            print(f"  {lib}: " + ", ".join(parts))
-        base, mine = ros[key], rx[key]
-        if key == "p50":
-            print(f"  ratio rosx/rospy latency p50: {mine / base:.2f} (target <= 0.5)")
-        else:
-            print(f"  ratio rosx/rospy: {mine / base:.1f}x")
+    print_inproc(inproc_rows, rounds)
+    print_rows(rows, rounds)
 
 
 if __name__ == "__main__":
