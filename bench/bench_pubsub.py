@@ -305,7 +305,22 @@ def inproc_cases(
     """The one-process cases, rospy, rosx over TCPROS and rosx in-process alternating."""
     rows: list[InprocRow] = []
     cases = [
-        ("Twist flood, one process (queue_size=100 both)", small, 100, 100, 0.0, "rate"),
+        (
+            "Twist flood, one process, async publisher (queue_size=100)",
+            small,
+            100,
+            None,
+            0.0,
+            "rate",
+        ),
+        (
+            "Twist flood, one process, sync publisher (queue_size=None)",
+            small,
+            None,
+            None,
+            0.0,
+            "rate",
+        ),
         ("Twist at 1 kHz, one process, latency", latency, 100, None, 0.001, "p50"),
     ]
     for title, count, pq, sq, period, key in cases:

@@ -24,6 +24,7 @@ import struct
 import threading
 from typing import TYPE_CHECKING
 
+from rosx.msg.codec.clone import clone
 from rosx.node.incoming import connection_ids
 from rosx.node.outgoing import OutgoingStream, configure_nodelay
 from rosx.node.receiver import LocalMessage
@@ -129,8 +130,6 @@ class Publication:
                 self.seq += 1
                 msg.header.seq = self.seq
         if self.local_links and not self.closed:
-            from rosx.msg.codec.clone import clone  # noqa: PLC0415 - in-process path only
-
             if self.info.latching:
                 # One copy kept as the latch; every callback gets a copy of it. As for frames,
                 # a subscriber attached meanwhile gets either this message or the latch.

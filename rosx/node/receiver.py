@@ -39,6 +39,8 @@ import threading
 from collections import deque
 from typing import TYPE_CHECKING, Any
 
+from rosx.msg.codec.clone import clone
+
 if TYPE_CHECKING:
     from collections.abc import Callable
     from concurrent.futures import Executor
@@ -75,10 +77,12 @@ class LocalMessage:
 
     def messages(self, decoders: list[Decode], header: dict[str, str]) -> list[Any]:
         """What each of ``decoders``' callbacks receives, in order."""
-        from rosx.msg.codec.clone import clone  # noqa: PLC0415 - the in-process path only
-
         msg = self.msg
         cls = msg.__class__
+        if len(decoders) == 1 and not self.kept and getattr(decoders[0], "msg_class", None) is cls:
+            self.kept = True  # the usual case: one callback takes the copy made at publish
+            msg._connection_header = header
+            return [msg]
         out: list[Any] = []
         frame: bytes | None = None
         for decode in decoders:

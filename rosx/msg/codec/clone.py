@@ -52,22 +52,88 @@ def _value(value: Any) -> Any:
 
 
 def _compile(cls: type) -> Callable[[Any], Any]:
-    slots = [slot for slot in _all_slots(cls) if slot != "_connection_header"]
-    lines = ["def clone(m):", "    n = new(cls)"]
-    for slot in slots:
-        lines.append(f"    v = m.{slot}")
-        lines.append(f"    n.{slot} = v if v.__class__ in shared else value(v)")
-    lines.append("    return n")
     namespace: dict[str, Any] = {
         "new": object.__new__,
-        "cls": cls,
         "shared": frozenset(_SHARED),
         "value": _value,
     }
-    exec("\n".join(lines), namespace)  # source built from the class's slot names only
+    lines = ["def clone(m):"]
+    _write(lines, namespace, cls, "m", "n", 1)
+    lines.append("    return n")
+    exec("\n".join(lines), namespace)  # source built from the class's field names only
     function: Callable[[Any], Any] = namespace["clone"]
     _FUNCTIONS[cls] = function
     return function
+
+
+def _write(
+    lines: list[str], namespace: dict[str, Any], cls: type, src: str, dst: str, depth: int
+) -> None:
+    """Lines copying ``src`` (an instance of ``cls``) into a new ``dst``; nested messages of the
+    declared class are copied inline, anything else through `_value`."""
+    pad = "    " * depth
+    name = f"C{len(namespace)}"
+    namespace[name] = cls
+    lines.append(f"{pad}{dst} = new({name})")
+    slots = [slot for slot in _all_slots(cls) if slot != "_connection_header"]
+    types: list[str] = list(getattr(cls, "_slot_types", []))
+    resolver = getattr(cls, "_resolver", None)
+    if (isinstance(cls, type) and issubclass(cls, TVal)) or len(types) != len(slots):
+        types = ["int32"] * len(slots) if issubclass(cls, TVal) else ["?"] * len(slots)
+    for index, (slot, kind) in enumerate(zip(slots, types, strict=True)):
+        value = f"v{depth}_{index}"
+        lines.append(f"{pad}{value} = {src}.{slot}")
+        nested = _nested_class(kind, resolver)
+        if kind in _SCALARS:
+            lines.append(f"{pad}{dst}.{slot} = {value}")  # numbers and text: immutable
+        elif nested is not None and depth < _INLINE_DEPTH:
+            inner = f"w{depth}_{index}"
+            klass = f"C{len(namespace)}"
+            namespace[klass] = nested
+            lines.append(f"{pad}if {value}.__class__ is {klass}:")
+            _write(lines, namespace, nested, value, inner, depth + 1)
+            lines.append(f"{pad}    {dst}.{slot} = {inner}")
+            lines.append(f"{pad}else:")
+            lines.append(f"{pad}    {dst}.{slot} = value({value})")
+        else:
+            lines.append(
+                f"{pad}{dst}.{slot} = {value} if {value}.__class__ in shared else value({value})"
+            )
+
+
+_SCALARS = frozenset(
+    [
+        "bool",
+        "byte",
+        "char",
+        "int8",
+        "uint8",
+        "int16",
+        "uint16",
+        "int32",
+        "uint32",
+        "int64",
+        "uint64",
+        "float32",
+        "float64",
+        "string",
+    ]
+)
+_INLINE_DEPTH = 4
+
+
+def _nested_class(kind: str, resolver: Any) -> type | None:
+    if kind in ("time", "duration"):
+        from rosx.msg.codec.rostime import Duration, Time  # noqa: PLC0415
+
+        return Time if kind == "time" else Duration
+    if "[" in kind or "/" not in kind or resolver is None:
+        return None
+    try:
+        nested: type = resolver.class_of(kind)
+    except Exception:  # an unknown type: copied generically
+        return None
+    return nested
 
 
 def _all_slots(cls: type) -> list[str]:
