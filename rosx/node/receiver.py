@@ -49,12 +49,12 @@ if TYPE_CHECKING:
     from rosx.node.local import LocalLink
     from rosx.transport.loop_thread import LoopThread
 
-    Decode = Callable[[bytes, dict[str, str]], Any]
+    Decode = Callable[[bytes | memoryview, dict[str, str]], Any]
     #: A callback and the decoder of what it receives.
     Entry = tuple[Callable[[Any], object], Decode]
     #: A frame (or a message from this process), the header of its connection, and the only
     #: entry to run it for (or None: all).
-    Item = tuple["bytes | LocalMessage", dict[str, str], Entry | None]
+    Item = tuple["bytes | memoryview | LocalMessage", dict[str, str], Entry | None]
 
 #: With an unbounded queue, a synchronous in-process publisher waits while more wait than this.
 LOCAL_HIGH_WATER = 10_000
@@ -146,7 +146,10 @@ class Receiver:
         self.entries = tuple(e for e in self.entries if e is not entry)
 
     def put(
-        self, frame: bytes | LocalMessage, header: dict[str, str], only: Entry | None = None
+        self,
+        frame: bytes | memoryview | LocalMessage,
+        header: dict[str, str],
+        only: Entry | None = None,
     ) -> None:
         """Queue one frame for every callback, or only for ``only`` (a latched message).
 

@@ -76,18 +76,20 @@ class RawMessage:
         return len(self._buff)
 
 
-def _raw(frame: bytes, header: dict[str, str]) -> RawMessage:
-    return RawMessage(frame, header)
+def _raw(frame: bytes | memoryview, header: dict[str, str]) -> RawMessage:
+    return RawMessage(frame if isinstance(frame, bytes) else bytes(frame), header)
 
 
-def message_decoder(cls: type[Message]) -> Callable[[bytes, dict[str, str]], Message]:
+def message_decoder(
+    cls: type[Message],
+) -> Callable[[bytes | memoryview, dict[str, str]], Message]:
     """Decode frames of ``cls``: a fresh instance per frame, ``_connection_header`` set."""
     from rosx.msg.codec.codegen import variant  # noqa: PLC0415 - generated on first use
 
     fresh = variant(cls, "deserialize_fresh")
     new = object.__new__
 
-    def decode(frame: bytes, header: dict[str, str]) -> Message:
+    def decode(frame: bytes | memoryview, header: dict[str, str]) -> Message:
         msg: Message = fresh(new(cls), frame)
         msg._connection_header = header
         return msg
@@ -141,7 +143,9 @@ class Subscription:
         self.closed = False
 
     @staticmethod
-    def decoder(msg_class: type[Message] | None) -> Callable[[bytes, dict[str, str]], Any]:
+    def decoder(
+        msg_class: type[Message] | None,
+    ) -> Callable[[bytes | memoryview, dict[str, str]], Any]:
         """How frames become what a callback receives: ``msg_class`` messages, or (``None``)
         `RawMessage` objects."""
         return _raw if msg_class is None else message_decoder(msg_class)

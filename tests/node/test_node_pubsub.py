@@ -356,3 +356,20 @@ def _srv(name: str) -> Any:
     from rosx.msg.codec.classes import get_service_class
 
     return get_service_class(name)
+
+
+def test_large_and_small_messages_arrive_whole_and_in_order(
+    make_node: Callable[..., Node],
+) -> None:
+    a, b = make_node("big_pub"), make_node("big_sub")
+    got: list[Any] = []
+    sub = b.subscribe("/big", String, got.append)
+    pub = a.advertise("/big", String, queue_size=None)
+    wait_for(connected(pub, sub))
+    sizes = [10, 3 << 20, 70_000, 5, 1 << 20, 64 * 1024, 64 * 1024 - 5, 200]
+    texts = [chr(ord("a") + i) * size for i, size in enumerate(sizes)]
+    for text in texts:
+        pub.publish(String(data=text))
+    wait_for(lambda: len(got) == len(texts))
+    assert [m.data for m in got] == texts
+    assert all(type(m.data) is str for m in got)
