@@ -7,15 +7,20 @@ with rosx under this Python, and prints:
 * small messages (``geometry_msgs/Twist``, 48 bytes) sent as fast as the publisher can: msgs/s
   delivered and messages lost, with rospy's asynchronous publisher (``queue_size=100``) and with
   its synchronous one (``queue_size=None``) against rosx's equivalents;
-* latency from ``publish`` to the callback at 1 kHz: p50 and p99, the first messages ignored
-  as a warm-up, medians over several rounds with rospy and rosx alternating;
-* 1 MiB messages (``sensor_msgs/Image``): bytes/s delivered;
+* latency from ``publish`` to the callback at 1 kHz and in bursts of 10 every 10 ms: p50 and
+  p99, the first messages ignored as a warm-up, medians over several rounds with rospy and rosx
+  alternating;
+* 1 MiB messages (``sensor_msgs/Image``) and 10 MiB ``sensor_msgs/PointCloud2``: bytes/s
+  delivered, several rounds;
+* fan-out and fan-in: one publisher to 10 subscriber processes and 10 publishers to one, Twist
+  and 1 MiB images: delivered msgs/s or bytes/s summed over subscribers, and the slowest
+  subscriber's rate;
 * publisher and subscriber in one process (``inproc``: Twist flood and latency at 1 kHz): rospy
   has one node per process, its publisher and subscriber talking over loopback TCPROS; rosx
   has two `Node` objects linked in-process (``ROSX_INTRAPROCESS=0``: over TCPROS, shown too);
 
 and the ratios rosx/rospy. Run:
-``python bench/bench_pubsub.py [--quick] [--only CASE] [--rounds N]``.
+``python bench/bench_pubsub.py [--quick] [--only CASE] [--rounds N] [--fast-rounds N]``.
 """
 
 from __future__ import annotations
@@ -118,41 +123,57 @@ import os
 os._exit(0)
 """
 
-PUBLISHER = """
+KINDS = """
+CLASSES = {'twist': 'geometry_msgs/Twist', 'image': 'sensor_msgs/Image',
+           'cloud': 'sensor_msgs/PointCloud2'}
+"""
+
+PUBLISHER = (
+    KINDS
+    + """
 import sys, time, json
 count, queue_size = int(sys.argv[1]), json.loads(sys.argv[2])
 period, kind = float(sys.argv[3]), sys.argv[4]
-make_node('bench_pub')
-cls = msg_class('sensor_msgs/Image' if kind == 'image' else 'geometry_msgs/Twist')
+subscribers, name = int(sys.argv[5]), sys.argv[6]
+make_node(name)
+cls = msg_class(CLASSES[kind])
 pub = publisher('/bench', cls, queue_size)
-while pub.get_num_connections() == 0:
+while pub.get_num_connections() < subscribers:
     time.sleep(0.01)
 time.sleep(0.5)
 msg = cls()
 if kind == 'image':
     msg.height, msg.width, msg.encoding, msg.step = 512, 512, 'rgba8', 2048
     msg.data = bytes(1 << 20)
+elif kind == 'cloud':
+    msg.height, msg.width, msg.point_step, msg.row_step = 1, 655360, 16, 10485760
+    msg.data = bytes(10 << 20)
 clock = time.time
 start = clock()
 for i in range(count):
-    if kind == 'image':
+    if kind != 'twist':
         msg.header.frame_id = str(i)
     else:
         msg.linear.x = clock()
         msg.linear.y = i
     pub.publish(msg)
-    if period:
+    if period > 0:
         time.sleep(period)
+    elif period < 0 and i % 10 == 9:  # bursts of 10
+        time.sleep(-period)
 print(json.dumps({'pub_rate': count / (clock() - start)}), flush=True)
 time.sleep(1.0)
 """
+)
 
-SUBSCRIBER = """
+SUBSCRIBER = (
+    KINDS
+    + """
 import sys, time, json, threading
 count, queue_size, kind = int(sys.argv[1]), json.loads(sys.argv[2]), sys.argv[3]
-warmup = int(sys.argv[4])
-make_node('bench_sub')
-cls = msg_class('sensor_msgs/Image' if kind == 'image' else 'geometry_msgs/Twist')
+warmup, publishers, name = int(sys.argv[4]), int(sys.argv[5]), sys.argv[6]
+make_node(name)
+cls = msg_class(CLASSES[kind])
 state = {'n': 0, 'first': 0.0, 'last': 0.0, 'bytes': 0}
 lat = []
 done = threading.Event()
@@ -163,14 +184,14 @@ def cb(msg):
         state['first'] = now
     state['n'] += 1
     state['last'] = now
-    if kind == 'image':
+    if kind != 'twist':
         state['bytes'] += len(msg.data)
-        last = int(msg.header.frame_id) == count - 1
+        last = int(msg.header.frame_id) == count - 1 and publishers == 1
     else:
         if msg.linear.y >= warmup:
             lat.append(now - msg.linear.x)
-        last = msg.linear.y == count - 1
-    if last:
+        last = msg.linear.y == count - 1 and publishers == 1
+    if last or state['n'] == count * publishers:
         done.set()
 sub = subscriber('/bench', cls, cb, queue_size)
 print('ready', flush=True)
@@ -189,6 +210,7 @@ if lat:
     result['samples'] = len(lat)
 print(json.dumps(result), flush=True)
 """
+)
 
 
 def free_port() -> int:
@@ -225,42 +247,55 @@ def run_case(
     sub_queue: int | None,
     period: float,
     warmup: int = 0,
+    *,
+    publishers: int = 1,
+    subscribers: int = 1,
 ) -> dict[str, float]:
+    """Run publisher and subscriber processes; with several subscribers, ``rate`` and
+    ``bytes_rate`` are their sum and ``slowest`` the lowest subscriber's ``rate``."""
     python = ROS1_PYTHON if lib == "rospy" else sys.executable
     api = API_ROSPY if lib == "rospy" else API_ROSX
     env = dict(os.environ, ROS_MASTER_URI=master, PYTHONPATH=str(ROOT))
     if lib == "rospy":
         env["ROS_PACKAGE_PATH"] = "/usr/share"
-    sub = subprocess.Popen(
-        [python, "-c", api + SUBSCRIBER, str(count), json.dumps(sub_queue), kind, str(warmup)],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.DEVNULL,
-        env=env,
-        cwd=ROOT,
-        text=True,
-    )
-    assert sub.stdout is not None
-    sub.stdout.readline()  # "ready"
-    pub = subprocess.Popen(
-        [python, "-c", api + PUBLISHER, str(count), json.dumps(pub_queue), str(period), kind],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.DEVNULL,
-        env=env,
-        cwd=ROOT,
-        text=True,
-    )
+
+    def spawn(script: str, *argv: object) -> subprocess.Popen[str]:
+        return subprocess.Popen(
+            [python, "-c", api + script, *map(str, argv)],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL,
+            env=env,
+            cwd=ROOT,
+            text=True,
+        )
+
+    subs = [
+        spawn(SUBSCRIBER, count, json.dumps(sub_queue), kind, warmup, publishers, f"bench_sub{i}")
+        for i in range(subscribers)
+    ]
+    for sub in subs:
+        assert sub.stdout is not None
+        sub.stdout.readline()  # "ready"
+    pubs = [
+        spawn(PUBLISHER, count, json.dumps(pub_queue), period, kind, subscribers, f"bench_pub{i}")
+        for i in range(publishers)
+    ]
     try:
-        out, _ = sub.communicate(timeout=180)
-        pub_out, _ = pub.communicate(timeout=30)
+        outs = [sub.communicate(timeout=240)[0] for sub in subs]
+        pub_outs = [pub.communicate(timeout=60)[0] for pub in pubs]
     finally:
-        for proc in (sub, pub):
+        for proc in subs + pubs:
             if proc.poll() is None:
                 proc.kill()
                 proc.wait()
-    result: dict[str, float] = json.loads(out.strip().splitlines()[-1])
-    if pub_out.strip():
-        result.update(json.loads(pub_out.strip().splitlines()[-1]))
-    result["lost"] = count - result["received"]
+    each = [json.loads(out.strip().splitlines()[-1]) for out in outs]
+    result: dict[str, float] = dict(each[0])
+    for field in ("received", "rate", "bytes_rate"):
+        result[field] = sum(r[field] for r in each)
+    result["slowest"] = min(r["rate"] for r in each)
+    if pub_outs[0].strip():
+        result.update(json.loads(pub_outs[0].strip().splitlines()[-1]))
+    result["lost"] = count * publishers * subscribers - result["received"]
     return result
 
 
@@ -381,12 +416,17 @@ def print_rows(
                 parts.append(f"{res['rate']:,.0f} msgs/s")
             if key == "p50":
                 parts.append(f"latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us")
-            if "rounds_p50" in res:
-                parts.append(f"(median of {rounds} rounds, p50s {res['rounds_p50']})")
+            if res["slowest"] != res["rate"]:
+                parts.append(f"slowest subscriber {res['slowest']:,.0f} msgs/s")
+            rounds_done = len(res["rounds"])  # type: ignore[arg-type]
+            parts.append(f"(median of {rounds_done}: {res['rounds']})")
             print(f"  {lib}: " + ", ".join(parts))
         base, mine = ros[key], rx[key]
         if key == "p50":
-            print(f"  ratio rosx/rospy latency p50: {mine / base:.2f} (target <= 0.5)")
+            print(
+                f"  ratio rosx/rospy latency p50: {mine / base:.2f} (target <= 0.4), "
+                f"p99: {rx['p99'] / ros['p99']:.2f} (target <= 0.5)"
+            )
         else:
             print(f"  ratio rosx/rospy: {mine / base:.1f}x")
 
@@ -396,39 +436,52 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true", help="fewer messages")
     parser.add_argument(
         "--only",
-        choices=("async", "sync", "latency", "image", "inproc"),
+        choices=("async", "sync", "latency", "image", "inproc", "fanout"),
         help="run only this case",
     )
     parser.add_argument(
-        "--rounds", type=int, default=5, help="latency rounds, rospy and rosx alternating"
+        "--rounds",
+        type=int,
+        default=5,
+        help="rounds of the latency, one-process and large-message cases, libraries alternating",
+    )
+    parser.add_argument(
+        "--fast-rounds", type=int, default=1, help="rounds of the floods and fan-out cases"
     )
     args = parser.parse_args()
     scale = 0.2 if args.quick else 1.0
     small, latency, images = int(200_000 * scale), int(3000 * scale), int(1000 * scale)
     warmup = latency // 6
     rounds = max(1, args.rounds if not args.quick else min(args.rounds, 2))
+    fast_rounds = max(1, args.fast_rounds if not args.quick else 1)
     proc, master = start_master()
     rows: list[tuple[str, dict[str, float], dict[str, float], str]] = []
     inproc_rows: list[InprocRow] = []
     try:
-        cases = [
+        # name, title, kind, messages per publisher, publisher queue, period, key,
+        # publishers, subscribers
+        cases: list[tuple[str, str, str, int, int | None, float, str, int, int]] = [
             (
                 "async",
-                "Twist flood, async publisher (queue_size=100 both)",
+                "Twist flood, async publisher (queue_size=100)",
                 "twist",
                 small,
                 100,
                 0.0,
                 "rate",
+                1,
+                1,
             ),
             (
                 "sync",
-                "Twist flood, sync publisher (queue_size=None both)",
+                "Twist flood, sync publisher (queue_size=None)",
                 "twist",
                 small,
                 None,
                 0.0,
                 "rate",
+                1,
+                1,
             ),
             (
                 "latency",
@@ -438,6 +491,19 @@ def main() -> None:
                 100,
                 0.001,
                 "p50",
+                1,
+                1,
+            ),
+            (
+                "latency",
+                "Twist in bursts of 10 every 10 ms, latency (queue_size=100)",
+                "twist",
+                latency,
+                100,
+                -0.01,
+                "p50",
+                1,
+                1,
             ),
             (
                 "image",
@@ -447,30 +513,100 @@ def main() -> None:
                 None,
                 0.0,
                 "bytes_rate",
+                1,
+                1,
+            ),
+            (
+                "image",
+                "10 MiB PointCloud2 flood (queue_size=None)",
+                "cloud",
+                images // 50,
+                None,
+                0.0,
+                "bytes_rate",
+                1,
+                1,
+            ),
+            (
+                "fanout",
+                "Twist, 1 publisher -> 10 subscribers (queue_size=100)",
+                "twist",
+                small // 10,
+                100,
+                0.0,
+                "rate",
+                1,
+                10,
+            ),
+            (
+                "fanout",
+                "Twist, 10 publishers -> 1 subscriber (queue_size=100)",
+                "twist",
+                small // 10,
+                100,
+                0.0,
+                "rate",
+                10,
+                1,
+            ),
+            (
+                "fanout",
+                "1 MiB Image, 1 publisher -> 10 subscribers (queue_size=None)",
+                "image",
+                images // 20,
+                None,
+                0.0,
+                "bytes_rate",
+                1,
+                10,
+            ),
+            (
+                "fanout",
+                "1 MiB Image, 10 publishers -> 1 subscriber (queue_size=None)",
+                "image",
+                images // 20,
+                None,
+                0.0,
+                "bytes_rate",
+                10,
+                1,
             ),
         ]
         if not args.only or args.only == "inproc":
             inproc_rows = inproc_cases(master, small, latency, rounds, warmup)
-        for name, title, kind, count, pq, period, key in cases:
+        for name, title, kind, count, pq, period, key, npubs, nsubs in cases:
             if args.only and name != args.only:
                 continue
-            if key != "p50":
-                ros = run_case("rospy", master, kind, count, pq, None, period)
-                rx = run_case("rosx", master, kind, count, pq, None, period)
-                rows.append((title, ros, rx, key))
-                continue
-            # Latency: several rounds, alternating, the first `warmup` messages of each
-            # ignored; each library's figures are the medians over its rounds.
+            # Rounds alternating rospy and rosx; for latency the first `warmup` messages of
+            # each are ignored. Each library's figures are the medians over its rounds.
             runs: dict[str, list[dict[str, float]]] = {"rospy": [], "rosx": []}
-            for _ in range(rounds):
+            for _ in range(rounds if name in ("latency", "image") else fast_rounds):
                 for lib, results in runs.items():
-                    results.append(run_case(lib, master, kind, count, pq, None, period, warmup))
+                    results.append(
+                        run_case(
+                            lib,
+                            master,
+                            kind,
+                            count,
+                            pq,
+                            None,
+                            period,
+                            warmup if key == "p50" else 0,
+                            publishers=npubs,
+                            subscribers=nsubs,
+                        )
+                    )
             merged = []
             for lib in ("rospy", "rosx"):
                 res = dict(runs[lib][-1])
-                for field in ("p50", "p99", "rate", "received", "lost"):
-                    res[field] = median([r[field] for r in runs[lib]])
-                res["rounds_p50"] = [round(r["p50"]) for r in runs[lib]]  # type: ignore[assignment]
+                for field in ("p50", "p99", "rate", "bytes_rate", "received", "lost", "slowest"):
+                    if field in res:
+                        res[field] = median([r[field] for r in runs[lib]])
+                scale_key = 2**30 if key == "bytes_rate" else 1
+                res["rounds"] = [  # type: ignore[assignment]
+                    round(r[key] / scale_key, 2) if key == "bytes_rate" else round(r[key])
+                    for r in runs[lib]
+                ]
                 merged.append(res)
             rows.append((title, merged[0], merged[1], key))
     finally:
