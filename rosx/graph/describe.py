@@ -6,7 +6,8 @@ summaries of a `rosx.graph.state.GraphState`.
 
 - `node_description`: the master's view of a node (publications with their types,
   subscriptions, services); `node_connections`: what the node says of itself (``getPid``,
-  ``getBusInfo``, ROS wiki Slave_API), each peer named as the master knows it.
+  ``getBusInfo``, ROS wiki Slave_API), each peer named as the master knows it; `node_info`:
+  both, as ``rosnode info`` prints them for one node.
 - `topic_description`: a topic's type, publishers and subscribers with their URIs.
 - `topic_summaries`, `node_summaries`: one row per topic or node of a graph state.
 
@@ -111,6 +112,21 @@ def node_connections(master: MasterClient, uri: str) -> str:
                 text += " ({} - {}) [{}]".format(*match.groups())
         text += f"\n    * transport: {transport}\n"
     return text
+
+
+def node_info(master: MasterClient, node: str) -> str:
+    """``rosnode info``'s text for ``node`` (without its dashed line): the master's view, then,
+    after ``contacting node …``, what the node says of itself.
+
+    Raises:
+        NodeContactError: the node does not answer.
+        MasterError: the master or the node refused a call.
+    """
+    text = node_description(master, node)
+    uri = master.lookup_node(node)
+    if uri is None:
+        return text + f"\ncannot contact [{node}]: unknown node\n"
+    return text + f"\n\ncontacting node {uri} ...\n" + node_connections(master, uri)
 
 
 def _peer(

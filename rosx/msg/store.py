@@ -4,8 +4,11 @@ Sources, first match wins per type:
 
 1. packages on the package path (``ROS_PACKAGE_PATH``): their ``msg/*.msg`` and ``srv/*.srv``,
    the first package of a name on the path winning, as with rospack;
-2. the standard types: rosbags' ROS 1 Noetic messages, the standard packages' services that
-   rosbags does not carry (``rosx/msg/interfaces``) and turtlesim's types (``rosx_turtle``).
+2. the packages shipped with rosx (`rosx.packages.crawl`): the standard packages' original
+   ``.msg`` and ``.srv`` files (comments included, for ``rosmsg show -r``), the tutorials' and
+   turtlesim's types;
+3. rosbags' ROS 1 Noetic types, for the types no file defines (their texts rebuilt from field
+   lists, `rosx.msg.standard`).
 
 A package on the path shadows a standard one only for the types it really has: Debian's
 ``libroscpp-dev`` leaves ``/usr/share/roscpp`` with a manifest and no ``msg`` files, and
@@ -20,7 +23,6 @@ from __future__ import annotations
 
 import os
 from collections.abc import Mapping
-from functools import cached_property
 from pathlib import Path
 
 from rosx.msg.md5 import full_text, message_md5, service_md5
@@ -29,8 +31,6 @@ from rosx.msg.spec import MsgSpec, SrvSpec
 from rosx.msg.standard import standard_text, standard_types
 from rosx.packages.crawl import bundled_packages, split_package_path
 from rosx.packages.index import PackageIndex
-
-_INTERFACES = Path(__file__).parent / "interfaces"
 
 
 class UnknownTypeError(LookupError):
@@ -65,11 +65,9 @@ class TypeStore:
         """Packages found on the package path, by name."""
         return self._index.path_packages
 
-    @cached_property
+    @property
     def _bundled_packages(self) -> dict[str, Path]:
-        found = {p.name: p for p in sorted(_INTERFACES.iterdir()) if p.is_dir()}
-        found.update(bundled_packages())
-        return found
+        return bundled_packages()
 
     def package_dir(self, package: str) -> Path | None:
         """The directory of ``package`` when its definitions live in files."""

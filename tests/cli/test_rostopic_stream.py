@@ -303,6 +303,26 @@ def test_pub_latched_stays_until_killed(env: dict[str, str], master: str) -> Non
     )
 
 
+def test_pub_node_follows_its_remapping_arguments(env: dict[str, str], master: str) -> None:
+    """As rospy's init_node: ``__name:=``/``__ns:=`` name the node (as rostest launches it),
+    ``from:=to`` remaps the topic, ``_param:=`` sets a private parameter."""
+    client = XmlRpcClient(timeout=2)
+    argv = ["/remap/from", "std_msgs/String", "hi", "/remap/from:=/remap/to"]
+    result = in_thread(
+        "rostopic", "pub", *argv, "__name:=pubber", "__ns:=/tools", "_hint:=3", environ=env
+    )
+
+    def publishers() -> list[Any]:
+        found: list[Any] = client.call(master, "getSystemState", "/test")[2][0]
+        return found
+
+    wait_for(lambda: ["/remap/to", ["/tools/pubber"]] in publishers(), what="/tools/pubber")
+    assert client.call(master, "getParam", "/test", "/tools/pubber/hint")[2] == 3
+    uri = client.call(master, "lookupNode", "/test", "/tools/pubber")[2]
+    client.call(uri, "shutdown", "/test", "test over")
+    assert result().status == 0
+
+
 @pytest.mark.parametrize(
     ("argv", "status", "err"),
     [

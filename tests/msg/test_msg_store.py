@@ -222,3 +222,35 @@ def test_an_unwritable_cache_folder_costs_only_time(
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     assert "geometry_msgs/Twist" in _fresh_standard_texts()
     assert list(tmp_path.iterdir()) == [tmp_path / "rosx"]
+
+
+def test_the_shipped_definition_files_hash_as_rosbags_field_lists() -> None:
+    """The standard packages' original files (comments included) give the md5 sums the types
+    had from rosbags' field lists alone: shipping the files changed no sum."""
+    from rosx.msg.md5 import message_md5
+    from rosx.msg.parser import parse_msg
+    from rosx.msg.spec import MsgSpec
+    from rosx.msg.standard import standard_text
+    from rosx.packages.crawl import bundled_packages
+
+    store = TypeStore([])
+    sums: dict[str, str] = {}
+
+    def rebuilt(name: str) -> MsgSpec:
+        text = standard_text(name)
+        return parse_msg(name, text) if text is not None else store.msg(name)
+
+    def rebuilt_md5(name: str) -> str:
+        if name not in sums:
+            sums[name] = message_md5(rebuilt(name), rebuilt, rebuilt_md5)
+        return sums[name]
+
+    compared = 0
+    for package, directory in bundled_packages().items():
+        for path in sorted(directory.glob("msg/*.msg")):
+            name = f"{package}/{path.stem}"
+            if standard_text(name) is not None:
+                assert store.md5(name) == rebuilt_md5(name), name
+                assert store.msg(name).text == path.read_text(encoding="utf-8")
+                compared += 1
+    assert compared > 130
