@@ -1,5 +1,5 @@
-"""rosx's terminal UIs in real terminals of 80x24 and 120x40 (tmux): what shows, and that q
-and Ctrl-C quit. Skipped where tmux is not installed."""
+"""rosx's terminal UIs in real terminals of 80x24 and 120x40 (tmux): what shows, that nothing
+is wider than the terminal, and that q and Ctrl-C quit. Skipped where tmux is not installed."""
 
 from __future__ import annotations
 
@@ -8,16 +8,82 @@ from pathlib import Path
 
 import pytest
 
+from rosx_turtle.engine.constants import DEFAULT_BACKGROUND
 from rosx_turtle.sim.host import SimHost
 from tests.support.procs import free_port
-from tests.tui.tmux import Tmux, needs_tmux
+from tests.tui.tmux import Cell, Tmux, needs_tmux
 
 SIZES = [(80, 24), (120, 40)]
+#: How a program's first screen may take to come on a loaded machine (seconds).
+STARTUP = 60.0
+POND_BLUE = ";".join(str(part) for part in DEFAULT_BACKGROUND)
+HALF_BLOCK = "\u2580"
 
 
 def footer(rows: list[str]) -> list[str]:
     """The words of the last row that shows anything."""
     return next(row for row in reversed(rows) if row.strip()).split()
+
+
+def has_words(rows: list[str], *words: str) -> bool:
+    """Whether a row shows ``words`` one after the other."""
+    count = len(words)
+    for row in rows:
+        split = row.split()
+        if any(tuple(split[at : at + count]) == words for at in range(len(split))):
+            return True
+    return False
+
+
+def boxed(rows: list[str], text: str) -> bool:
+    """Whether ``text`` is drawn in a box of its own (a rounded frame one cell around it)."""
+    rule = "\u2500" * (len(text) + 2)
+    for above, row, below in zip(rows, rows[1:], rows[2:], strict=False):
+        at = row.find(f"\u2502 {text} \u2502")
+        end = at + len(text) + 4
+        if (
+            at >= 0
+            and above[at:end] == f"\u256d{rule}\u256e"
+            and below[at:end] == f"\u2570{rule}\u256f"
+        ):
+            return True
+    return False
+
+
+def turtle_in_the_pond(screen: list[list[Cell]]) -> bool:
+    """Whether the pond (a field of half blocks) shows, in its middle, cells of other colours
+    than its blue: the turtle, which starts at the centre."""
+    pond = [
+        (y, x, cell)
+        for y, row in enumerate(screen)
+        for x, cell in enumerate(row)
+        if cell.char == HALF_BLOCK
+    ]
+    turtle = [(y, x) for y, x, cell in pond if POND_BLUE not in (cell.fg, cell.bg)]
+    if not pond or not turtle:
+        return False
+    middle_y = (pond[0][0] + pond[-1][0]) / 2
+    middle_x = (min(x for _, x, _ in pond) + max(x for _, x, _ in pond)) / 2
+    ys, xs = [y for y, _ in turtle], [x for _, x in turtle]
+    # Within a cell: the middle may fall between two.
+    return min(ys) - 1 <= middle_y <= max(ys) + 1 and min(xs) - 1 <= middle_x <= max(xs) + 1
+
+
+def fits_and_shows_how_to_quit(term: Tmux, columns: int) -> None:
+    """No line is wider than the terminal, and the footer begins with the quit key."""
+    rows = term.wait_for("Quit")
+    assert footer(rows)[:2] == ["q", "Quit"], rows
+    lines = term.lines()
+    assert all(len(line) <= columns for line in lines), lines
+
+
+def quits_on_ctrl_c(term: Tmux) -> None:
+    """Ctrl-C ends the program, well (exit status 0, no traceback)."""
+    term.keys("C-c")
+    assert term.ended()
+    lines = term.lines()
+    assert term.status() == 0, lines
+    assert not any("Traceback" in line for line in lines), lines
 
 
 @pytest.fixture
@@ -76,3 +142,66 @@ def test_rqt_logger_level_lists_lab1s_nodes(
         assert footer(rows)[:2] == ["q", "Quit"], rows
         term.keys("C-c")
         assert term.ended()
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_rqt_graph_draws_turtlesim_in_a_box(
+    tmp_path: Path, size: tuple[int, int], world: SimHost
+) -> None:
+    with Tmux(tmp_path, size, ["rqt_graph"], ROS_MASTER_URI=world.master_uri) as term:
+        rows = term.wait_until(lambda rows: boxed(rows, "/turtlesim"), "/turtlesim", STARTUP)
+        assert boxed(rows, "/teleop_turtle"), rows
+        fits_and_shows_how_to_quit(term, size[0])
+        quits_on_ctrl_c(term)
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_rqt_topic_lists_the_pose_with_its_type(
+    tmp_path: Path, size: tuple[int, int], world: SimHost
+) -> None:
+    with Tmux(tmp_path, size, ["rqt_topic"], ROS_MASTER_URI=world.master_uri) as term:
+        term.wait_until(
+            lambda rows: has_words(rows, "/turtle1/pose", "turtlesim/Pose"),
+            "/turtle1/pose with its type",
+            STARTUP,
+        )
+        rows = term.screen()
+        assert has_words(rows, "Topic", "Type", "Bandwidth", "Hz"), rows
+        fits_and_shows_how_to_quit(term, size[0])
+        quits_on_ctrl_c(term)
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_rqt_shows_its_tabs(tmp_path: Path, size: tuple[int, int], world: SimHost) -> None:
+    with Tmux(tmp_path, size, ["rqt"], ROS_MASTER_URI=world.master_uri) as term:
+        tabs = ("Graph", "Plot", "Topics", "Console", "Logger", "levels")
+        term.wait_until(lambda rows: has_words(rows, *tabs), "the tabs", STARTUP)
+        # The first tab is the graph.
+        term.wait_until(lambda rows: boxed(rows, "/turtlesim"), "/turtlesim", STARTUP)
+        fits_and_shows_how_to_quit(term, size[0])
+        quits_on_ctrl_c(term)
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_turtlesim_node_draws_the_pond_with_the_turtle(
+    tmp_path: Path, size: tuple[int, int], master: str
+) -> None:
+    argv = ["rosrun", "turtlesim", "turtlesim_node"]
+    with Tmux(tmp_path, size, argv, ROS_MASTER_URI=master) as term:
+        term.wait_until(lambda _: turtle_in_the_pond(term.cells()), "the turtle", STARTUP)
+        term.wait_for("turtle1 \u2192 x=5.54 y=5.54 \u03b8=0.00")
+        fits_and_shows_how_to_quit(term, size[0])
+        quits_on_ctrl_c(term)
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_turtlesim_view_draws_the_running_turtlesim(
+    tmp_path: Path, size: tuple[int, int], world: SimHost
+) -> None:
+    argv = ["rosrun", "turtlesim", "turtlesim_view"]
+    with Tmux(tmp_path, size, argv, ROS_MASTER_URI=world.master_uri) as term:
+        term.wait_until(lambda _: turtle_in_the_pond(term.cells()), "the turtle", STARTUP)
+        rows = term.wait_for("turtle1 \u2192 x=5.54 y=5.54 \u03b8=0.00")
+        assert "/turtlesim" in rows[0].split(), rows
+        fits_and_shows_how_to_quit(term, size[0])
+        quits_on_ctrl_c(term)

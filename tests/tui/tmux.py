@@ -1,15 +1,21 @@
-"""A program in a tmux window of a given size, as a user sees it: what the screen shows, keys
-typed, and whether the program has ended. Tests skip where tmux is not installed."""
+"""A program in a tmux window of a given size, as a user sees it: what the screen shows (text,
+and the colours of each cell), keys typed, whether the program has ended and how. Tests skip
+where tmux is not installed."""
 
 from __future__ import annotations
 
+import contextlib
 import os
+import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from types import TracebackType
+from typing import NamedTuple
 
 import pytest
 
@@ -24,6 +30,18 @@ def needs_tmux() -> str:
     if path is None:
         pytest.skip("tmux is not installed")
     return path
+
+
+#: A colour as the terminal is told it (``"69;86;255"``: 24-bit RGB), None for the default.
+Colour = str | None
+
+
+class Cell(NamedTuple):
+    """One cell of the screen: its character and its colours."""
+
+    char: str
+    fg: Colour
+    bg: Colour
 
 
 class Tmux:
@@ -44,12 +62,18 @@ class Tmux:
         environ["PYTHONPATH"] = os.pathsep.join(str(ROOT / p) for p in (".", "commands", "turtle"))
         command = [sys.executable, "-c", "from rosx_commands.main import run; run()", *argv]
         columns, rows = size
-        self._run(
-            "-f", "/dev/null", "new-session", "-d", "-x", str(columns), "-y", str(rows),
-            *(arg for key, value in environ.items() for arg in ("-e", f"{key}={value}")),
-            " ".join(_quote(part) for part in command),
-        )  # fmt: skip
-        self._run("set-option", "-g", "remain-on-exit", "on")
+        # The pane stays, dead, after the program ends (so its end is seen however soon it comes).
+        config = folder / "tmux.conf"
+        config.write_text("set-option -g remain-on-exit on\n")
+        try:
+            self._run(
+                "-f", str(config), "new-session", "-d", "-x", str(columns), "-y", str(rows),
+                *(arg for key, value in environ.items() for arg in ("-e", f"{key}={value}")),
+                " ".join(_quote(part) for part in command),
+            )  # fmt: skip
+        except BaseException:
+            self._stop()
+            raise
 
     def _run(self, *args: str) -> str:
         done = subprocess.run(
@@ -66,15 +90,30 @@ class Tmux:
         """The window's rows as text."""
         return self._run("capture-pane", "-p").splitlines()
 
+    def lines(self) -> list[str]:
+        """The lines the program wrote, each whole: a line wider than the window, which the
+        terminal wraps, comes back as one."""
+        return self._run("capture-pane", "-p", "-J").splitlines()
+
+    def cells(self) -> list[list[Cell]]:
+        """The window's rows as cells with their colours."""
+        return [list(_cells(row)) for row in self._run("capture-pane", "-p", "-e").splitlines()]
+
     def wait_for(self, text: str, timeout: float = 30.0) -> list[str]:
         """The screen once it shows ``text``."""
+        return self.wait_until(lambda rows: any(text in row for row in rows), repr(text), timeout)
+
+    def wait_until(
+        self, shows: Callable[[list[str]], object], what: str, timeout: float = 30.0
+    ) -> list[str]:
+        """The screen once ``shows(rows)`` is true of it."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             rows = self.screen()
-            if any(text in row for row in rows):
+            if shows(rows):
                 return rows
             time.sleep(0.1)
-        raise AssertionError(f"{text!r} never showed; the screen:\n" + "\n".join(self.screen()))
+        raise AssertionError(f"{what} never showed; the screen:\n" + "\n".join(self.screen()))
 
     def keys(self, *keys: str) -> None:
         self._run("send-keys", *keys)
@@ -88,6 +127,12 @@ class Tmux:
             time.sleep(0.1)
         return False
 
+    def status(self) -> int | None:
+        """The program's exit status once it has ended, else None."""
+        if self._run("display-message", "-p", "#{pane_dead}").strip() != "1":
+            return None
+        return int(self._run("display-message", "-p", "#{pane_dead_status}").strip() or -1)
+
     def __enter__(self) -> Tmux:
         return self
 
@@ -97,11 +142,53 @@ class Tmux:
         error: BaseException | None,
         tb: TracebackType | None,
     ) -> None:
-        pid = self._run("display-message", "-p", "#{pane_pid}").strip()
-        if pid.isdigit() and self._run("display-message", "-p", "#{pane_dead}").strip() != "1":
-            self.keys("C-c")
-            self.ended(10.0)
-        self._run("kill-server")
+        self._stop()
+
+    def _stop(self) -> None:
+        """Ctrl-C to a program still running, then its process group killed if it stays; the
+        tmux server ended."""
+        try:
+            pid = self._run("display-message", "-p", "#{pane_pid}").strip()
+            if pid.isdigit() and self._run("display-message", "-p", "#{pane_dead}").strip() != "1":
+                self.keys("C-c")
+                if not self.ended(10.0):
+                    # The pane's program leads a process group of its own (tmux makes it a
+                    # session leader): its children go with it.
+                    with contextlib.suppress(ProcessLookupError):
+                        os.killpg(int(pid), signal.SIGKILL)
+        finally:
+            self._run("kill-server")
+
+
+_SGR = re.compile(r"\x1b\[([0-9;]*)m")
+
+
+def _cells(row: str) -> Iterator[Cell]:
+    """The cells of a row captured with its escapes (24-bit colours and resets)."""
+    fg: Colour = None
+    bg: Colour = None
+    at = 0
+    for match in _SGR.finditer(row):
+        yield from (Cell(char, fg, bg) for char in row[at : match.start()])
+        at = match.end()
+        codes = match.group(1).split(";") if match.group(1) else ["0"]
+        while codes:
+            code = codes.pop(0)
+            if code in ("38", "48") and codes[:1] == ["2"]:
+                colour = ";".join(codes[1:4])
+                del codes[:4]
+                fg, bg = (colour, bg) if code == "38" else (fg, colour)
+            elif code in ("38", "48") and codes[:1] == ["5"]:
+                colour = "5;" + ";".join(codes[1:2])
+                del codes[:2]
+                fg, bg = (colour, bg) if code == "38" else (fg, colour)
+            elif code == "0":
+                fg = bg = None
+            elif code == "39":
+                fg = None
+            elif code == "49":
+                bg = None
+    yield from (Cell(char, fg, bg) for char in row[at:])
 
 
 def _quote(text: str) -> str:
