@@ -1,5 +1,5 @@
 """A program in a tmux window of a given size, as a user sees it: what the screen shows (text,
-and the colours of each cell), keys typed, whether the program has ended and how. Tests skip
+and the colours of each cell), keys typed, and whether the program has ended. Tests skip
 where tmux is not installed."""
 
 from __future__ import annotations
@@ -119,19 +119,15 @@ class Tmux:
         self._run("send-keys", *keys)
 
     def ended(self, timeout: float = 15.0) -> bool:
-        """Whether the program ends within ``timeout`` seconds."""
+        """Whether the program ends within ``timeout`` seconds: its terminal closed and its
+        process gone (or a zombie: tmux at times collects its status late, or never)."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
-            if self._run("display-message", "-p", "#{pane_dead}").strip() == "1":
+            shown = self._run("display-message", "-p", "#{pane_dead} #{pane_pid}").split()
+            if shown[:1] == ["1"] and (len(shown) < 2 or not _running(shown[1])):
                 return True
             time.sleep(0.1)
         return False
-
-    def status(self) -> int | None:
-        """The program's exit status once it has ended, else None."""
-        if self._run("display-message", "-p", "#{pane_dead}").strip() != "1":
-            return None
-        return int(self._run("display-message", "-p", "#{pane_dead_status}").strip() or -1)
 
     def __enter__(self) -> Tmux:
         return self
@@ -158,6 +154,15 @@ class Tmux:
                         os.killpg(int(pid), signal.SIGKILL)
         finally:
             self._run("kill-server")
+
+
+def _running(pid: str) -> bool:
+    """Whether process ``pid`` runs (exists and is no zombie)."""
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except OSError:  # gone, or no /proc: the closed terminal says enough
+        return False
+    return stat.rpartition(")")[2].split()[:1] != ["Z"]
 
 
 _SGR = re.compile(r"\x1b\[([0-9;]*)m")
