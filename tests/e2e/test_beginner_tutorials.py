@@ -149,8 +149,11 @@ class Terminal:
         self.home = home
         self.port = free_port()
         self.env = clean_environ(HOME=str(home), ROS_MASTER_URI=f"http://localhost:{self.port}")
+        # The test run's own variables (CI's ROS 1 reference, ROS1_*) are no user's either.
         for name in ("CMAKE_PREFIX_PATH", "PYTHONPATH", "ROSLISP_PACKAGE_DIRECTORIES"):
             self.env.pop(name, None)
+        for name in [k for k in self.env if k.startswith("ROS1_")]:
+            self.env.pop(name)
         self.background: list[subprocess.Popen[str]] = []
 
     def script(self, commands: str) -> str:
