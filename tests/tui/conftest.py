@@ -8,10 +8,12 @@ live world is for pilot tests that assert on poses and messages, never on pictur
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Callable, Coroutine, Iterator
+from collections.abc import Awaitable, Callable, Coroutine, Iterator
 from typing import Any, TypeVar
 
 import pytest
+from textual.app import App
+from textual.pilot import Pilot
 
 from rosx.graph.state import GraphState
 from rosx.node import WARN, Node
@@ -34,6 +36,22 @@ SNAPSHOT_SIZE = (100, 32)
 def run(coro: Coroutine[Any, Any, T]) -> T:
     """Run a pilot coroutine to completion (the suite has no asyncio plugin)."""
     return asyncio.run(coro)
+
+
+def running_after_key(
+    app: App[Any], key: str, settle: Callable[[Pilot[Any]], Awaitable[None]]
+) -> bool:
+    """Run ``app`` on an 80x24 terminal, let ``settle`` bring it to rest, press ``key``:
+    whether the app is still running after it."""
+
+    async def drive() -> bool:
+        async with app.run_test(size=(80, 24)) as pilot:
+            await settle(pilot)
+            await pilot.press(key)
+            await pilot.pause()
+            return app.is_running
+
+    return run(drive())
 
 
 class Pond:
