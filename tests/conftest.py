@@ -8,6 +8,7 @@ depend on them.
 from __future__ import annotations
 
 import os
+import time
 from collections.abc import Callable, Iterator
 
 import pytest
@@ -43,3 +44,17 @@ def make_node(master: str) -> Iterator[Callable[..., Node]]:
     yield make
     for node in nodes:
         node.shutdown("test over")
+
+
+@pytest.fixture
+def utc() -> Iterator[None]:
+    """Local time is UTC for the test (``TZ=UTC``), restored after it."""
+    saved = os.environ.get("TZ")
+    os.environ["TZ"] = "UTC"
+    time.tzset()
+    yield
+    if saved is None:
+        del os.environ["TZ"]
+    else:
+        os.environ["TZ"] = saved
+    time.tzset()

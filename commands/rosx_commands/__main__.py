@@ -1,5 +1,14 @@
-"""``python -m rosx_commands …`` is ``rosx …``."""
+"""``python -m rosx_commands …`` is ``rosx …``.
 
-from rosx_commands.main import run
+Ctrl-C (or roslaunch's SIGINT) while the program is still importing ends it quietly with 130,
+as after it has started; a node interrupted that early shows no traceback.
+"""
 
-run()
+import sys
+
+try:
+    from rosx_commands.main import run
+
+    run()
+except KeyboardInterrupt:
+    sys.exit(130)

@@ -6,6 +6,7 @@ A module of its own so the tools that do not need argparse do not import it.
 from __future__ import annotations
 
 import argparse
+import functools
 import sys
 
 from rosx_commands.cli import HelpShown
@@ -19,9 +20,15 @@ if TYPE_CHECKING:
 class ToolArgumentParser(argparse.ArgumentParser):
     """The argparse counterpart of `ToolParser`, for the sub-commands ROS 1 parses with argparse."""
 
-    def __init__(self, env: Environment, prog: str) -> None:
-        super().__init__(prog=prog)
+    def __init__(self, env: Environment, prog: str, **options: Any) -> None:
+        super().__init__(prog=prog, **options)
         self.env = env
+
+    def add_commands(self, dest: str) -> Any:
+        """Sub-commands (``add_subparsers``, required) whose parsers write where this one does."""
+        # argparse builds each sub-command's parser as ``parser_class(prog=…)``.
+        factory: Any = functools.partial(ToolArgumentParser, self.env)
+        return self.add_subparsers(required=True, dest=dest, parser_class=factory)
 
     def _print_message(self, message: str, file: object = None) -> None:
         if message:

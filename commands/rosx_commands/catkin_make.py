@@ -1,7 +1,8 @@
 """``rosx catkin_make``: build a catkin workspace (see `rosx.workspace.build`).
 
-Parsed with argparse, as ROS 1's catkin_make is. Arguments rosx has no use for (``-j4``,
-``-DCMAKE_BUILD_TYPE=Release``, ``--use-ninja``, make targets…) are accepted and ignored, so
+Parsed with argparse, as ROS 1's catkin_make is. The make target ``install`` writes the install
+space. Arguments rosx has no use for (``-j4``, ``-DCMAKE_BUILD_TYPE=Release``, ``--use-ninja``,
+other make targets…) are accepted and ignored, so
 command lines written for ROS 1 work unchanged. Errors are printed as catkin_make prints them;
 the exit status is then 1.
 """
@@ -15,8 +16,9 @@ from rosx_commands.context import CommandError, Environment, ExitStatus
 
 _DESCRIPTION = (
     "Creates the catkin workspace layout and builds the message and service types of its "
-    "packages, as catkin_make does for ROS 1 (rosx has no C++ to compile). Arguments meant "
-    "for cmake or make are accepted and ignored."
+    "packages, as catkin_make does for ROS 1 (rosx has no C++ to compile); the target "
+    "'install' writes the install space. Other arguments meant for cmake or make are accepted "
+    "and ignored."
 )
 
 
@@ -67,7 +69,7 @@ def _catkin_make(argv: list[str], env: Environment) -> int:
         action="store_true",
         help="use to override failure due to using different build tools on the same workspace.",
     )
-    args, _ignored = parser.parse_known_args(argv)
+    args, targets = parser.parse_known_args(argv)
 
     from rosx.workspace.build import CatkinMake, workspace_layout  # noqa: PLC0415
     from rosx.workspace.errors import BuildError  # noqa: PLC0415
@@ -77,7 +79,14 @@ def _catkin_make(argv: list[str], env: Environment) -> int:
     layout = workspace_layout(working_directory(env), args.directory, args.source, args.build)
     # --pkg only narrows what make builds; rosx builds every package's types (it is cheap).
     only = list(args.only_pkg_with_deps or [])
-    make = CatkinMake(layout, env.environ, shim_dirs=shim_dirs(), rosx=self_command(), only=only)
+    make = CatkinMake(
+        layout,
+        env.environ,
+        shim_dirs=shim_dirs(),
+        rosx=self_command(),
+        only=only,
+        install="install" in targets,
+    )
     try:
         if not layout.base.exists():
             make.check_layout()

@@ -12,6 +12,7 @@ if TYPE_CHECKING:
     from typing import TextIO
 
     from rosx.master.client import MasterClient
+    from rosx.names.remap_args import RemapArgs
 
 #: Seconds a tool waits for the master before saying it is not there (ROS 1 may take minutes).
 MASTER_TIMEOUT = 2.0
@@ -42,6 +43,9 @@ class Environment:
         self.stderr = sys.stderr if stderr is None else stderr
         self.stdin = sys.stdin if stdin is None else stdin
         self.environ = dict(os.environ) if environ is None else environ
+        #: The command line's remapping arguments (``__name:=``, ``from:=to``, ``_param:=``),
+        #: for a tool that runs as a node, as rospy's ``init_node`` reads them.
+        self.remap_args: RemapArgs | None = None
 
     @property
     def stdout_isatty(self) -> bool:

@@ -18,6 +18,12 @@ def self_command() -> str:
     return rosx_command([sys.executable, "-m", "rosx_commands"])
 
 
+def script_command() -> list[str]:
+    """The words that run a ROS Python script with rosx's ``rospy`` (``rosx run-script``); the
+    script's path and arguments follow. ``rosrun`` and ``roslaunch`` start scripts with them."""
+    return [sys.executable, "-m", "rosx_commands", "run-script"]
+
+
 def working_directory(env: Environment) -> Path:
     """The directory the user is in: ``PWD`` (which keeps symbolic links, as shells show it)
     when it names the process's directory, else the process's directory."""

@@ -7,6 +7,7 @@ so short commands stay fast; ``rosx --help`` builds the typer menu (`rosx_comman
 from __future__ import annotations
 
 import importlib
+import signal
 import sys
 from collections.abc import Callable, Sequence
 
@@ -23,6 +24,10 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rosnode": ("rosx_commands.rosnode:rosnode", "Print information about ROS nodes."),
     "rosservice": ("rosx_commands.rosservice:rosservice", "List, inspect and call ROS services."),
     "rosparam": ("rosx_commands.rosparam:rosparam", "Get and set ROS parameters."),
+    "roslaunch": (
+        "rosx_commands.roslaunch:roslaunch",
+        "Start the nodes and parameters of launch files (and a core when none runs).",
+    ),
     "rosbag": (
         "rosx_commands.rosbag:rosbag",
         "Record, play back and inspect bag files (ROS 1's format 2.0).",
@@ -58,9 +63,32 @@ TOOLS: dict[str, tuple[str, str]] = {
     "rosrun": ("rosx_commands.rosrun:rosrun", "Run an executable of a ROS package."),
     "roscd": ("rosx_commands.roscd:roscd", "Where roscd goes (roscd itself is a shell function)."),
     "rosls": ("rosx_commands.roscd:rosls", "List a package's directory."),
+    "rosclean": ("rosx_commands.rosclean:rosclean", "Check or purge the ROS log folders."),
     "shell-init": (
         "rosx_commands.shell_init:shell_init",
         "Print shell functions: ROS 1's command names, roscd, rosls.",
+    ),
+    "rosed": ("rosx_commands.rosed:rosed", "Edit a file of a ROS package with $EDITOR."),
+    "roscp": ("rosx_commands.rosed:roscp", "Copy a file of a ROS package."),
+    "roswtf": (
+        "rosx_commands.roswtf:roswtf",
+        "Check the ROS environment and the running graph for problems.",
+    ),
+    "rosversion": (
+        "rosx_commands.rosversion:rosversion",
+        "Print a package's version or the ROS distribution.",
+    ),
+    "rosmsg-proto": (
+        "rosx_commands.rosmsg_proto:rosmsg_proto",
+        "Print a default message or service request as YAML (for tab completion).",
+    ),
+    "rossrv-proto": (
+        "rosx_commands.rosmsg_proto:rosmsg_proto",
+        "The same as rosmsg-proto.",
+    ),
+    "complete": (
+        "rosx_commands.complete:complete",
+        "Print the completions of a ROS command line (used by the shells' tab completion).",
     ),
     "run-script": (
         "rosx_commands.run_script:run_script",
@@ -85,6 +113,17 @@ def run_tool(argv: Sequence[str], env: Environment | None = None) -> int:
     return run_menu(argv, env)
 
 
+def take_sigint() -> None:
+    """Make SIGINT raise `KeyboardInterrupt` even when this process started with it ignored.
+
+    A POSIX shell starts ``cmd &`` with SIGINT ignored, and Python then installs no handler of
+    its own; ROS 1's tools install theirs and stop on ``kill -INT``, so rosx's do too.
+    """
+    if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
 def run() -> None:
     """Console-script entry point."""
+    take_sigint()
     sys.exit(run_tool(sys.argv[1:]))

@@ -34,11 +34,14 @@ def roscd(argv: Sequence[str], env: Environment) -> int:
 
     from rosx.workspace.locate import LocateError, locate  # noqa: PLC0415
 
+    notes: list[str] = []
     try:
-        directory = locate(args[0] if args else "", env.environ)
+        directory = locate(args[0] if args else "", env.environ, notes)
     except LocateError as error:
         env.out(str(error)) if not where else env.err(str(error))
         return ExitStatus.ERROR
+    for note in notes:
+        env.err(note)
     if not where:
         env.err(_NO_FUNCTION)
         env.out(str(directory))

@@ -9,7 +9,13 @@ import time
 from rosx.master.client import MasterError
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
-from rosx.transport.errors import CallTimeoutError, ConnectError, FaultError, TransportError
+from rosx.transport.errors import (
+    CallTimeoutError,
+    ConnectError,
+    FaultError,
+    InvalidUriError,
+    TransportError,
+)
 from rosx_commands.cli import ToolParser, commands_overview, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
 
@@ -58,6 +64,30 @@ def node_names(master: MasterClient, namespace: str | None = None) -> list[str]:
     return sorted(nodes)
 
 
+def unreachable_nodes(master: MasterClient, nodes: list[str]) -> list[str]:
+    """The nodes of ``nodes`` whose Slave API does not answer ``getPid`` (or that the master
+    cannot locate), in order; asked side by side, so hung nodes cost one timeout in all."""
+    from concurrent.futures import ThreadPoolExecutor  # noqa: PLC0415 - only these need threads
+
+    def dead(node: str) -> bool:
+        uri = master.lookup_node(node)
+        if uri is None:
+            return True
+        try:
+            master.node_call(uri, "getPid", timeout=PING_TIMEOUT)
+        except (TransportError, FaultError):
+            return True
+        except MasterError:
+            return False  # it answered
+        return False
+
+    if not nodes:
+        return []
+    with ThreadPoolExecutor(min(len(nodes), 16)) as pool:
+        verdicts = list(pool.map(dead, nodes))
+    return [node for node, gone in zip(nodes, verdicts, strict=True) if gone]
+
+
 def list_nodes(argv: list[str], env: Environment) -> int:
     parser = ToolParser(env, "rosnode", "usage: %prog list")
     parser.add_option(
@@ -71,6 +101,13 @@ def list_nodes(argv: list[str], env: Environment) -> int:
         action="store_true",
         help="list all information",
     )
+    parser.add_option(
+        "--dead",
+        dest="dead",
+        default=False,
+        action="store_true",
+        help="list only the nodes that do not answer (rosx)",
+    )
     options, names = parser.parse(argv)
     list_uri, list_all = options.list_uri, options.list_all
     if len(names) > 1:
@@ -78,6 +115,8 @@ def list_nodes(argv: list[str], env: Environment) -> int:
     ns = script_resolve_name("rostopic", names[0], ros_namespace(env.environ)) if names else None
     master = env.master(CALLER_ID)
     nodes = node_names(master, ns)
+    if options.dead:
+        nodes = unreachable_nodes(master, nodes)
     if list_all:
         env.out("\n".join(f"{master.lookup_node(n) or 'unknown address'} \t{n}" for n in nodes))
     elif list_uri:
@@ -102,7 +141,11 @@ def info(argv: list[str], env: Environment) -> int:
     quiet = options.quiet
     if not nodes:
         parser.error("You must specify at least one node name")
-    from rosx.graph.describe import node_connections, node_description  # noqa: PLC0415
+    from rosx.graph.describe import (  # noqa: PLC0415
+        InvalidNodeUriError,
+        node_connections,
+        node_description,
+    )
 
     master = env.master(CALLER_ID)
     for raw in nodes:
@@ -115,8 +158,16 @@ def info(argv: list[str], env: Environment) -> int:
             continue
         if not quiet:
             env.out(f"\ncontacting node {uri} ...")
-            env.out(node_connections(master, uri))
+            try:
+                env.out(node_connections(master, uri))
+            except InvalidNodeUriError:
+                raise CommandError(invalid_uri(node, uri)) from None
     return ExitStatus.OK
+
+
+def invalid_uri(node: str, uri: str) -> str:
+    """The error for a node registered with a URI that cannot be called (rosservice's words)."""
+    return f"ERROR: node [{node}] has an invalid RPC URI [{uri}]"
 
 
 def ping_node(
@@ -137,6 +188,9 @@ def ping_node(
                 master.node_call(uri, "getPid", timeout=PING_TIMEOUT)
             except CallTimeoutError:
                 env.err(f"connection to [{node}] timed out")
+                return False
+            except InvalidUriError:
+                env.err(invalid_uri(node, uri))
                 return False
             except ConnectError:
                 fresh = master.lookup_node(node)
@@ -193,17 +247,16 @@ def ping(argv: list[str], env: Environment) -> int:
             parser.error("-c may not be used with --all")
         every = node_names(master)
         env.out("Will ping the following nodes: \n" + "".join(f" * {n}\n" for n in every))
-        for node in every:
-            ping_node(env, master, node, 1, True)
-        return ExitStatus.OK
+        answered = [ping_node(env, master, node, 1, True) for node in every]
+        # ROS 1 exits 0 even when a node did not answer; a script deserves to know.
+        return ExitStatus.OK if all(answered) else ExitStatus.ERROR
     if not names:
         _no_node_to_ping(env, parser, master)
     if len(names) > 1:
         parser.error("you may only specify one input node")
     node = _resolve(env, names[0])
     env.out(f"rosnode: node is [{node}]")
-    ping_node(env, master, node, count, True)
-    return ExitStatus.OK
+    return ExitStatus.OK if ping_node(env, master, node, count, True) else ExitStatus.ERROR
 
 
 def _no_node_to_ping(env: Environment, parser: ToolParser, master: MasterClient) -> NoReturn:
@@ -227,14 +280,14 @@ def machine(argv: list[str], env: Environment) -> int:
     _, names = parser.parse(argv)
     if len(names) > 1:
         parser.error("please enter only one machine name")
-    from urllib.parse import urlparse  # noqa: PLC0415 - only machine needs it
+    from rosx.transport.address import uri_hostname  # noqa: PLC0415 - only machine needs it
 
     master = env.master(CALLER_ID)
     hosts: dict[str, str] = {}
     for node in node_names(master):
         uri = master.lookup_node(node)
         if uri is not None:
-            hosts[node] = urlparse(uri).hostname or ""
+            hosts[node] = uri_hostname(uri)
     if not names:
         env.out("\n".join(sorted(set(hosts.values()))))
         return ExitStatus.OK
@@ -318,15 +371,7 @@ def _read_choice(env: Environment, limit: int) -> int:
 def cleanup(argv: list[str], env: Environment) -> int:
     ToolParser(env, "rosnode", "usage: %prog cleanup").parse(argv)
     master = env.master(CALLER_ID)
-    dead = []
-    for node in node_names(master):
-        uri = master.lookup_node(node)
-        try:
-            if uri is None:
-                raise ConnectError("", "unknown")
-            master.node_call(uri, "getPid", timeout=PING_TIMEOUT)
-        except (TransportError, FaultError):
-            dead.append(node)
+    dead = unreachable_nodes(master, node_names(master))
     if not dead:
         return ExitStatus.OK
     env.out("Unable to contact the following nodes:")

@@ -11,20 +11,21 @@ meant (``turtlesim node`` typed for ``turtlesim_node``).
 Then, as rosrun ``exec``s the program, this process becomes it, except that a Python script
 runs with rosx's Python and ``rospy`` whatever its ``#!`` line says (``rosx run-script``), and
 that the programs rosx provides itself (turtlesim's ``turtlesim_node``, ``turtle_teleop_key``,
-``draw_square``, ``mimic``; ``rosrun rostopic rostopic`` and the other ROS tools) run here.
+``draw_square``, ``mimic``; roscpp_tutorials' ``talker``, ``listener``, ``add_two_ints_server``,
+``add_two_ints_client``; ``rosrun rostopic rostopic`` and the other ROS tools) run here.
 """
 
 from __future__ import annotations
 
 import os
 import shlex
-import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import NamedTuple
 
 from rosx_commands.cli import run_command
 from rosx_commands.context import Environment, ExitStatus
+from rosx_commands.invocation import script_command
 
 USAGE = """\
 Usage: rosrun [--prefix cmd] [--debug] PACKAGE EXECUTABLE [ARGS]
@@ -41,6 +42,7 @@ _TOOL_EXECUTABLES = {
     ("rosmsg", "rossrv"): "rossrv",
     ("rosservice", "rosservice"): "rosservice",
     ("rosparam", "rosparam"): "rosparam",
+    ("roslaunch", "roslaunch"): "roslaunch",
     ("rqt_graph", "rqt_graph"): "rqt_graph",
     ("rqt_console", "rqt_console"): "rqt_console",
     ("rqt_logger_level", "rqt_logger_level"): "rqt_logger_level",
@@ -61,11 +63,11 @@ def _provided(
     package: str, executable: str, args: list[str], env: Environment
 ) -> Callable[[], int] | None:
     """A program rosx runs in this process for ``rosrun PACKAGE EXECUTABLE``, if any."""
-    if package == "turtlesim":
-        from rosx_turtle.executables import EXECUTABLES, load  # noqa: PLC0415
+    if package in ("turtlesim", "roscpp_tutorials"):
+        from rosx_turtle.executables import PROGRAMS, load  # noqa: PLC0415
 
-        if executable in EXECUTABLES:
-            return lambda: load(executable)(args, env)
+        if executable in PROGRAMS[package]:
+            return lambda: load(executable, package)(args, env)
     from rosx_commands.main import TOOLS, run_tool  # noqa: PLC0415
 
     tool = _TOOL_EXECUTABLES.get((package, executable))
@@ -102,9 +104,20 @@ def _choose(paths: list[Path], env: Environment) -> Path | None:
     env.stderr.write("#? ")
     env.stderr.flush()
     answer = env.stdin.readline().strip()
-    if answer.isdigit() and 1 <= int(answer) <= len(paths):
+    if answer.isascii() and answer.isdigit() and 1 <= int(answer) <= len(paths):
         return paths[int(answer) - 1]
     return None
+
+
+def _cpp_notice(executable: str, directory: Path, env: Environment) -> None:
+    """Say once, plainly, when the executable is a C++ target of the package (never built)."""
+    from rosx.workspace.cmake import cpp_targets  # noqa: PLC0415
+
+    if executable in cpp_targets(directory / "CMakeLists.txt"):
+        env.err(
+            f"[rosx] {executable} is a C++ target of the package's CMakeLists.txt; rosx compiles "
+            "no C++, so it was not built (write the node in Python to run it with rosx)"
+        )
 
 
 def _options(argv: list[str]) -> tuple[list[str], bool, list[str]] | None:
@@ -163,6 +176,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
             env.out("[rosrun] or not executable:")
             for other in found.not_executable:
                 env.out(f"[rosrun]   {other}")
+        _cpp_notice(executable, directory, env)
         _suggest(package, executable, rest, directory, env)
         return ExitStatus.NOT_FOUND
     chosen = found.executables[0]
@@ -173,10 +187,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
         chosen = picked
     path = chosen
     environ = shim_environ(env.environ, shim_dirs())
-    if is_python_script(path):
-        command = [sys.executable, "-m", "rosx_commands", "run-script", str(path)]
-    else:
-        command = [str(path)]
+    command = [*script_command(), str(path)] if is_python_script(path) else [str(path)]
     if debug:
         env.out(f"[rosrun] Running {' '.join([*prefix, *command, *rest])}")
     return Launch([*prefix, *command, *rest], environ)

@@ -1,8 +1,10 @@
-"""``rosx shell-init bash|zsh``: shell functions for ROS 1's command names, roscd and rosls.
+"""``rosx shell-init bash|zsh``: Noetic's environment, ROS 1's command names, roscd and rosls.
 
-``eval "$(rosx shell-init bash)"`` (in ``~/.bashrc`` to keep it) makes ``roscore``, ``rosrun``,
-``rostopic``, ``catkin_make``… run rosx's tools, and defines ``roscd`` and ``rosls``, so a lab
-sheet's commands can be typed exactly as printed (see `rosx.workspace.shell`).
+``eval "$(rosx shell-init bash)"`` (in ``~/.bashrc`` to keep it) exports what sourcing Noetic's
+``setup.bash`` exports (``ROS_DISTRO``, ``ROS_PACKAGE_PATH``…), makes ``roscore``, ``rosrun``,
+``rostopic``, ``catkin_make``… run rosx's tools, defines ``roscd`` and ``rosls`` and adds tab
+completion, so a lab sheet's commands can be typed exactly as printed (see
+`rosx.workspace.shell`).
 """
 
 from __future__ import annotations
@@ -16,9 +18,10 @@ _USAGE = 'usage: rosx shell-init {bash,zsh,sh}\n\nLoad with:  eval "$(rosx shell
 
 def shell_init(argv: Sequence[str], env: Environment) -> int:
     """Print the shell code for the shell named in ``argv`` (bash by default)."""
-    from rosx.workspace.shell import SHELLS  # noqa: PLC0415
+    from rosx.workspace.shell import ROS_COMMANDS, SHELLS  # noqa: PLC0415
     from rosx.workspace.shell import shell_init as code  # noqa: PLC0415
     from rosx_commands.invocation import self_command  # noqa: PLC0415
+    from rosx_commands.main import TOOLS  # noqa: PLC0415
 
     args = list(argv)
     if args and args[0] in ("-h", "--help"):
@@ -29,5 +32,6 @@ def shell_init(argv: Sequence[str], env: Environment) -> int:
         env.err(_USAGE)
         env.err(f"rosx shell-init: error: unknown shell {shell!r} (one of: {', '.join(SHELLS)})")
         return ExitStatus.USAGE
-    env.stdout.write(code(self_command(), shell))
+    commands = [name for name in ROS_COMMANDS if name in TOOLS]
+    env.stdout.write(code(self_command(), shell, commands))
     return ExitStatus.OK

@@ -7,6 +7,8 @@ ROS 1's protocols, so it works with rosx's tools and with ROS 1's alike. Modules
 
 - `state`: the process's one node, its command line, its shutdown sequence.
 - `lifecycle`: ``init_node``, ``spin``, ``on_shutdown``, ``signal_shutdown``, names.
+- `names`: ``rospy.names`` (the node's names, the remappings); `masterproxy`: ``MasterProxy``,
+  ``get_master``; `rosgraph`: the part of ``rosgraph`` scripts import (``Master``, ``names``).
 - `topics`: ``Publisher``, ``Subscriber``, ``wait_for_message``; `anymsg`: ``AnyMsg``.
 - `services`: ``Service``, ``ServiceProxy``, ``wait_for_service``.
 - `params`: the Parameter Server functions. `logs`: ``loginfo`` and friends.
@@ -33,6 +35,7 @@ _HOMES = {
     "ERROR": "rosx.client.lifecycle",
     "FATAL": "rosx.client.lifecycle",
     "INFO": "rosx.client.lifecycle",
+    "MasterProxy": "rosx.client.masterproxy",
     "Message": "rosx.msg.codec.message",
     "Publisher": "rosx.client.topics",
     "ROSException": "rosx.client.exceptions",
@@ -56,8 +59,7 @@ _HOMES = {
     "WARN": "rosx.client.lifecycle",
     "delete_param": "rosx.client.params",
     "get_caller_id": "rosx.client.lifecycle",
-    "get_master": "rosx.client.lifecycle",
-    "get_message_class  # noqa: PLC0415": "rosx.msg.codec.classes",
+    "get_master": "rosx.client.masterproxy",
     "get_name": "rosx.client.lifecycle",
     "get_namespace": "rosx.client.lifecycle",
     "get_node_uri": "rosx.client.lifecycle",
@@ -65,6 +67,7 @@ _HOMES = {
     "get_param_cached": "rosx.client.params",
     "get_param_names": "rosx.client.params",
     "get_published_topics": "rosx.client.lifecycle",
+    "get_ros_root": "rosx.client.lifecycle",
     "get_rostime": "rosx.client.timing",
     "get_time": "rosx.client.timing",
     "has_param": "rosx.client.params",
@@ -95,6 +98,7 @@ _HOMES = {
     "myargv": "rosx.client.lifecycle",
     "on_shutdown": "rosx.client.lifecycle",
     "parse_rosrpc_uri": "rosx.wire.rosrpc",
+    "remap_name": "rosx.client.names",
     "resolve_name": "rosx.client.lifecycle",
     "search_param": "rosx.client.params",
     "set_param": "rosx.client.params",
@@ -127,6 +131,7 @@ __all__ = [
     "AnyMsg",
     "Duration",
     "Header",
+    "MasterProxy",
     "Message",
     "Publisher",
     "ROSException",
@@ -157,6 +162,7 @@ __all__ = [
     "get_param_cached",
     "get_param_names",
     "get_published_topics",
+    "get_ros_root",
     "get_rostime",
     "get_time",
     "has_param",
@@ -187,6 +193,7 @@ __all__ = [
     "myargv",
     "on_shutdown",
     "parse_rosrpc_uri",
+    "remap_name",
     "resolve_name",
     "search_param",
     "set_param",

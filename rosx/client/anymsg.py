@@ -30,7 +30,7 @@ class AnyMsg(Message):
     def __init__(self, *args: Any) -> None:
         if args:
             raise ROSException("AnyMsg does not accept arguments")
-        self._buff: bytes | None = None
+        self._buff: Any = None
 
     @classmethod
     def from_raw(cls, buff: bytes, connection_header: dict[str, str]) -> AnyMsg:
@@ -40,8 +40,8 @@ class AnyMsg(Message):
         msg._connection_header = connection_header
         return msg
 
-    def buffer(self) -> bytes:
-        """The serialized bytes.
+    def buffer(self) -> Any:
+        """The serialized bytes (what `deserialize` was given, as it was given).
 
         Raises:
             ROSException: the message holds none yet.
@@ -53,8 +53,9 @@ class AnyMsg(Message):
     def serialize(self, buff: Writable) -> None:
         buff.write(self.buffer())
 
-    def deserialize(self, data: bytes) -> AnyMsg:
-        self._buff = bytes(data)
+    def deserialize(self, data: Any) -> AnyMsg:
+        """Keep ``data`` as it is, as rospy does; publishing the message sends it."""
+        self._buff = data
         return self
 
 

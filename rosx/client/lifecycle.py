@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import atexit
 import contextlib
+import os
 import signal
 import sys
 import threading
@@ -32,7 +33,7 @@ from rosx.names import (
 )
 
 if TYPE_CHECKING:
-    from collections.abc import Callable
+    from collections.abc import Callable, Mapping
     from types import FrameType
 
     from rosx.master.client import MasterClient
@@ -275,9 +276,19 @@ def get_node_uri() -> str | None:
     return node.uri if node is not None else None
 
 
-def get_master(env: object = None) -> MasterClient:
-    """The master, called as this node: ``get_master().getSystemState()`` gives the value."""
-    return state.CLIENT.master()
+def get_ros_root(required: bool = False, env: Mapping[str, str] | None = None) -> str | None:
+    """``ROS_ROOT`` (normalised), or None; deprecated in rospy, and warned about as there.
+
+    Raises:
+        ROSException: ``required`` and ``ROS_ROOT`` is not set.
+    """
+    warnings.warn("Call to deprecated function get_ros_root.", DeprecationWarning, stacklevel=2)
+    root = (os.environ if env is None else env).get("ROS_ROOT")
+    if root:
+        return os.path.normpath(root)
+    if required:
+        raise ROSException("ROS_ROOT is not set")
+    return None
 
 
 def get_published_topics(namespace: str = "/") -> list[list[str]]:
@@ -296,11 +307,11 @@ __all__ = [
     "INFO",
     "WARN",
     "get_caller_id",
-    "get_master",
     "get_name",
     "get_namespace",
     "get_node_uri",
     "get_published_topics",
+    "get_ros_root",
     "init_node",
     "is_shutdown",
     "myargv",

@@ -2,7 +2,8 @@
 
 Once the node runs, a record at or above its level goes to the console as rospy writes it
 (``[INFO] [1700000000.123456]: text``, stdout below WARN and stderr from WARN on;
-``ROSCONSOLE_FORMAT`` is honoured) and to ``/rosout`` with the caller's file, function and line.
+``ROSCONSOLE_FORMAT`` is honoured) and to ``/rosout`` with the caller's file, function (as
+``Class.method`` inside a method, as rospy names it) and line.
 Before `init_node` there is no node to log through: as with rospy, only WARN and above are
 printed, as the bare text on stderr.
 
@@ -19,21 +20,32 @@ import sys
 import time
 import traceback
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rosx.client import state
 from rosx.node.rosout import DEBUG, ERROR, FATAL, INFO, WARN
 
+if TYPE_CHECKING:
+    from types import FrameType
+
 _throttled: dict[tuple[str, int, int], float] = {}
 _identical: dict[tuple[str, int, int], str] = {}
 _once: set[tuple[str, int, int]] = set()
+_NO_SELF = object()
 
 
 def _call_site(depth: int) -> tuple[tuple[str, int, int], str, str, int]:
     frame = sys._getframe(depth + 1)
     code = frame.f_code
     key = (code.co_filename, frame.f_lineno, frame.f_lasti)
-    return key, Path(code.co_filename).name, code.co_name, frame.f_lineno
+    return key, Path(code.co_filename).name, _function_name(frame), frame.f_lineno
+
+
+def _function_name(frame: FrameType) -> str:
+    """``Class.method`` when the caller has a ``self``, else the function's name, as rospy."""
+    owner = frame.f_locals.get("self", _NO_SELF)
+    name = frame.f_code.co_name
+    return name if owner is _NO_SELF else f"{type(owner).__name__}.{name}"
 
 
 def _text(msg: object, args: tuple[Any, ...], kwargs: dict[str, Any]) -> str:

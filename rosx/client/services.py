@@ -2,9 +2,13 @@
 
 A `Service` may be created before `init_node` (it registers when the node starts); its handler
 runs on a pool thread and may return a response, a dict or tuple of its fields, or a single
-field value, or raise `ServiceException` to refuse the request. A `ServiceProxy` needs no node:
-called before `init_node` it calls as ``/unnamed``, as rospy does. `wait_for_service` polls the
-master and probes the server until it answers, like rospy (every 0.3 s).
+field value, or raise `ServiceException` to refuse the request. Any other exception is given to
+its ``error_handler(exc, type, value, traceback)`` when it has one, as rospy does, and logged
+otherwise; the client gets ``error processing request: <text>`` either way.
+
+A `ServiceProxy` needs no node: called before `init_node` it calls as ``/unnamed``, as rospy
+does. `wait_for_service` polls the master and probes the server until it answers, like rospy
+(every 0.3 s).
 """
 
 from __future__ import annotations
@@ -57,6 +61,7 @@ class Service:
         self.request_class = service_class._request_class
         self.response_class = service_class._response_class
         self.handler = handler
+        self.error_handler = error_handler
         self.impl: ServiceHandle | None = None
         self.done = False
         state.CLIENT.attach(self)
@@ -64,9 +69,18 @@ class Service:
     def _attach(self, node: Node) -> None:
         if self.done:
             return
-        self.impl = node.advertise_service(self._requested_name, self.service_class, self.handler)
+        self.impl = node.advertise_service(
+            self._requested_name,
+            self.service_class,
+            self.handler,
+            on_exception=None if self.error_handler is None else self._on_exception,
+        )
         self.resolved_name = self.impl.name
         self.uri = self.impl.uri
+
+    def _on_exception(self, exc: Exception) -> None:
+        assert self.error_handler is not None
+        self.error_handler(exc, type(exc), exc, exc.__traceback__)
 
     def shutdown(self, reason: str = "") -> None:
         """Stop serving and unregister from the master."""

@@ -64,6 +64,8 @@ class Client:
         self._args: RemapArgs | None = None
         self._argv: list[str] | None = None
         self._master: MasterClient | None = None
+        #: What ``rospy.get_master()`` hands out (`rosx.client.masterproxy`), made once.
+        self.script_master: Any = None
 
     # -- the command line --------------------------------------------------------------------
 
@@ -127,16 +129,23 @@ class Client:
 
     # -- the master before the node exists ---------------------------------------------------
 
+    def master_uri(self) -> str:
+        """The master's URI: the node's, else ``__master:=``, else ``ROS_MASTER_URI``."""
+        if self.node is not None:
+            return self.node.master.uri
+        from rosx.master.client import master_uri  # noqa: PLC0415
+
+        return master_uri(os.environ, self.args.master)
+
     def master(self) -> MasterClient:
         """The master, called as the node (or as ``/unnamed`` before `init_node`)."""
         if self.node is not None:
             return self.node.master
         with self.lock:
             if self._master is None:
-                from rosx.master.client import MasterClient, master_uri  # noqa: PLC0415
+                from rosx.master.client import MasterClient  # noqa: PLC0415
 
-                uri = master_uri(os.environ, self.args.master)
-                self._master = MasterClient(uri, self.caller_id())
+                self._master = MasterClient(self.master_uri(), self.caller_id())
             return self._master
 
     # -- registrations made before the node ---------------------------------------------------

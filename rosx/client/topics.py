@@ -164,7 +164,7 @@ class Publisher(_Topic):
         message = args_kwds_to_message(self.data_class, args, kwds)
         try:
             if isinstance(message, AnyMsg):
-                impl.publish_serialized(message.buffer())
+                impl.publish_serialized(_raw_bytes(message))
             else:
                 impl.publish(message)
         except SerializationError as exc:
@@ -174,6 +174,16 @@ class Publisher(_Topic):
         """The number of subscribers connected."""
         impl = self.impl
         return impl.get_num_connections() if impl is not None else 0
+
+
+def _raw_bytes(message: AnyMsg) -> bytes:
+    buff = message.buffer()
+    try:
+        return bytes(buff)
+    except TypeError:
+        raise ROSSerializationException(
+            f"AnyMsg holds a {type(buff).__name__}, not serialized bytes"
+        ) from None
 
 
 class Subscriber(_Topic):

@@ -6,7 +6,8 @@ summaries of a `rosx.graph.state.GraphState`.
 
 - `node_description`: the master's view of a node (publications with their types,
   subscriptions, services); `node_connections`: what the node says of itself (``getPid``,
-  ``getBusInfo``, ROS wiki Slave_API), each peer named as the master knows it.
+  ``getBusInfo``, ROS wiki Slave_API), each peer named as the master knows it; `node_info`:
+  both, as ``rosnode info`` prints them for one node.
 - `topic_description`: a topic's type, publishers and subscribers with their URIs.
 - `topic_summaries`, `node_summaries`: one row per topic or node of a graph state.
 
@@ -20,7 +21,7 @@ import re
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 from rosx.master.client import MasterError
-from rosx.transport.errors import FaultError, TransportError
+from rosx.transport.errors import FaultError, InvalidUriError, TransportError
 
 if TYPE_CHECKING:
     from rosx.graph.state import GraphState
@@ -46,6 +47,10 @@ class NodeContactError(Exception):
     def __init__(self, uri: str) -> None:
         super().__init__(f"Communication with node[{uri}] failed!")
         self.uri = uri
+
+
+class InvalidNodeUriError(NodeContactError):
+    """The node registered a URI that cannot be called (``http://host:1²/``): none was tried."""
 
 
 # -- nodes -------------------------------------------------------------------------------------
@@ -76,13 +81,15 @@ def node_connections(master: MasterClient, uri: str) -> str:
     """What the node at ``uri`` says of itself: its PID and its live connections.
 
     Raises:
-        NodeContactError: the node does not answer.
+        NodeContactError: the node does not answer (`InvalidNodeUriError`: it cannot be called).
         MasterError: the node refused (``remote call failed: …``).
     """
     state = master.system_state()
     try:
         pid = master.node_call(uri, "getPid", timeout=NODE_TIMEOUT)
         bus_info = master.node_call(uri, "getBusInfo", timeout=NODE_TIMEOUT)
+    except InvalidUriError:
+        raise InvalidNodeUriError(uri) from None
     except (TransportError, FaultError):
         raise NodeContactError(uri) from None
     except MasterError as error:
@@ -105,6 +112,21 @@ def node_connections(master: MasterClient, uri: str) -> str:
                 text += " ({} - {}) [{}]".format(*match.groups())
         text += f"\n    * transport: {transport}\n"
     return text
+
+
+def node_info(master: MasterClient, node: str) -> str:
+    """``rosnode info``'s text for ``node`` (without its dashed line): the master's view, then,
+    after ``contacting node …``, what the node says of itself.
+
+    Raises:
+        NodeContactError: the node does not answer.
+        MasterError: the master or the node refused a call.
+    """
+    text = node_description(master, node)
+    uri = master.lookup_node(node)
+    if uri is None:
+        return text + f"\ncannot contact [{node}]: unknown node\n"
+    return text + f"\n\ncontacting node {uri} ...\n" + node_connections(master, uri)
 
 
 def _peer(

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from rosx.launch import substitution
 from rosx.launch.context import ContextError, LoadContext, LocalParam
@@ -90,6 +90,8 @@ _ATTRS = {
 }
 _MACHINE_DEFAULTS = {"true": (True, True), "false": (False, True), "never": (False, False)}
 _TEST_TIME_LIMIT = 60.0
+#: An attribute's number: ``float`` or ``int``, as the attribute takes it.
+_Number = TypeVar("_Number", float, int)
 #: roslaunch's guess for a machine without ``env-loader`` (only compared, never run).
 _ENV_LOADER = "/opt/ros/noetic/env.sh"
 
@@ -878,22 +880,25 @@ class _Reader:
         retry_text = self.resolve(context, element, element.attrs.get("retry", ""))
         time_limit, retry = _TEST_TIME_LIMIT, 0
         if limit_text:
-            try:
-                time_limit = float(limit_text)
-            except ValueError:
-                raise self.fail(
-                    context, element, f"'time-limit' must be a number: [{limit_text}]"
-                ) from None
+            time_limit = self.number(context, element, float, "time-limit", limit_text)
             if time_limit <= 0.0:
                 raise self.fail(context, element, "'time-limit' must be a positive number")
         if retry_text:
-            try:
-                retry = int(retry_text)
-            except ValueError:
-                raise self.fail(
-                    context, element, f"'retry' must be a number: [{retry_text}]"
-                ) from None
+            retry = self.number(context, element, int, "retry", retry_text)
         return test_name, time_limit, retry
+
+    def number(
+        self,
+        context: LoadContext,
+        element: Element,
+        convert: Callable[[str], _Number],
+        attr: str,
+        text: str,
+    ) -> _Number:
+        try:
+            return convert(text)
+        except ValueError:
+            raise self.fail(context, element, f"'{attr}' must be a number: [{text}]") from None
 
     def seconds(
         self, context: LoadContext, element: Element, value: str | None, label: str

@@ -23,7 +23,7 @@ from rosx.wire.reply import parse_ros_reply
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from collections.abc import Callable, Mapping
+    from collections.abc import Callable, Mapping, Sequence
     from typing import Any
 
 #: Where the master is when neither ``ROS_MASTER_URI`` nor ``__master:=`` says.
@@ -104,6 +104,40 @@ class MasterClient:
 
         remote.__name__ = method
         return remote
+
+    def multicall(
+        self, calls: Sequence[tuple[str, tuple[object, ...]]], timeout: float | None = None
+    ) -> list[Any]:
+        """Several calls in one ``system.multicall`` round trip (as roslaunch sets its
+        parameters); each call's value, in order. A master without ``system.multicall`` gets
+        them one by one.
+
+        Raises:
+            MasterError: the first call the master refused.
+            MasterUnreachable: no answer from the master.
+        """
+        if not calls:
+            return []
+        payload = [{"methodName": m, "params": [self.caller_id, *p]} for m, p in calls]
+        limit = self.timeout if timeout is None else timeout
+        try:
+            replies = self.client.call(self.uri, "system.multicall", payload, timeout=limit)
+        except FaultError:
+            return [self.call(method, *params, timeout=timeout) for method, params in calls]
+        except TransportError as exc:
+            raise MasterUnreachable(self.uri, exc.message) from exc
+        except OSError as exc:
+            raise MasterUnreachable(self.uri, str(exc)) from exc
+        # multicall wraps each successful result in a one-element list
+        return [reply_value(r[0] if isinstance(r, list) and len(r) == 1 else r) for r in replies]
+
+    def is_online(self) -> bool:
+        """Whether the master answers at all (``getPid``), as ``rosgraph.Master.is_online``."""
+        try:
+            self.call("getPid")
+        except (MasterUnreachable, MasterError):
+            return False
+        return True
 
     def as_caller(self, caller_id: str) -> MasterClient:
         """The same master called as ``caller_id``, over the same connections."""

@@ -3,8 +3,8 @@
 Here, type definitions and the type store:
 
 - `spec`, `parser`: ``.msg``/``.srv`` text parsed into specs.
-- `store`: every type rosx knows (package path, rosbags' Noetic types via `standard`, the bundled
-  ``interfaces/``), found lazily by name; packages come from `rosx.packages.index`.
+- `store`: every type rosx knows (package path, the packages shipped with rosx, rosbags' Noetic
+  types via `standard`), found lazily by name; packages come from `rosx.packages.index`.
 - `md5`, `describe`: md5 sums, full definitions and ``rosmsg show``'s text of a type.
 
 Subpackages, each importing only what is listed before it:

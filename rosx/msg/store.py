@@ -1,10 +1,18 @@
 """One type store: every message and service type rosx knows, found lazily by name.
 
-Sources, first match wins per package, as rospack's search order does:
+Sources, first match wins per type:
 
-1. packages on the package path (``ROS_PACKAGE_PATH``): their ``msg/*.msg`` and ``srv/*.srv``;
-2. the standard types: rosbags' ROS 1 Noetic messages, the standard packages' services that
-   rosbags does not carry (``rosx/msg/interfaces``) and turtlesim's types (``rosx_turtle``).
+1. packages on the package path (``ROS_PACKAGE_PATH``): their ``msg/*.msg`` and ``srv/*.srv``,
+   the first package of a name on the path winning, as with rospack;
+2. the packages shipped with rosx (`rosx.packages.crawl`): the standard packages' original
+   ``.msg`` and ``.srv`` files (comments included, for ``rosmsg show -r``), the tutorials' and
+   turtlesim's types;
+3. rosbags' ROS 1 Noetic types, for the types no file defines (their texts rebuilt from field
+   lists, `rosx.msg.standard`).
+
+A package on the path shadows a standard one only for the types it really has: Debian's
+``libroscpp-dev`` leaves ``/usr/share/roscpp`` with a manifest and no ``msg`` files, and
+``roscpp/Logger`` must still resolve, since every node serves ``~get_loggers`` with it.
 
 Packages are found through the package index (`rosx.packages.index`), the one crawl of the
 package path that ``rospack``, ``rosrun`` and ``roscd`` use too. Nothing is parsed until asked
@@ -15,7 +23,6 @@ from __future__ import annotations
 
 import os
 from collections.abc import Mapping
-from functools import cached_property
 from pathlib import Path
 
 from rosx.msg.md5 import full_text, message_md5, service_md5
@@ -24,8 +31,6 @@ from rosx.msg.spec import MsgSpec, SrvSpec
 from rosx.msg.standard import standard_text, standard_types
 from rosx.packages.crawl import bundled_packages, split_package_path
 from rosx.packages.index import PackageIndex
-
-_INTERFACES = Path(__file__).parent / "interfaces"
 
 
 class UnknownTypeError(LookupError):
@@ -60,20 +65,19 @@ class TypeStore:
         """Packages found on the package path, by name."""
         return self._index.path_packages
 
-    @cached_property
+    @property
     def _bundled_packages(self) -> dict[str, Path]:
-        found = {p.name: p for p in sorted(_INTERFACES.iterdir()) if p.is_dir()}
-        found.update(bundled_packages())
-        return found
+        return bundled_packages()
 
     def package_dir(self, package: str) -> Path | None:
         """The directory of ``package`` when its definitions live in files."""
         root = self.path_packages.get(package)
         return self._bundled_packages.get(package) if root is None else root
 
-    def _directory(self, package: str, kind: str) -> Path | None:
-        root = self.package_dir(package)
-        return None if root is None else root / kind
+    def _directories(self, package: str, kind: str) -> list[Path]:
+        """Where files of ``package`` may live, the package path's first."""
+        roots = (self.path_packages.get(package), self._bundled_packages.get(package))
+        return [root / kind for root in roots if root is not None]
 
     @property
     def package_path(self) -> list[Path]:
@@ -89,9 +93,6 @@ class TypeStore:
             or package in self._bundled_packages
             or any(name.partition("/")[0] == package for name in standard_types())
         )
-
-    def _standard_allowed(self, package: str) -> bool:
-        return package not in self.path_packages
 
     # -- lookups ---------------------------------------------------------------------------
 
@@ -133,19 +134,18 @@ class TypeStore:
         if not is_valid_type_name(full_name):
             return None
         text = self._file_text(full_name, "msg")
-        if text is None and self._standard_allowed(full_name.partition("/")[0]):
-            text = standard_text(full_name)
-        return text
+        return standard_text(full_name) if text is None else text
 
     def _file_text(self, full_name: str, kind: str) -> str | None:
         package, _, short = full_name.partition("/")
-        directory = self._directory(package, kind)
-        if directory is None:
-            return None
-        try:
-            return (directory / f"{short}.{kind}").read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError):
-            return None
+        for directory in self._directories(package, kind):
+            try:
+                return (directory / f"{short}.{kind}").read_text(encoding="utf-8")
+            except FileNotFoundError:
+                continue
+            except (OSError, UnicodeDecodeError):
+                return None
+        return None
 
     def _service_half(self, full_name: str) -> MsgSpec:
         for suffix in ("Request", "Response"):
@@ -190,13 +190,13 @@ class TypeStore:
     def types(self, kind: str) -> list[str]:
         """Every ``pkg/Type`` of ``kind`` (``msg`` or ``srv``), sorted."""
         names: set[str] = set()
-        packages = {**self._bundled_packages, **self.path_packages}
-        for package, root in packages.items():
-            directory = root / kind
-            if directory.is_dir():
-                names.update(f"{package}/{e.stem}" for e in directory.glob("*." + kind))
+        for packages in (self._bundled_packages, self.path_packages):
+            for package, root in packages.items():
+                directory = root / kind
+                if directory.is_dir():
+                    names.update(f"{package}/{e.stem}" for e in directory.glob("*." + kind))
         if kind == "msg":
-            names.update(n for n in standard_types() if self._standard_allowed(n.split("/")[0]))
+            names.update(standard_types())
         return sorted(names)
 
     def packages(self, kind: str) -> list[str]:

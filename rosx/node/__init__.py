@@ -21,6 +21,8 @@ Modules, one concept each:
   ``rosservice``'s).
 - `slave_api`: the Slave API handlers. Calls to the master go through
   `rosx.master.client.MasterClient`.
+- `watchdog`: the process's master watch, which registers its nodes again with a restarted
+  master.
 - `params`: the parameter client and cache. `clock`: time, sleep, `Rate`.
 - `rosout`: log levels and console lines; `log_services`: ``/rosout`` and the logger services.
 - `signals`: optional SIGINT/SIGTERM handling. `errors`: the exceptions.

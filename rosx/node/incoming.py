@@ -54,6 +54,18 @@ class GiveUp(Exception):  # noqa: N818 - a signal between helpers, not an error 
     """The publisher cannot be reached and should not be retried."""
 
 
+def _tcpros_address(params: object) -> tuple[str, int] | None:
+    """``(host, port)`` of a ``requestTopic`` answer ``["TCPROS", host, port]``; None if not one."""
+    if not isinstance(params, list) or len(params) != 3 or params[0] != "TCPROS":
+        return None
+    host, port = params[1], params[2]
+    if isinstance(port, str) and port.isascii() and port.isdigit():
+        port = int(port)
+    if not isinstance(host, str) or not host or type(port) is not int or not 0 < port < 0x10000:
+        return None
+    return host, port
+
+
 class IncomingStream:
     """One subscription's connection to one publisher (see the module's contract)."""
 
@@ -167,9 +179,10 @@ class IncomingStream:
             raise GiveUp(f"publisher [{self.publisher_uri}] cannot be reached: {exc}") from None
         except MasterError as exc:
             raise GiveUp(f"requestTopic to [{self.publisher_uri}] failed: {exc}") from None
-        if not isinstance(params, list) or len(params) != 3 or params[0] != "TCPROS":
+        address = _tcpros_address(params)
+        if address is None:
             raise GiveUp(f"publisher returned invalid protocol choice: {params}")
-        host, port = str(params[1]), int(params[2])
+        host, port = address
         family = socket.AF_INET6 if ":" in host else socket.AF_INET
         sock = self.sock = socket.socket(family, socket.SOCK_STREAM)
         sock.setblocking(False)

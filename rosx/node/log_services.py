@@ -38,7 +38,7 @@ class RosoutPublisher:
             file=file,
             function=function,
             line=line,
-            topics=[*node.publications, *node.subscriptions],
+            topics=list(dict.fromkeys([*node.publications, *node.subscriptions])),
         )
         record.header.stamp = now()
         self.publisher.publish(record)

@@ -9,7 +9,8 @@ Every public method may be called from any thread except the I/O loop's (user ca
 run there). Calls to the master are made on the caller's thread with the blocking XML-RPC
 client; socket work happens on the loop. `shutdown` (also reached through the Slave API's
 ``shutdown`` and, when installed, SIGINT/SIGTERM) unregisters everything from the master, closes
-every connection and runs the hooks given to `on_shutdown`.
+every connection and runs the hooks given to `on_shutdown`. While it runs, the process's
+master watch (`rosx.node.watchdog`) registers it again with a master that restarted.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from __future__ import annotations
 import os
 import sys
 import threading
+import time
 from concurrent.futures import ThreadPoolExecutor
 from typing import TYPE_CHECKING, Any, cast
 
@@ -35,6 +37,7 @@ from rosx.node.slave_api import SlaveApi
 from rosx.node.startup import set_private_params
 from rosx.node.subscription import RawMessage, Subscription
 from rosx.node.tcpros_server import TcprosServer
+from rosx.node.watchdog import master_watch
 from rosx.transport.aclient import AsyncXmlRpcClient
 from rosx.transport.address import advertised_host, bind_host, foreign_address_warning
 from rosx.transport.client import XmlRpcClient
@@ -158,6 +161,7 @@ class Node:
         if self._rosout_enabled:
             self.log_sink.publish = RosoutPublisher(self)
         advertise_logger_services(self)
+        master_watch(self.io).add(self)
 
     async def _start_servers(self) -> None:
         self._aclient = AsyncXmlRpcClient()
@@ -208,6 +212,7 @@ class Node:
             if closer != threading.get_ident() and not self.io.in_loop_thread():
                 self._closed.wait(_FINISH_TIMEOUT)
             return
+        master_watch(self.io).remove(self)
         try:
             for hook in self._hooks:
                 try:
@@ -250,7 +255,13 @@ class Node:
             await self._aclient.close()
 
     def request_shutdown(self, reason: str) -> None:
-        """Shut down on a thread of its own (for the Slave API, which runs on the loop)."""
+        """Shut down on a thread of its own (for the Slave API, which runs on the loop).
+
+        The Slave API stops taking connections at once, as rospy's has closed by the time it
+        answers ``shutdown``: a ``rosnode ping`` right after ``rosnode kill`` finds no node.
+        """
+        if self._xmlrpc is not None:
+            self._xmlrpc.stop_listening()
         threading.Thread(target=self.shutdown, args=(reason,), daemon=True).start()
 
     def _check_alive(self) -> None:
@@ -402,7 +413,7 @@ class Node:
         subscription = self.subscriptions.get(topic)
         if subscription is not None:
             subscription.updates += 1
-            subscription.set_publishers(uris)
+            subscription.set_publishers(uris, additive=time.monotonic() < subscription.keep_until)
 
     async def _call_peer(self, uri: str, method: str, *params: object) -> Any:
         assert self._aclient is not None
@@ -430,10 +441,13 @@ class Node:
         handler: Callable[[Any], object],
         *,
         server_class: type[ServiceServer] = ServiceServer,
+        on_exception: Callable[[Exception], object] | None = None,
     ) -> ServiceHandle:
         """Serve ``name``: ``handler(request)`` runs on a pool thread for each call.
 
-        ``server_class`` decides how failures are answered (rospy's way by default).
+        ``server_class`` decides how failures are answered (rospy's way by default);
+        ``on_exception`` gets what a handler raises (other than `ServiceError`) instead of the
+        node's error log.
         """
         self._check_alive()
         resolved = self.resolve(name)
@@ -447,6 +461,7 @@ class Node:
                 handler=handler,
                 executor=self._workers,
                 on_error=self._log_error,
+                on_exception=on_exception,
             )
             server.uri = format_rosrpc_uri(self.host, self._tcpros.port)
             self.services[resolved] = server

@@ -9,7 +9,8 @@ Handlers run on a thread pool, never on the loop. What a handler returns becomes
 by rospy's rules (`to_response`): a response instance as is, a dict as keyword fields, a list or
 tuple as positional fields, any other value as the only field. A handler that raises
 `ServiceError` answers ``ok=0`` with ``service cannot process request: <text>``; any other
-exception with ``error processing request: <text>``, and is reported through ``on_error``.
+exception with ``error processing request: <text>``, and is reported through ``on_exception``
+(rospy's ``error_handler``) when given, else through ``on_error``.
 """
 
 from __future__ import annotations
@@ -72,6 +73,7 @@ class ServiceServer:
         handler: Callable[[Any], object],
         executor: Executor,
         on_error: Callable[[str], None] | None = None,
+        on_exception: Callable[[Exception], object] | None = None,
     ) -> None:
         self.io = io
         self.name = name
@@ -79,6 +81,7 @@ class ServiceServer:
         self.handler = handler
         self._executor = executor
         self._on_error = on_error
+        self._on_exception = on_exception
         request_class = service_class._request_class
         response_class = service_class._response_class
         self.info = ServiceInfo(
@@ -105,9 +108,18 @@ class ServiceServer:
         except ServiceError as exc:
             return encode_error(f"service cannot process request: {exc}")
         except Exception as exc:  # the client gets the text; the server goes on
-            if self._on_error is not None:
-                self._on_error(f"Error processing request: {exc}")
+            self._report(exc)
             return encode_error(f"error processing request: {exc}")
+
+    def _report(self, exc: Exception) -> None:
+        if self._on_exception is not None:
+            try:
+                self._on_exception(exc)
+            except Exception as failure:  # a failing error handler must not stop the answer
+                if self._on_error is not None:
+                    self._on_error(f"Error handler of [{self.name}] failed: {failure}")
+        elif self._on_error is not None:
+            self._on_error(f"Error processing request: {exc}")
 
     async def serve(
         self,

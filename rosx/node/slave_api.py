@@ -162,16 +162,16 @@ class SlaveApi:
         self.node.publisher_update(name, uris)
         return [1, "", 0]
 
-    def request_topic(self, caller_id: str, topic: object, protocols: object) -> list[Any]:
+    def request_topic(self, caller_id: str, topic: object, protocols: Any) -> list[Any]:
         name = _topic(caller_id, "topic", topic)
         if not protocols:
             raise _Invalid("ERROR: parameter [protocols] must be specified and non-empty")
         publication = self.node.publications.get(name)
         if publication is None:
             return [-1, f"Not a publisher of [{name}]", []]
-        assert isinstance(protocols, list)
+        # Python's own failures on odd protocol lists are rospy's answers (see `_checked`).
         for protocol in protocols:
-            if isinstance(protocol, list) and protocol and protocol[0] == "TCPROS":
+            if protocol[0] == "TCPROS":
                 host, port = self.node.tcpros_address()
                 return [1, f"ready on {host}:{port}", ["TCPROS", host, port]]
         return [0, "no supported protocol implementations", []]
@@ -194,6 +194,8 @@ def _checked(
             return handler(*args)
         except _Invalid as exc:
             return [-1, str(exc) or "error", error_value]
+        except TypeError as exc:  # rospy's reading: arguments of the wrong shape
+            return [-1, f"Error: invalid arguments: {exc}", error_value]
         except Exception as exc:  # rospy answers code 0 for its own failures
             return [0, f"Internal failure: {exc}", error_value]
 

@@ -132,6 +132,9 @@ class Subscription:
             on_error=self._callback_failed,
         )
         self.updates = 0
+        #: Until this `time.monotonic` instant a ``publisherUpdate`` adds publishers and drops
+        #: none (set while the nodes register again with a restarted master).
+        self.keep_until = 0.0
         self.closed = False
 
     @staticmethod

@@ -1,7 +1,8 @@
 """The package index: layer 1b of rosx, below the message system.
 
 - `crawl`: ``ROS_PACKAGE_PATH`` crawled as rospack crawls it, and the package directories
-  shipped with rosx (turtlesim's).
+  shipped with rosx (``noetic/share/``: Noetic's core packages, the standard messages, the
+  tutorials' packages; and turtlesim's).
 - `manifest`: ``package.xml``, read and checked as catkin does.
 - `index`: rospack's view of the packages (find, list, depends): the one package index, used by
   the type store (`rosx.msg.store`, for ``msg/`` and ``srv/`` folders), ``rospack``, ``rosrun``,

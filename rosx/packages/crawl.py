@@ -4,6 +4,13 @@ A package is a directory holding a ``package.xml``; its name is the manifest's `
 crawl does not descend into a package, into hidden directories, or below a directory holding
 ``CATKIN_IGNORE`` or ``rospack_nosubdirs``. When a name occurs twice, the first one on the path
 wins, as with rospack.
+
+The packages rosx ships are data files of the wheel, under one prefix laid out as Noetic's
+``/opt/ros/noetic`` (`PREFIX`): ``share/<package>/`` holds a package's ``package.xml`` (with
+Noetic's dependency facts), its ``msg/`` and ``srv/`` files (the original texts, comments
+included) and its scripts; ``lib/<package>/`` holds the programs rosrun finds there, as catkin's
+``libexec`` folders. turtlesim's package directory is the ``rosx_turtle`` Python package itself,
+beside its code (`BUNDLED_MODULES`).
 """
 
 from __future__ import annotations
@@ -15,6 +22,9 @@ from functools import cache
 from pathlib import Path
 
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
+
+#: The install prefix of the ROS packages shipped with rosx (``share/``, ``lib/``).
+PREFIX = Path(__file__).parent / "noetic"
 
 #: Python packages shipped with rosx that hold ROS package directories (found, not imported).
 BUNDLED_MODULES = ("rosx_turtle",)
@@ -64,11 +74,24 @@ def _crawl(directory: Path, found: dict[str, Path]) -> None:
 
 @cache
 def bundled_packages() -> dict[str, Path]:
-    """The ROS package directories shipped with rosx (turtlesim's), by name."""
-    found: dict[str, Path] = {}
+    """The ROS package directories shipped with rosx (`PREFIX`'s and turtlesim's), by name."""
+    # rosx's own folders are named as their packages (a test checks it): no manifest is read.
+    # share/ros is ROS_ROOT, without a package.xml (see its README).
+    share = PREFIX / "share"
+    found = {
+        entry.name: share / entry.name
+        for entry in sorted(share.iterdir(), key=str)
+        if (entry / "package.xml").is_file()
+    }
     for module in BUNDLED_MODULES:
         spec = importlib.util.find_spec(module)
         if spec is not None and spec.origin is not None:
             for name, directory in find_packages([Path(spec.origin).parent]).items():
                 found.setdefault(name, directory)
     return found
+
+
+def bundled_libexec(package: str) -> Path | None:
+    """The folder of programs rosx ships for ``package`` (``lib/<package>``), if it has one."""
+    folder = PREFIX / "lib" / package
+    return folder if folder.is_dir() else None

@@ -1,14 +1,14 @@
 """The package index: which ROS packages exist and where, as ``rospack`` answers them.
 
 Packages are the directories holding a ``package.xml`` on ``ROS_PACKAGE_PATH`` (crawled as
-rospack crawls it, `rosx.packages.crawl`), then the packages shipped with rosx that have a
-directory (turtlesim). Others rosx provides without a directory (``rospy``, ``roscpp``,
-``std_msgs``, ``geometry_msgs``…) count as known when they are depended on, so that
-``rospack depends`` of a package made by ``catkin_create_pkg lab2 std_msgs rospy roscpp`` lists
-its dependencies, but ``rospack find`` does not name a directory for them. Which packages the
-message layer provides is not known here (the index sits below it): the caller passes that
-test as ``provides`` (``rospack`` passes the type store's ``has_package``). Dependencies that
-are not known at all are skipped silently, as rospack skips system dependencies.
+rospack crawls it, `rosx.packages.crawl`), then the packages shipped with rosx: Noetic's core
+(``roscpp``, ``rospy``, ``std_msgs``, ``catkin``…, with their ``package.xml`` dependencies, so
+``rospack depends`` answers as on Noetic), the tutorials' packages and turtlesim. A few
+packages whose types the message layer knows without a directory (``actionlib``, ``bond``)
+count as known when depended on, without a directory for ``rospack find``: the index sits below
+the message layer, so the caller passes that test as ``provides`` (``rospack`` passes the type
+store's ``has_package``). Dependencies that are not known at all are skipped silently, as
+rospack skips system dependencies.
 
 The type store (`rosx.msg.store`) finds packages' ``msg/`` and ``srv/`` folders through this
 index, and ``rospack``, ``rosrun``, ``roscd`` through it too: one crawl of the package path.
@@ -27,24 +27,6 @@ if TYPE_CHECKING:
     from pathlib import Path
 
     from rosx.packages.manifest import Manifest
-
-#: Packages of ROS 1's core that rosx stands in for, without a directory of theirs.
-CORE_PACKAGES = frozenset(
-    {
-        "catkin",
-        "genmsg",
-        "genpy",
-        "message_generation",
-        "message_runtime",
-        "rosbash",
-        "roscpp",
-        "rosgraph",
-        "roslib",
-        "rospack",
-        "rospy",
-        "rostime",
-    }
-)
 
 
 class PackageNotFoundError(LookupError):
@@ -100,7 +82,7 @@ class PackageIndex:
 
     def is_known(self, name: str) -> bool:
         """Whether ``name`` is a package: with a directory, or one rosx provides."""
-        if name in self.packages or name in CORE_PACKAGES:
+        if name in self.packages:
             return True
         return self._provides is not None and self._provides(name)
 
@@ -159,4 +141,4 @@ class PackageIndex:
         return users
 
 
-__all__ = ["CORE_PACKAGES", "PackageIndex", "PackageNotFoundError", "bundled_packages"]
+__all__ = ["PackageIndex", "PackageNotFoundError", "bundled_packages"]

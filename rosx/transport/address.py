@@ -67,6 +67,20 @@ def http_uri(host: str, port: int) -> str:
     return f"http://{host}:{port}/"
 
 
+def uri_hostname(uri: str) -> str:
+    """The host of a node's URI as ``urllib.parse`` reads it (lower case, IPv6 unbracketed).
+
+    Empty when the URI names none or does not parse (``http://[::1/``): a node may register
+    any string with the master.
+    """
+    from urllib.parse import urlsplit  # noqa: PLC0415 -- only the tools that group by host
+
+    try:
+        return urlsplit(uri).hostname or ""
+    except ValueError:
+        return ""
+
+
 def _is_url_scheme(text: str) -> bool:
     return (
         bool(text)

@@ -2,7 +2,8 @@
 
 A call either returns the server's value, or raises one of:
 
-* `ConnectError`: no connection could be opened (refused, unreachable, unknown host);
+* `ConnectError`: no connection could be opened (refused, unreachable, unknown host), or
+  none was tried since the URI is not an ``http://host:port/`` one (`InvalidUriError`);
 * `CallTimeoutError`: no complete reply arrived in time;
 * `BadReplyError`: the peer answered with something that is not an XML-RPC response (an HTTP
   error, malformed XML, a connection closed half-way);
@@ -26,7 +27,15 @@ class TransportError(Exception):
 
 
 class ConnectError(TransportError):
-    """No connection to the server at `uri` could be opened."""
+    """No connection to the server at `uri` could be opened; `errno` says why, when known."""
+
+    def __init__(self, uri: str, message: str, errno: int | None = None) -> None:
+        super().__init__(uri, message)
+        self.errno = errno
+
+
+class InvalidUriError(ConnectError):
+    """`uri` is not an ``http://host:port/`` URI (a peer may register any string): not called."""
 
 
 class CallTimeoutError(TransportError):

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import errno
 
-from rosx.transport.errors import BadReplyError, ConnectError, FaultError
+from rosx.transport.errors import BadReplyError, ConnectError, FaultError, InvalidUriError
 from rosx.wire.errors import ProtocolError
 from rosx.wire.xmlrpc import Fault, decode_response, encode_call
 from rosx.wire.xmlrpc_http import build_request, parse_http_uri
@@ -38,13 +38,13 @@ def prepare(uri: str, method: str, params: Iterable[object]) -> tuple[Key, bytes
     """The connection key and the request bytes for calling `method` on the server at `uri`.
 
     Raises:
-        ConnectError: `uri` is not an ``http://host:port/`` URI.
+        InvalidUriError: `uri` is not an ``http://host:port/`` URI.
         ProtocolError: a parameter cannot be carried by XML-RPC (e.g. ``None``).
     """
     try:
         host, port, path = parse_http_uri(uri)
     except ProtocolError as exc:
-        raise ConnectError(uri, f"cannot call {uri!r}: {exc}") from None
+        raise InvalidUriError(uri, f"cannot call {uri!r}: {exc}") from None
     authority = f"[{host}]:{port}" if ":" in host else f"{host}:{port}"
     return (host, port), build_request(authority, path, encode_call(method, params))
 
@@ -52,7 +52,7 @@ def prepare(uri: str, method: str, params: Iterable[object]) -> tuple[Key, bytes
 def connect_error(uri: str, exc: OSError) -> ConnectError:
     """The `ConnectError` for a failed connection attempt, naming the cause."""
     reason = _REASONS.get(exc.errno or 0) or exc.strerror or str(exc) or type(exc).__name__
-    return ConnectError(uri, f"cannot connect to {uri}: {reason}")
+    return ConnectError(uri, f"cannot connect to {uri}: {reason}", exc.errno)
 
 
 def interpret(uri: str, response: HttpResponse) -> Any:

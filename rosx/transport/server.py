@@ -15,6 +15,12 @@ an unknown method, gets an XML-RPC fault on a connection that stays open.
 
 A handler may return `EncodedResponse` to send a ``methodResponse`` body it encoded (and may
 have cached) itself.
+
+A connection that sends nothing for `IDLE_TIMEOUT` seconds while no call of its own is being
+answered is closed (neither rosmaster nor ROS 1's nodes ever close one, so a master there dies
+of 1 024 forgotten connections). Clients lose nothing: rosx's clients, Python's
+``xmlrpc.client`` (rospy, the ROS 1 tools) and roscpp's XmlRpc++ all reopen a kept-alive
+connection the server closed and send the call again.
 """
 
 from __future__ import annotations
@@ -26,7 +32,7 @@ from collections.abc import Mapping
 
 from rosx.transport.address import http_uri
 from rosx.transport.errors import FaultError
-from rosx.wire.errors import HttpError, ProtocolError
+from rosx.wire.errors import HttpError, ProtocolError, UnencodableError
 from rosx.wire.xmlrpc import decode_call, encode_fault, encode_response
 from rosx.wire.xmlrpc_http import (
     DEFAULT_MAX_BODY_SIZE,
@@ -44,6 +50,13 @@ if TYPE_CHECKING:
 
 _log = logging.getLogger(__name__)
 _READ_SIZE = 1 << 16
+
+#: Seconds a connection may stay silent between calls before the server closes it. Longer than
+#: any pause inside a working client's burst of calls (a tool's, a launch's registrations, a
+#: node's once-a-second master watch), so busy connections are never cut; short enough that
+#: the file descriptors of connections abandoned by hung or careless clients come back within
+#: half a minute. Reopening one costs a client a loopback handshake, well under a millisecond.
+IDLE_TIMEOUT = 30.0
 
 
 class EncodedResponse:
@@ -90,6 +103,8 @@ class XmlRpcServer:
         advertised_host: The host written in `uri`; `host` if not given.
         multicall: Also serve ``system.multicall``, as rosmaster does (roslaunch uses it).
         max_body_size: Largest request body accepted (413 beyond it).
+        idle_timeout: Seconds of silence after which a connection is closed (`IDLE_TIMEOUT`
+            unless given).
     """
 
     def __init__(
@@ -101,6 +116,7 @@ class XmlRpcServer:
         advertised_host: str | None = None,
         multicall: bool = False,
         max_body_size: int = DEFAULT_MAX_BODY_SIZE,
+        idle_timeout: float | None = None,
     ) -> None:
         if isinstance(handlers, Mapping):
             self._methods: dict[str, Handler] = dict(handlers)
@@ -113,7 +129,11 @@ class XmlRpcServer:
         self._requested_port = port
         self._max_body_size = max_body_size
         self._server: asyncio.Server | None = None
-        self._connections: set[asyncio.Task[None]] = set()
+        # Each connection's task and when it last received bytes (None while a call of its
+        # own is being answered, which no timeout cuts short).
+        self._connections: dict[asyncio.Task[None], float | None] = {}
+        self.idle_timeout = IDLE_TIMEOUT if idle_timeout is None else idle_timeout
+        self._sweeper: asyncio.Task[None] | None = None
         self.port = 0
 
     @property
@@ -133,10 +153,20 @@ class XmlRpcServer:
             self._serve, self.host, self.port or self._requested_port, backlog=128
         )
         self.port = self._server.sockets[0].getsockname()[1]
+        if self._sweeper is None:
+            self._sweeper = asyncio.get_running_loop().create_task(self._sweep())
+
+    def stop_listening(self) -> None:
+        """Refuse new connections from now on; calls under way still get their replies."""
+        if self._server is not None:
+            self._server.close()
 
     async def close(self) -> None:
         """Stop listening and close every connection."""
         server, self._server = self._server, None
+        sweeper, self._sweeper = self._sweeper, None
+        if sweeper is not None:
+            sweeper.cancel()
         if server is not None:
             server.close()
         tasks = list(self._connections)
@@ -149,24 +179,41 @@ class XmlRpcServer:
 
     # -- connections --------------------------------------------------------------------------
 
+    async def _sweep(self) -> None:
+        """Close connections silent for `idle_timeout`, checked a few times per timeout (one
+        timer per server rather than one per read keeps the per-call cost at a clock read)."""
+        loop = asyncio.get_running_loop()
+        period = max(self.idle_timeout / 4, 0.05)
+        while True:
+            await asyncio.sleep(period)
+            limit = loop.time() - self.idle_timeout
+            for task, since in list(self._connections.items()):
+                if since is not None and since < limit:
+                    task.cancel()
+
     async def _serve(self, reader: asyncio.StreamReader, writer: asyncio.StreamWriter) -> None:
         task = asyncio.current_task()
         assert task is not None
-        self._connections.add(task)
+        self._connections[task] = asyncio.get_running_loop().time()
         try:
-            await self._serve_requests(reader, writer)
+            await self._serve_requests(task, reader, writer)
         except (ConnectionError, TimeoutError, asyncio.CancelledError):
             pass  # the peer went away, or the server is closing
         except OSError as exc:
             _log.debug("XML-RPC connection failed: %s", exc)
         finally:
-            self._connections.discard(task)
+            self._connections.pop(task, None)
             writer.close()
 
     async def _serve_requests(
-        self, reader: asyncio.StreamReader, writer: asyncio.StreamWriter
+        self,
+        task: asyncio.Task[None],
+        reader: asyncio.StreamReader,
+        writer: asyncio.StreamWriter,
     ) -> None:
         requests = RequestReader(max_body_size=self._max_body_size)
+        clock = asyncio.get_running_loop().time
+        connections = self._connections
         while True:
             try:
                 request = requests.next_request()
@@ -178,17 +225,20 @@ class XmlRpcServer:
                 data = await reader.read(_READ_SIZE)
                 if not data:
                     return
+                connections[task] = clock()
                 requests.feed(data)
                 continue
             if request.method != "POST":
                 writer.write(build_error_response(501, f"Unsupported method ({request.method!r})"))
                 await writer.drain()
                 return
+            connections[task] = None
             body = await self.respond(request.body)
             writer.write(build_response(body, keep_alive=request.keep_alive))
             await writer.drain()
             if not request.keep_alive:
                 return
+            connections[task] = clock()
 
     # -- calls ----------------------------------------------------------------------------------
 
@@ -212,6 +262,8 @@ class XmlRpcServer:
             return encode_response(result)
         except ProtocolError as exc:
             _log.error("XML-RPC handler %s returned an unencodable value: %s", call.method, exc)
+            if isinstance(exc, UnencodableError):  # rosmaster's and rospy's answer, word for word
+                return encode_fault(1, exc.python_fault)
             return encode_fault(*_python_fault(exc))
 
     async def _invoke(self, method: str, params: tuple[Any, ...] | list[Any]) -> Any:

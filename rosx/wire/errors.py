@@ -31,3 +31,15 @@ class HttpError(ProtocolError):
     def __init__(self, status: int, message: str) -> None:
         super().__init__(message)
         self.status = status
+
+
+class UnencodableError(ProtocolError):
+    """A value XML-RPC cannot carry; `python_fault` is how Python's marshaller refuses it.
+
+    ROS 1's servers (rosmaster, rospy nodes) answer such a reply with a fault of that text, which
+    their peers show to users; a server that wants to answer as they do uses it.
+    """
+
+    def __init__(self, message: str, python_fault: str) -> None:
+        super().__init__(message)
+        self.python_fault = python_fault

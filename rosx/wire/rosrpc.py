@@ -22,6 +22,7 @@ import ipaddress
 import struct
 
 from rosx.record import Record
+from rosx.wire._digits import is_ascii_number
 from rosx.wire.errors import OversizedError, ProtocolError
 from rosx.wire.framing import DEFAULT_MAX_FRAME_SIZE, DEFAULT_MAX_HEADER_SIZE
 from rosx.wire.header import Refused, decode_header
@@ -160,7 +161,7 @@ def parse_rosrpc_uri(uri: str) -> tuple[str, int]:
     else:
         host, _, port = hostport.rpartition(":")
         valid = ":" not in host or _is_ipv6(host)
-    if not (valid and host and port.isdigit()):
+    if not (valid and host and is_ascii_number(port)):
         raise ProtocolError(f"ROS service URL is invalid: {uri}")
     return host, int(port)
 

@@ -7,9 +7,11 @@ with no HTTP and no sockets (see `xmlrpc_http` for the HTTP framing).
 Types, both ways: ``int`` (``<int>``; ``<i4>`` and ``<i8>`` are read too), ``bool``
 (``<boolean>``), ``str`` (``<string>``, and a ``<value>`` with no type element), ``float``
 (``<double>``), ``bytes`` (``<base64>``), lists and tuples (``<array>``), dicts with str keys
-(``<struct>``). Read only: ``<dateTime.iso8601>`` (a naive `datetime.datetime`) and ``<nil/>``
-(``None``). Encoding refuses ints outside int32 (ROS 1 peers would fault), ``None`` and any other
-type with `ProtocolError`.
+(``<struct>``), ``xmlrpc.client.DateTime`` (``<dateTime.iso8601>``: its text, kept as sent, as
+Python's XML-RPC, and so rospy and rosmaster, keep it, whether or not it is a valid date).
+Written only: `datetime.datetime` (as a ``<dateTime.iso8601>``, in Python's format). Read only:
+``<nil/>`` (``None``). Encoding refuses ints outside int32 (ROS 1 peers would fault), ``None``
+and any other type with `ProtocolError`.
 
 The output keeps to what roscpp's XmlRpc++ can read: no self-closing ``<string/>`` or ``<data/>``,
 no whitespace inside the envelope, only ``&``, ``<`` and ``>`` escaped. Decoding uses expat,
@@ -22,16 +24,17 @@ tools must start fast) and is slower on the master's large replies.
 from __future__ import annotations
 
 import binascii
+import sys
 from xml.parsers import expat
 
 from rosx.record import Record
-from rosx.wire.errors import ProtocolError
+from rosx.wire.errors import ProtocolError, UnencodableError
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    import datetime
     from collections.abc import Callable, Iterable
     from typing import Any, TypeAlias
+    from xmlrpc.client import DateTime
 
     _Parsed: TypeAlias = tuple[list[str], str | None, list[Any]]
 
@@ -105,16 +108,20 @@ def _dump(value: object, append: Callable[[str], None]) -> None:
         )
     elif isinstance(value, int):
         if not _INT_MIN <= value <= _INT_MAX:
-            raise ProtocolError(
+            raise UnencodableError(
                 f"int {value} is outside XML-RPC's 32-bit range, which ROS 1 peers refuse; "
-                "send it as a double or a string"
+                "send it as a double or a string",
+                "<class 'OverflowError'>:int exceeds XML-RPC limits",
             )
         append(f"<value><int>{int.__repr__(value)}</int></value>")
     elif isinstance(value, dict):
         append("<value><struct>")
         for key, item in value.items():
             if not isinstance(key, str):
-                raise ProtocolError(f"XML-RPC struct keys must be strings, not {key!r}")
+                raise UnencodableError(
+                    f"XML-RPC struct keys must be strings, not {key!r}",
+                    "<class 'TypeError'>:dictionary key must be string",
+                )
             append(f"<member><name>{_escape(key)}</name>")
             _dump(item, append)
             append("</member>")
@@ -125,9 +132,33 @@ def _dump(value: object, append: Callable[[str], None]) -> None:
         encoded = binascii.b2a_base64(value, newline=False).decode("ascii")
         append(f"<value><base64>{encoded}</base64></value>")
     elif value is None:
-        raise ProtocolError("XML-RPC cannot carry None (nil); ROS 1 peers refuse it")
+        raise UnencodableError(
+            "XML-RPC cannot carry None (nil); ROS 1 peers refuse it",
+            "<class 'TypeError'>:cannot marshal None unless allow_none is enabled",
+        )
     else:
-        raise ProtocolError(f"XML-RPC cannot carry a value of type {type(value).__name__}")
+        text = _date_time_text(value)
+        if text is None:
+            raise UnencodableError(
+                f"XML-RPC cannot carry a value of type {type(value).__name__}",
+                f"<class 'TypeError'>:cannot marshal {type(value)} objects",
+            )
+        append(f"<value><dateTime.iso8601>{_escape(text)}</dateTime.iso8601></value>")
+
+
+def _date_time_text(value: object) -> str | None:
+    """The ``<dateTime.iso8601>`` text of a ``DateTime`` or ``datetime``, else None."""
+    # Either class is only ever held once its module is loaded: look, never import.
+    client = sys.modules.get("xmlrpc.client")
+    if client is not None and isinstance(value, client.DateTime):
+        return str(value.value)
+    clock = sys.modules.get("datetime")
+    if clock is not None and isinstance(value, clock.datetime):
+        return (
+            f"{value.year:04d}{value.month:02d}{value.day:02d}"
+            f"T{value.hour:02d}:{value.minute:02d}:{value.second:02d}"
+        )
+    return None
 
 
 def encode_value(value: object) -> str:
@@ -200,10 +231,11 @@ def _refuse_doctype(*_: object) -> None:
     raise ProtocolError("XML-RPC documents must not contain a DTD (<!DOCTYPE ...>)")
 
 
-def _datetime(text: str) -> datetime.datetime:
-    import datetime  # noqa: PLC0415 -- rarely used; importing it at the top slows start-up
+def _date_time(text: str) -> DateTime:
+    # The value class rospy hands its users; rare, and costly to import at start-up.
+    from xmlrpc.client import DateTime  # noqa: PLC0415
 
-    return datetime.datetime.strptime(text.strip().replace("-", ""), "%Y%m%dT%H:%M:%S")
+    return DateTime(text.strip())
 
 
 def _scalar(tag: str, text: str) -> object:
@@ -220,13 +252,12 @@ def _scalar(tag: str, text: str) -> object:
         elif tag == "base64":
             return binascii.a2b_base64(text.encode("ascii"))
         elif tag == "dateTime.iso8601":
-            return _datetime(text)
+            return _date_time(text)
         elif tag == "nil":
             return None
     except (ValueError, UnicodeEncodeError):  # binascii.Error is a ValueError
         pass
-    expected = ", not YYYYMMDDTHH:MM:SS" if tag == "dateTime.iso8601" else ""
-    raise ProtocolError(f"XML-RPC: <{tag}> holds {text!r}{expected}")
+    raise ProtocolError(f"XML-RPC: <{tag}> holds {text!r}")
 
 
 def _parse_document(data: bytes) -> _Parsed:  # noqa: PLR0915 -- one state machine

@@ -18,6 +18,7 @@ exact text ``Content-length: `` (case-insensitively) and keeps a connection open
 from __future__ import annotations
 
 from rosx.record import Record
+from rosx.wire._digits import is_ascii_number
 from rosx.wire.errors import HttpError, ProtocolError
 
 #: Largest head (start line and headers) accepted, in bytes.
@@ -122,11 +123,13 @@ def parse_http_uri(uri: str) -> tuple[str, int, str]:
     authority, path = (rest, "/") if slash < 0 else (rest[:slash], rest[slash:])
     authority = authority.rpartition("@")[2]
     if authority.startswith("["):
-        host, _, after = authority[1:].partition("]")
+        host, bracket, after = authority[1:].partition("]")
+        if not bracket:
+            raise ProtocolError(f"invalid host or port in URI {uri!r}")
         port_text = after[1:] if after.startswith(":") else after
     else:
         host, _, port_text = authority.partition(":")
-    if not host or (port_text and not port_text.isdigit()) or int(port_text or 80) > 0xFFFF:
+    if not host or (port_text and not is_ascii_number(port_text)) or int(port_text or 80) > 0xFFFF:
         raise ProtocolError(f"invalid host or port in URI {uri!r}")
     return host, int(port_text or 80), path
 
@@ -200,7 +203,7 @@ def _body_length(headers: dict[str, str], limit: int) -> int | None:
     text = headers.get("content-length")
     if text is None:
         return None
-    if not text.isdigit():
+    if not is_ascii_number(text):
         raise HttpError(400, f"invalid Content-Length {text!r}")
     length = int(text)
     if length > limit:
@@ -334,7 +337,7 @@ class ResponseReader(_Reader):
                 return None
             version, _, rest = lines[0].decode("latin-1").partition(" ")
             code, _, reason = rest.partition(" ")
-            if not version.startswith("HTTP/1.") or len(code) != 3 or not code.isdigit():
+            if not version.startswith("HTTP/1.") or len(code) != 3 or not is_ascii_number(code):
                 raise ProtocolError(f"malformed HTTP status line {lines[0][:80]!r}")
             if code.startswith("1"):
                 continue  # interim response (100 Continue): the real one follows

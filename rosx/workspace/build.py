@@ -5,10 +5,12 @@ made next to it. There is nothing to compile: building a package means checking 
 as catkin does and loading each of its ``msg/*.msg`` and ``srv/*.srv`` types the way a node
 will (parsed, embedded types found, md5 sums computed, classes built), so a mistake is reported
 now, naming the file and the line, rather than when a script imports the type. ``devel/``
-receives ``setup.sh``, ``setup.bash`` and ``setup.zsh``, which put the source space on
-``ROS_PACKAGE_PATH`` (where rosx finds packages and their types), rosx's ``rospy`` on
-``PYTHONPATH`` and define ``roscd``/``rosls``, and ``.catkin``, which marks ``devel/`` as a
-workspace (``roscd`` with no argument goes there).
+receives ``setup.sh``, ``setup.bash`` and ``setup.zsh``, which export Noetic's environment
+with the source space in front of ``ROS_PACKAGE_PATH`` (where rosx finds packages and their
+types), put rosx's ``rospy`` on ``PYTHONPATH`` and define ``roscd``/``rosls``, and ``.catkin``,
+which marks ``devel/`` as a workspace (``roscd`` with no argument goes there). With the
+``install`` target, ``install/`` is written too (`rosx.workspace.install`). C++ targets are
+named once, as not built: rosx compiles nothing.
 
 `CatkinMake.run` yields the lines catkin_make prints while it works, in its style
 (``-- +++ processing catkin package: 'lab2'``, ``[100%] Built target …``), and raises
@@ -145,12 +147,14 @@ class CatkinMake:
         shim_dirs: Sequence[Path],
         rosx: str,
         only: list[str] | None = None,
+        install: bool = False,
     ) -> None:
         self.layout = layout
         self.environ = environ
         self.shim_dirs = list(shim_dirs)
         self.rosx = rosx
         self.only = only
+        self.install = install
         self.warnings: list[str] = []
 
     def check_layout(self) -> None:
@@ -210,6 +214,9 @@ class CatkinMake:
             yield f"-- ~~  - {manifest.name}"
         yield _RULE
         built: list[PackageTypes] = []
+        cpp = _cpp_targets(ordered)
+        if cpp:
+            yield NO_CPP + "; ".join(f"{pkg} ({', '.join(names)})" for pkg, names in cpp)
         for manifest in ordered:
             yield f"-- +++ processing catkin package: '{manifest.name}'"
             yield f"-- ==> add_subdirectory({manifest.directory.relative_to(layout.source)})"
@@ -229,6 +236,12 @@ class CatkinMake:
         yield f"-- Build files have been written to: {layout.build}"
         self._write(built)
         yield from _progress(built)
+        if self.install:
+            from rosx.workspace.install import install_space  # noqa: PLC0415
+
+            yield "Install the project..."
+            for path in install_space(layout, ordered, self._setup_files):
+                yield f"-- Installing: {path}"
 
     def _write(self, built: list[PackageTypes]) -> None:
         layout = self.layout
@@ -240,18 +253,22 @@ class CatkinMake:
         devel.mkdir(parents=True, exist_ok=True)
         (devel / ".catkin").write_text(str(layout.source), encoding="utf-8")
         (devel / ".built_by").write_text("catkin_make", encoding="utf-8")
-        (devel / "setup.sh").write_text(
-            setup_sh(
-                source=str(layout.source),
-                devel=str(devel),
+        for name, text in self._setup_files(layout.source, devel).items():
+            (devel / name).write_text(text, encoding="utf-8")
+
+    def _setup_files(self, source: Path, space: Path) -> dict[str, str]:
+        """The setup files of a space (devel or install) whose packages are in ``source``."""
+        files = {
+            "setup.sh": setup_sh(
+                source=str(source),
+                devel=str(space),
                 shims=[str(d) for d in self.shim_dirs],
                 rosx=self.rosx,
-            ),
-            encoding="utf-8",
-        )
+            )
+        }
         for shell in ("bash", "zsh"):
-            text = setup_for_shell(shell, str(devel), self.rosx)
-            (devel / f"setup.{shell}").write_text(text, encoding="utf-8")
+            files[f"setup.{shell}"] = setup_for_shell(shell, str(space), self.rosx)
+        return files
 
 
 def _with_dependencies(manifests: list[Manifest], names: list[str]) -> list[Manifest]:
@@ -271,6 +288,21 @@ def _with_dependencies(manifests: list[Manifest], names: list[str]) -> list[Mani
             wanted.add(name)
             todo += _needs(by_name[name], by_name)
     return [m for m in manifests if m.name in wanted]
+
+
+#: What catkin_make says, once, when packages have C++ targets.
+NO_CPP = "-- rosx compiles no C++: these C++ targets are not built (rosx runs Python nodes only): "
+
+
+def _cpp_targets(manifests: list[Manifest]) -> list[tuple[str, list[str]]]:
+    from rosx.workspace.cmake import cpp_targets  # noqa: PLC0415
+
+    found = []
+    for manifest in manifests:
+        names = cpp_targets(manifest.directory / "CMakeLists.txt")
+        if names:
+            found.append((manifest.name, names))
+    return found
 
 
 def _progress(built: list[PackageTypes]) -> Iterator[str]:

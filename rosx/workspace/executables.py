@@ -3,8 +3,14 @@
 ROS 1's rosrun searches the whole package directory (following symbolic links, skipping
 ``build/``) for regular files of the given name with any execute bit set; a name containing
 ``/`` is taken as a path inside the package instead. `find_executables` does the same, and
-also lists the same-named files that are not executable, which rosrun reports. For a name not
-found, `suggestion` picks the executable the user most likely meant.
+also lists the same-named files that are not executable, which rosrun reports. Like rosrun (with
+``catkin_find --libexec``) it looks first in an installed package's ``lib/PKG`` folder. For a
+name not found, `suggestion` picks the executable the user most likely meant.
+
+`bundled_program` finds the programs of the packages rosx ships (turtlesim's ``turtlesim_node``,
+``mimic``…, roscpp_tutorials' in ``lib/roscpp_tutorials``, rospy_tutorials' scripts):
+they are rosx's whatever else ``ROS_PACKAGE_PATH`` holds under the same package
+name, as ``rosx rosrun turtlesim …`` runs rosx's turtlesim. ``roslaunch`` starts them from there.
 
 `is_python_script` tells the scripts rosx runs with its own Python and ``rospy``, whatever their
 ``#!`` line says: a ``#!`` line naming python, or no ``#!`` line and a ``.py`` name.
@@ -52,15 +58,27 @@ def _runnable(path: Path) -> bool:
         return False
 
 
+def libexec_dir(package_dir: Path) -> Path | None:
+    """Where an installed package's programs are: ``PREFIX/lib/PKG`` for a package in
+    ``PREFIX/share/PKG`` (catkin's ``CATKIN_PACKAGE_BIN_DESTINATION``), if it exists."""
+    if package_dir.parent.name != "share":
+        return None
+    folder = package_dir.parent.parent / "lib" / package_dir.name
+    return folder if folder.is_dir() else None
+
+
 def find_executables(package_dir: Path, name: str) -> Search:
-    """The files called ``name`` below ``package_dir`` (``name`` may be a relative path)."""
+    """The files called ``name`` in the package's ``lib/PKG`` folder (`libexec_dir`) and below
+    ``package_dir`` (``name`` may be a relative path)."""
     if "/" in name:
         path = package_dir / name
         runnable = [path] if _runnable(path) else []
         return Search(runnable, [] if runnable or not path.exists() else [path])
     executables: list[Path] = []
     others: list[Path] = []
-    for path in _walk(package_dir):
+    libexec = libexec_dir(package_dir)
+    searched = [*(_walk(libexec) if libexec else []), *_walk(package_dir)]
+    for path in searched:
         if path.name != name:
             continue
         (executables if _runnable(path) else others).append(path)
@@ -84,6 +102,20 @@ def suggestion(name: str, following: list[str], known: list[str]) -> str | None:
     return close[0] if close else None
 
 
+def bundled_program(package: str, name: str) -> Path | None:
+    """The executable ``name`` of the package ``package`` that rosx ships, if it has one."""
+    if "/" in name:
+        return None
+    from rosx.packages.crawl import bundled_libexec, bundled_packages  # noqa: PLC0415
+
+    # As catkin's rosrun: the package's libexec folder (``lib/<package>``) first.
+    for directory in (bundled_libexec(package), bundled_packages().get(package)):
+        found = find_executables(directory, name).executables if directory else []
+        if found:
+            return found[0]
+    return None
+
+
 def is_python_script(path: Path) -> bool:
     """Whether rosx runs ``path`` with its own Python (see the module docstring)."""
     try:
@@ -96,4 +128,12 @@ def is_python_script(path: Path) -> bool:
     return path.suffix == ".py"
 
 
-__all__ = ["Search", "find_executables", "is_python_script"]
+__all__ = [
+    "Search",
+    "bundled_program",
+    "executable_names",
+    "find_executables",
+    "is_python_script",
+    "libexec_dir",
+    "suggestion",
+]

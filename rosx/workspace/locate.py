@@ -1,9 +1,10 @@
 """Where ``roscd`` and ``rosls`` go: ``package[/sub/dir]``, or the workspace with no argument.
 
-With no argument, rosbash's roscd goes to ``ROS_WORKSPACE`` if set, else to the first entry of
-``CMAKE_PREFIX_PATH`` that is a catkin workspace (holds a ``.catkin`` file: a ``devel``
-directory), and otherwise explains that neither is set. ``package/sub/dir`` goes below the
-package's directory.
+``log`` is the log folder of the running core (what ``roslaunch-logs`` answers, see
+`rosx.workspace.logdir`). With no argument, rosbash's roscd goes to ``ROS_WORKSPACE`` if set,
+else to the first entry of ``CMAKE_PREFIX_PATH`` that is a catkin workspace (holds a
+``.catkin`` file: a ``devel`` directory), and otherwise explains that neither is set.
+``package/sub/dir`` goes below the package's directory.
 """
 
 from __future__ import annotations
@@ -37,11 +38,20 @@ def workspace_dir(environ: Mapping[str, str]) -> Path:
     raise LocateError(NO_WORKSPACE)
 
 
-def locate(target: str, environ: Mapping[str, str]) -> Path:
-    """The directory ``roscd TARGET`` goes to (``TARGET`` is ``package[/sub/dir]``)."""
+def locate(target: str, environ: Mapping[str, str], notes: list[str] | None = None) -> Path:
+    """The directory ``roscd TARGET`` goes to (``TARGET`` is ``package[/sub/dir]``, or
+    ``log[/sub/dir]``: the running core's log folder). What rosbash prints on the way (``No
+    active roscore`` for ``log`` without a master) is added to ``notes``."""
     if not target:
         return workspace_dir(environ)
     package, _, rest = target.partition("/")
+    if package == "log":
+        from rosx.workspace.logdir import current_log_dir  # noqa: PLC0415
+
+        directory, running = current_log_dir(environ)
+        if not running and notes is not None:
+            notes.append("No active roscore")
+        return directory / rest if rest else directory
     try:
         directory = PackageIndex.from_environ(environ).find(package)
     except PackageNotFoundError:

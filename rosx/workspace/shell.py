@@ -10,8 +10,9 @@ that run rosx's tools, so commands can be typed as ROS 1 prints them. A workspac
 (`setup_sh`) define only what ROS 1's do (``roscd``, ``rosls``), so a shell that also uses a
 ROS 1 installation keeps its ROS 1 commands.
 
-Everything is POSIX sh that bash and zsh also run; completion of package names is added for
-bash and zsh.
+Everything is POSIX sh that bash and zsh also run. For bash and zsh, tab completion of every
+ROS command (`rosx.workspace.completion`) comes with it, and ``rosx shell-init`` and the setup
+files export Noetic's environment (`rosx.workspace.environment`).
 """
 
 from __future__ import annotations
@@ -19,13 +20,18 @@ from __future__ import annotations
 import shlex
 from typing import TYPE_CHECKING
 
+from rosx.workspace.completion import completion
+from rosx.workspace.environment import base_exports, prepend_path
+
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
-#: ROS 1 command names that `shell_init` defines as functions running rosx's tools.
+#: ROS 1 command names that `shell_init` defines as functions running rosx's tools (those of
+#: them that rosx has: the caller passes which).
 ROS_COMMANDS = (
     "roscore",
     "rosrun",
+    "roslaunch",
     "rostopic",
     "rosnode",
     "rosmsg",
@@ -33,9 +39,19 @@ ROS_COMMANDS = (
     "rosservice",
     "rosparam",
     "rospack",
+    "rosbag",
+    "rosed",
+    "roscp",
+    "roswtf",
+    "rosversion",
+    "rosclean",
+    "rosmsg-proto",
+    "rossrv-proto",
     "catkin_make",
     "catkin_create_pkg",
     "rqt_graph",
+    "rqt_console",
+    "rqt_logger_level",
     "rqt_plot",
     "rqt_topic",
     "rqt",
@@ -61,26 +77,6 @@ rosls() {
 }
 """
 
-_BASH_COMPLETION = """\
-_rosx_complete_package() {
-  if [ "$COMP_CWORD" -eq 1 ]; then
-    COMPREPLY=($(compgen -W "$(_rosx rospack list-names 2>/dev/null)" -- "${COMP_WORDS[1]}"))
-  fi
-}
-complete -F _rosx_complete_package roscd rosls rosrun
-"""
-
-_ZSH_COMPLETION = """\
-_rosx_complete_package() {
-  if (( CURRENT == 2 )); then
-    compadd -- ${(f)"$(_rosx rospack list-names 2>/dev/null)"}
-  fi
-}
-if (( $+functions[compdef] )); then
-  compdef _rosx_complete_package roscd rosls rosrun
-fi
-"""
-
 
 def rosx_command(argv: Sequence[str]) -> str:
     """How the shell runs rosx: ``argv`` quoted for the shell."""
@@ -88,53 +84,55 @@ def rosx_command(argv: Sequence[str]) -> str:
 
 
 def navigation_functions(rosx: str, shell: str = "sh") -> str:
-    """``roscd``, ``rosls`` and the ``rosx`` function, running rosx as ``rosx``."""
-    text = _NAVIGATION.replace("{rosx}", rosx)
-    if shell == "bash":
-        text += _BASH_COMPLETION
-    elif shell == "zsh":
-        text += _ZSH_COMPLETION
-    return text
+    """``roscd``, ``rosls`` and the ``rosx`` function, running rosx as ``rosx``; with the
+    completion of every ROS command for bash and zsh."""
+    return _NAVIGATION.replace("{rosx}", rosx) + completion(shell)
 
 
-def shell_init(rosx: str, shell: str) -> str:
-    """What ``eval "$(rosx shell-init SHELL)"`` runs."""
+def _command_function(name: str) -> str:
+    return f'{name}() {{ _rosx {name} "$@"; }}\n'
+
+
+def shell_init(rosx: str, shell: str, commands: Sequence[str] = ROS_COMMANDS) -> str:
+    """What ``eval "$(rosx shell-init SHELL)"`` runs: Noetic's environment (`base_exports`),
+    ``roscd``/``rosls``, a function per ROS command of ``commands``, completion."""
     head = (
-        f"# rosx shell integration for {shell}: ROS 1's command names, roscd and rosls.\n"
+        f"# rosx shell integration for {shell}: Noetic's environment, ROS 1's command names,\n"
+        "# roscd, rosls and tab completion.\n"
         f'# Load it with:  eval "$(rosx shell-init {shell})"\n'
     )
-    commands = "".join(f'{name}() {{ _rosx {name} "$@"; }}\n' for name in ROS_COMMANDS)
-    return head + navigation_functions(rosx, shell) + commands
-
-
-def _prepend(variable: str, value: str) -> str:
-    quoted = shlex.quote(value)
-    return (
-        f'case ":${{{variable}:-}}:" in\n'
-        f"  *:{quoted}:*) ;;\n"
-        f'  *) {variable}={quoted}"${{{variable}:+:${variable}}}" ;;\n'
-        "esac\n"
-        f"export {variable}\n"
-    )
+    # POSIX sh allows no "-" in a function's name; bash and zsh do.
+    names = [n for n in commands if shell != "sh" or "-" not in n]
+    functions = "".join(_command_function(name) for name in names)
+    return head + base_exports() + navigation_functions(rosx, shell) + functions
 
 
 def setup_sh(*, source: str, devel: str, shims: Sequence[str], rosx: str) -> str:
-    """``devel/setup.sh``: the workspace's packages, their Python imports (the ``shims``
-    directories, first one first on ``PYTHONPATH``), roscd and rosls."""
+    """A workspace's ``setup.sh`` (devel or install space): Noetic's environment with the
+    workspace's packages (``source``) in front, their Python imports, roscd and rosls.
+
+    Args:
+        source: where the workspace's packages are (``src`` for devel, ``install/share``).
+        devel: the space itself (``devel`` or ``install``).
+        shims: the folders of rosx's ``rospy`` and message modules, first one first on
+            ``PYTHONPATH``.
+        rosx: how the shell runs rosx.
+    """
     return (
         "# generated by rosx catkin_make: use this workspace's packages in this shell\n"
-        + _prepend("ROS_PACKAGE_PATH", source)
-        + _prepend("CMAKE_PREFIX_PATH", devel)
-        + "".join(_prepend("PYTHONPATH", shim) for shim in reversed(shims))
+        + base_exports()
+        + prepend_path("ROS_PACKAGE_PATH", source)
+        + prepend_path("CMAKE_PREFIX_PATH", devel)
+        + "".join(prepend_path("PYTHONPATH", shim) for shim in reversed(shims))
+        + f"export ROSLISP_PACKAGE_DIRECTORIES={shlex.quote(devel + '/share/common-lisp')}\n"
         + navigation_functions(rosx)
     )
 
 
 def setup_for_shell(shell: str, devel: str, rosx: str) -> str:
-    """``devel/setup.bash`` or ``devel/setup.zsh``: ``setup.sh`` plus completion."""
+    """``setup.bash`` or ``setup.zsh`` of a space: ``setup.sh`` plus completion."""
     head = f"# generated by rosx catkin_make: use this workspace's packages in {shell}\n"
-    completion = navigation_functions(rosx, shell)[len(navigation_functions(rosx)) :]
-    return head + f". {shlex.quote(devel + '/setup.sh')}\n" + completion
+    return head + f". {shlex.quote(devel + '/setup.sh')}\n" + completion(shell)
 
 
 __all__ = [

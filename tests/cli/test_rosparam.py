@@ -6,6 +6,7 @@ import math
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
+from xmlrpc.client import DateTime
 
 import pytest
 
@@ -71,6 +72,11 @@ def server() -> Iterator[Server]:
         ("[1, 2.5, x, true]", [1, 2.5, "x", True], "- 1\n- 2.5\n- x\n- true\n\n"),
         (".inf", math.inf, ".inf\n"),
         ("!!binary aGVsbG8=", b"hello", "!!binary |-\n  aGVsbG8=\n\n"),
+        (
+            "2001-12-14t21:59:43.10-05:00",
+            DateTime("20011214T21:59:43"),
+            "!!python/object:xmlrpc.client.DateTime\nvalue: 20011214T21:59:43\n\n",
+        ),
     ],
 )
 def test_set_keeps_yaml_types_and_get_prints_yaml(
@@ -81,6 +87,24 @@ def test_set_keeps_yaml_types_and_get_prints_yaml(
     assert value == stored and type(value) is type(stored)
     done = server.run("rosparam", "get", "/p")
     assert (done.out, done.err, done.status) == (printed, "", 0)
+
+
+def test_date_times_print_as_ros1_prints_them(server: Server) -> None:
+    # What ROS 1's rosparam prints for the xmlrpc.client.DateTime values rospy hands it.
+    for name, text in (("/q/dt", "20240102T03:04:05"), ("/q/odd", "2024-01-02T03:04:05")):
+        server.client.call(server.uri, "setParam", "/t", name, DateTime(text))
+    server.client.call(server.uri, "setParam", "/t", "/l", [1, DateTime("whenever")])
+    tag = "!!python/object:xmlrpc.client.DateTime"
+    assert server.run("rosparam", "get", "/q/dt").out == f"{tag}\nvalue: 20240102T03:04:05\n\n"
+    namespace = (
+        f"dt: {tag}\n  value: 20240102T03:04:05\nodd: {tag}\n  value: '2024-01-02T03:04:05'\n"
+    )
+    assert server.run("rosparam", "get", "/q").out == namespace + "\n"
+    assert server.run("rosparam", "dump", "", "/q").out == namespace
+    assert server.run("rosparam", "get", "-p", "/q").out == (
+        f"dt: {tag}\nvalue: 20240102T03:04:05\nodd: {tag}\nvalue: '2024-01-02T03:04:05'\n"
+    )
+    assert server.run("rosparam", "get", "/l").out == f"- 1\n- {tag}\n  value: whenever\n\n"
 
 
 def test_dicts_update_a_namespace(server: Server) -> None:

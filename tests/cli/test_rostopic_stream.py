@@ -336,14 +336,40 @@ def test_pub_latched_stays_until_killed(env: dict[str, str], master: str) -> Non
     )
 
 
+def test_pub_node_follows_its_remapping_arguments(env: dict[str, str], master: str) -> None:
+    """As rospy's init_node: ``__name:=``/``__ns:=`` name the node (as rostest launches it),
+    ``from:=to`` remaps the topic, ``_param:=`` sets a private parameter."""
+    client = XmlRpcClient(timeout=2)
+    argv = ["/remap/from", "std_msgs/String", "hi", "/remap/from:=/remap/to"]
+    result = in_thread(
+        "rostopic", "pub", *argv, "__name:=pubber", "__ns:=/tools", "_hint:=3", environ=env
+    )
+
+    def publishers() -> list[Any]:
+        found: list[Any] = client.call(master, "getSystemState", "/test")[2][0]
+        return found
+
+    wait_for(lambda: ["/remap/to", ["/tools/pubber"]] in publishers(), what="/tools/pubber")
+    assert client.call(master, "getParam", "/test", "/tools/pubber/hint")[2] == 3
+    uri = client.call(master, "lookupNode", "/test", "/tools/pubber")[2]
+    client.call(uri, "shutdown", "/test", "test over")
+    assert result().status == 0
+
+
 @pytest.mark.parametrize(
     ("argv", "status", "err"),
     [
         (["/p/x"], 2, "Usage: rostopic pub /topic type [args...]\n\nrostopic: error: topic type must be specified\n"),
         (["-r", "2", "-1", "/p/x", "std_msgs/Int32", "1"], 2, "Usage: rostopic pub /topic type [args...]\n\nrostopic: error: You cannot select both -r and -1 (--once)\n"),
         (["-r", "x", "/p/x", "std_msgs/Int32", "1"], 2, "Usage: rostopic pub /topic type [args...]\n\nrostopic: error: rate must be a number\n"),
+        # As genpy looks the class up: not package/Type is an invalid topic type...
         (["/p/x", "foo"], 1, "ERROR: invalid topic type: foo\n"),
-        (["/p/x", "std_msgs/Nope"], 1, "ERROR: invalid topic type: std_msgs/Nope\n"),
+        (["/p/x", "/String"], 1, "ERROR: invalid topic type: /String\n"),
+        (["/p/x", "std_msgs/String/x"], 1, "ERROR: invalid topic type: std_msgs/String/x\n"),
+        # ... and any other type it cannot find, an invalid message type, known package or not.
+        (["/p/x", "std_msgs/Nope"], 1, "ERROR: invalid message type: std_msgs/Nope.\nIf this is a valid message type, perhaps you need to type 'rosmake std_msgs'\n"),
+        (["/p/x", "std_msgs/"], 1, "ERROR: invalid message type: std_msgs/.\nIf this is a valid message type, perhaps you need to type 'rosmake std_msgs'\n"),
+        (["/p/x", "geometry_msgs/twist"], 1, "ERROR: invalid message type: geometry_msgs/twist.\nIf this is a valid message type, perhaps you need to type 'rosmake geometry_msgs'\n"),
         (["/p/x", "nope_msgs/Nope"], 1, "ERROR: invalid message type: nope_msgs/Nope.\nIf this is a valid message type, perhaps you need to type 'rosmake nope_msgs'\n"),
         (["/p/x", "geometry_msgs/Point", "{x:5}"], 1, "ERROR: No field name [x:5]: YAML needs a space after the colon, write {x: 5}\n\nArgs are: [x y z]\n"),
         (["/p/x", "std_msgs/Int32", "1", "2"], 1, "ERROR: Too many arguments:\n * Given: [1, 2]\n * Expected: ['data']\n\nArgs are: [data]\n"),
@@ -353,6 +379,25 @@ def test_pub_latched_stays_until_killed(env: dict[str, str], master: str) -> Non
 def test_pub_errors(env: dict[str, str], argv: list[str], status: int, err: str) -> None:
     result = rosx("rostopic", "pub", *argv, environ=env)
     assert (result.status, result.out, result.err) == (status, "", err)
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [["echo", "-n", "1", "/unknown_typed/field"], ["type", "/unknown_typed/field"]],
+)
+def test_a_field_of_a_type_nobody_here_knows_cannot_be_loaded(
+    env: dict[str, str], master: str, argv: list[str]
+) -> None:
+    client = XmlRpcClient(timeout=5)
+    api = "http://127.0.0.1:9/"
+    client.call(master, "registerPublisher", "/odd", "/unknown_typed", "nope_msgs/Nope", api)
+    try:
+        result = rosx("rostopic", *argv, environ=env)
+    finally:
+        client.call(master, "unregisterPublisher", "/odd", "/unknown_typed", api)
+        client.close()
+    cannot = "ERROR: Cannot load message class for [nope_msgs/Nope]. Are your messages built?\n"
+    assert (result.status, result.out, result.err) == (1, "", cannot)
 
 
 def test_pub_value_of_the_wrong_type(env: dict[str, str]) -> None:

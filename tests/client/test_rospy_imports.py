@@ -278,3 +278,11 @@ bag.close()
     assert Path(where).parent.parent.name == "shim"
     assert Path(where).parent.parent.parent.name == "bag"
     assert got == [["chatter", 'data: "foo"'], ["numbers", "data: 42"]]
+
+
+def test_every_name_the_client_api_loads_on_first_use_resolves() -> None:
+    import rosx.client
+
+    homes = rosx.client._HOMES
+    missing = [name for name in homes if not hasattr(rosx.client, name)]
+    assert missing == []

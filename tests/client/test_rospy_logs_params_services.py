@@ -70,7 +70,7 @@ def test_logs_reach_rosout_with_the_callers_place(
     records: list[Any] = []
     make_node("reader").subscribe("/rosout", Log, records.append)
     rospy.init_node("reporter", disable_signals=True)
-    wait_for(lambda: rospy.get_master().call("getSystemState")[1], what="subscriptions")
+    wait_for(lambda: rospy.get_master().getSystemState()[2][1], what="subscriptions")
 
     def report() -> None:
         rospy.logwarn("to rosout")

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 import subprocess
+import xmlrpc.client
 from collections.abc import Iterator
 
 import pytest
@@ -220,6 +221,11 @@ def test_pub_errors_match_ros1(graph: str) -> None:
         ["rostopic", "pub", "/ros1/bad", "std_msgs/Int32", "1", "2"],
         ["rostopic", "pub", "/ros1/bad", "std_msgs/Nope", "1"],
         ["rostopic", "pub", "/ros1/bad", "nope_msgs/Nope", "1"],
+        ["rostopic", "pub", "/ros1/bad", "std_msgs/", "1"],
+        ["rostopic", "pub", "/ros1/bad", "roscpp/Nope", "1"],
+        ["rostopic", "pub", "/ros1/bad", "/String", "1"],
+        ["rostopic", "pub", "/ros1/bad", "String", "1"],
+        ["rostopic", "pub", "/ros1/bad", "std_msgs/String/x", "1"],
         ["rostopic", "pub", "-r", "0", "/ros1/bad", "std_msgs/Int32", "1"],
         ["rostopic", "pub", "/ros1/bad", "std_msgs/Int32", "{a"],
     ):
@@ -231,6 +237,20 @@ def test_pub_errors_match_ros1(graph: str) -> None:
             assert ours.err.startswith("ERROR: invalid msg_args type: 1\n\nArgs are: [linear.x")
             continue
         assert (ours.out, ours.err, ours.status) == (ros1.stdout, ros1.stderr, ros1.returncode)
+
+
+def test_echo_of_a_field_of_an_unknown_type_matches_ros1(graph: str) -> None:
+    api = "http://127.0.0.1:9/"
+    proxy = xmlrpc.client.ServerProxy(graph)
+    proxy.registerPublisher("/odd", "/ros1/unknown_typed", "nope_msgs/Nope", api)
+    try:
+        argv = ["rostopic", "echo", "-n", "1", "/ros1/unknown_typed/field"]
+        ros1 = run_ros1(argv, ROS_MASTER_URI=graph)
+        ours = rosx(*argv, environ=clean_environ(ROS_MASTER_URI=graph))
+    finally:
+        proxy.unregisterPublisher("/odd", "/ros1/unknown_typed", api)
+    assert (ours.out, ours.err, ours.status) == (ros1.stdout, ros1.stderr, ros1.returncode)
+    assert ours.err.startswith("ERROR: Cannot load message class for [nope_msgs/Nope]")
 
 
 #: Feeds ROS 1's own hz/bw/delay bookkeeping fixed arrival times (its clocks patched) and

@@ -151,6 +151,15 @@ def test_plain_output_has_no_escapes(core: tuple[subprocess.Popen[str], int, lis
     text = "".join(lines)
     assert "\x1b" not in text
     assert f"ROS_MASTER_URI=http://localhost:{port}/\n" in lines
+    run_id = next(line for line in lines if line.startswith("setting /run_id to ")).split()[-1]
+    logging_to = rf"\.\.\. logging to \S+/log/{run_id}/roslaunch-\S+-{proc.pid}\.log\n"
+    assert re.fullmatch(logging_to, lines[0]), lines[0]
+    assert lines[1:4] == [
+        "Checking log directory for disk usage. This may take a while.\n",
+        "Press Ctrl-C to interrupt\n",
+        "Done checking log file disk usage. Usage is <1GB.\n",
+    ]
+    lines = lines[4:]
     assert lines[0] == f"started roslaunch server http://localhost:{port}/\n"
     assert lines[1:13] == [
         "ros_comm version 1.16.0\n",

@@ -6,8 +6,10 @@ from __future__ import annotations
 import socket
 import threading
 import time
+import xmlrpc.client
 from collections.abc import Callable, Iterator
 from typing import Any
+from xmlrpc.client import DateTime
 
 import pytest
 
@@ -148,7 +150,12 @@ def test_the_replaced_node_is_told_to_shut_down(master: MasterThread, node: Fake
 
 def test_bad_input_is_refused_and_the_master_keeps_serving(master: MasterThread) -> None:
     port = int(master.uri.rsplit(":", 1)[1].rstrip("/"))
-    for junk in (b"\x00\xff garbage\r\n\r\n", b"POST / HTTP/1.1\r\nContent-Length: 3\r\n\r\n<x>"):
+    junks = (
+        b"\x00\xff garbage\r\n\r\n",
+        b"POST / HTTP/1.1\r\nContent-Length: 3\r\n\r\n<x>",
+        "POST / HTTP/1.1\r\nContent-Length: ²\r\n\r\n".encode("latin-1"),
+    )
+    for junk in junks:
         with socket.create_connection(("127.0.0.1", port), timeout=5) as sock:
             sock.sendall(junk)
             assert sock.recv(65536).startswith(b"HTTP/1.1 ")
@@ -160,3 +167,20 @@ def test_bad_input_is_refused_and_the_master_keeps_serving(master: MasterThread)
     ]
     assert client.call(master.uri, "setParam", "/x", "/big", 2**40 // 2**20)[0] == 1
     assert client.call(master.uri, "getParam", "/x", "/big") == [1, "Parameter [/big]", 2**20]
+
+
+def test_date_times_are_stored_and_the_tree_stays_readable(master: MasterThread) -> None:
+    date = "<value><dateTime.iso8601>20240102T03:04:05</dateTime.iso8601></value>"
+    body = (
+        "<methodCall><methodName>setParam</methodName><params><param><value>/t</value></param>"
+        f"<param><value>/when</value></param><param>{date}</param></params></methodCall>"
+    )
+    host, port = master.uri.split("//")[1].rstrip("/").rsplit(":", 1)
+    with socket.create_connection((host, int(port)), timeout=5) as sock:
+        head = f"POST / HTTP/1.1\r\nHost: x\r\nContent-Length: {len(body)}\r\n\r\n"
+        sock.sendall(head.encode() + body.encode())
+        assert b"parameter /when set" in sock.recv(65536)
+    proxy = xmlrpc.client.ServerProxy(master.uri)
+    assert proxy.getParam("/x", "/when") == [1, "Parameter [/when]", DateTime("20240102T03:04:05")]
+    whole: Any = proxy.getParam("/x", "/")
+    assert (whole[0], whole[2]["when"]) == (1, DateTime("20240102T03:04:05"))

@@ -141,12 +141,27 @@ def test_user_packages_and_full_text(tmp_path: Path) -> None:
     assert store.find("Goal", "msg") == ["lab2/Goal"]
 
 
-def test_first_package_on_the_path_wins_and_shadows_the_standard_one(tmp_path: Path) -> None:
+def test_first_package_on_the_path_wins_for_the_types_it_has(tmp_path: Path) -> None:
     _package(tmp_path / "a", "std_msgs", {"String": "string data\nint8 extra\n"})
     _package(tmp_path / "b", "std_msgs", {"String": "int8 other\n"})
     store = TypeStore([tmp_path / "a", tmp_path / "b"])
     assert [f.name for f in store.msg("std_msgs/String").fields] == ["data", "extra"]
-    assert not store.has_msg("std_msgs/Header")  # the whole package is shadowed, as with rospack
+    assert [f.name for f in store.msg("std_msgs/Header").fields] == ["seq", "stamp", "frame_id"]
+    assert {"std_msgs/String", "std_msgs/Header"} <= set(store.types("msg"))
+
+
+def test_a_package_without_types_shadows_none_of_the_bundled_ones(tmp_path: Path) -> None:
+    # Debian's libroscpp-dev leaves /usr/share/roscpp holding a manifest and no msg/srv files.
+    (tmp_path / "roscpp").mkdir()
+    (tmp_path / "roscpp" / "package.xml").write_text("<package><name>roscpp</name></package>\n")
+    store = TypeStore([tmp_path])
+    bundled = TypeStore([])
+    assert store.md5("roscpp/Logger") == bundled.md5("roscpp/Logger")
+    assert store.srv_md5("roscpp/GetLoggers") == bundled.srv_md5("roscpp/GetLoggers")
+    assert store.types("srv") == bundled.types("srv")
+    with pytest.raises(UnknownTypeError) as caught:
+        store.msg("roscpp/Nope")
+    assert caught.value.package_known
 
 
 def test_crawl_skips_ignored_and_hidden_directories(tmp_path: Path) -> None:
@@ -207,3 +222,35 @@ def test_an_unwritable_cache_folder_costs_only_time(
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     assert "geometry_msgs/Twist" in _fresh_standard_texts()
     assert list(tmp_path.iterdir()) == [tmp_path / "rosx"]
+
+
+def test_the_shipped_definition_files_hash_as_rosbags_field_lists() -> None:
+    """The standard packages' original files (comments included) give the md5 sums the types
+    had from rosbags' field lists alone: shipping the files changed no sum."""
+    from rosx.msg.md5 import message_md5
+    from rosx.msg.parser import parse_msg
+    from rosx.msg.spec import MsgSpec
+    from rosx.msg.standard import standard_text
+    from rosx.packages.crawl import bundled_packages
+
+    store = TypeStore([])
+    sums: dict[str, str] = {}
+
+    def rebuilt(name: str) -> MsgSpec:
+        text = standard_text(name)
+        return parse_msg(name, text) if text is not None else store.msg(name)
+
+    def rebuilt_md5(name: str) -> str:
+        if name not in sums:
+            sums[name] = message_md5(rebuilt(name), rebuilt, rebuilt_md5)
+        return sums[name]
+
+    compared = 0
+    for package, directory in bundled_packages().items():
+        for path in sorted(directory.glob("msg/*.msg")):
+            name = f"{package}/{path.stem}"
+            if standard_text(name) is not None:
+                assert store.md5(name) == rebuilt_md5(name), name
+                assert store.msg(name).text == path.read_text(encoding="utf-8")
+                compared += 1
+    assert compared > 130

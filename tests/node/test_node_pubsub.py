@@ -3,10 +3,14 @@ publisher updates, unregistration and the Slave API's view of the connections.""
 
 from __future__ import annotations
 
+import contextlib
 import re
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import Any
+from xmlrpc.server import SimpleXMLRPCServer
+
+import pytest
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node, RawMessage
@@ -158,6 +162,48 @@ def test_publisher_update_connects_a_new_publisher(make_node: Callable[..., Node
     wait_for(lambda: sub.get_num_connections() == 1)
 
 
+@contextlib.contextmanager
+def fake_publisher(answer: list[Any]) -> Iterator[str]:
+    """A Slave API answering every ``requestTopic`` with ``answer``; yields its URI."""
+    server = SimpleXMLRPCServer(("127.0.0.1", 0), logRequests=False)
+    server.register_function(lambda *_: answer, "requestTopic")
+    server.register_function(lambda *_: [1, "", [["/odd", "std_msgs/String"]]], "getPublications")
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}/"
+    finally:
+        server.shutdown()
+        server.server_close()
+        thread.join()
+
+
+@pytest.mark.parametrize(
+    ("uri", "answer", "error"),
+    [
+        ("http://127.0.0.1:1²/", None, "invalid host or port in URI 'http://127.0.0.1:1²/'"),
+        (None, [1, "", ["TCPROS", "127.0.0.1", "1²"]], "invalid protocol choice"),
+        (None, [1, "", ["TCPROS", "127.0.0.1", 70000]], "invalid protocol choice"),
+    ],
+    ids=["uri", "port-text", "port-range"],
+)
+def test_a_publisher_that_cannot_be_called_is_one_logged_line(
+    make_node: Callable[..., Node], master: str, uri: str | None, answer: Any, error: str
+) -> None:
+    lines: list[str] = []
+    listener = make_node("odd_listener", console=lambda level, line: lines.append(line))
+    with contextlib.ExitStack() as stack:
+        uri = uri or stack.enter_context(fake_publisher(answer))
+        call(master, "registerPublisher", "/odd_pub", "/odd", "std_msgs/String", uri)
+        try:
+            listener.subscribe("/odd", String, lambda m: None)
+            wait_for(lambda: any(error in line for line in lines), what="the error")
+        finally:
+            call(master, "unregisterPublisher", "/odd_pub", "/odd", uri)
+    (line,) = [line for line in lines if error in line]
+    assert line.startswith("[ERROR] [") and "[/odd]" in line and "\n" not in line
+
+
 def test_several_subscribers_share_a_topic(make_node: Callable[..., Node]) -> None:
     a, b = make_node("one_pub"), make_node("two_subs")
     first: list[float] = []
@@ -248,6 +294,36 @@ def test_slave_api_answers_as_rospy(make_node: Callable[..., Node]) -> None:
         "ERROR: parameter [topic] must be a non-empty string"
     )
     assert call(uri, "paramUpdate", "/x", "/not/subscribed", 1) == [-1, "not subscribed", 0]
+
+
+#: requestTopic's answers for protocols a publisher cannot serve, as a rospy publisher gives them
+#: (Debian's rospy, asked the same).
+NO_PROTOCOL = [0, "no supported protocol implementations", []]
+
+
+@pytest.mark.parametrize(
+    ("protocols", "answer"),
+    [
+        ([["UDPROS"]], NO_PROTOCOL),
+        ([["tcpros"]], NO_PROTOCOL),
+        ([[1]], NO_PROTOCOL),
+        ([[True]], NO_PROTOCOL),
+        (["TCPROS"], NO_PROTOCOL),
+        ("TCPROS", NO_PROTOCOL),
+        ({"a": 1}, NO_PROTOCOL),
+        ([[]], [0, "Internal failure: list index out of range", []]),
+        (5, [-1, "Error: invalid arguments: 'int' object is not iterable", []]),
+        ([], [-1, "ERROR: parameter [protocols] must be specified and non-empty", []]),
+    ],
+)
+def test_request_topic_without_a_usable_protocol_answers_as_rospy(
+    make_node: Callable[..., Node], protocols: object, answer: list[Any]
+) -> None:
+    node = make_node("chooser")
+    node.advertise("/offered", String)
+    assert call(node.uri, "requestTopic", "/x", "/offered", protocols) == answer
+    code, _, params = call(node.uri, "requestTopic", "/x", "/offered", [["UDPROS"], ["TCPROS"]])
+    assert (code, params[0]) == (1, "TCPROS")
 
 
 def test_slave_shutdown_stops_the_node(make_node: Callable[..., Node]) -> None:

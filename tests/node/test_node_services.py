@@ -5,7 +5,10 @@ from __future__ import annotations
 import io
 import socket
 import struct
+import subprocess
+import sys
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -17,6 +20,7 @@ from rosx.transport.client import call
 from rosx.wire.framing import FrameReader, frame
 from rosx.wire.header import decode_header, encode_header
 from rosx.wire.tcpros import subscriber_header
+from tests.support.cli import clean_environ
 from tests.support.procs import wait_for
 
 SetBool = get_service_class("std_srvs/SetBool")
@@ -194,6 +198,30 @@ def test_rosout_and_logger_services(make_node: Callable[..., Node]) -> None:
     setter.call(setter.request_class(logger="rosout", level="debug"))
     node.log(rosout.DEBUG, "now visible")
     wait_for(lambda: any(m.msg == "now visible" for m in got))
+
+
+def test_a_node_starts_with_a_typeless_roscpp_on_the_package_path(
+    master: str, tmp_path: Path
+) -> None:
+    # Debian's libroscpp-dev leaves /usr/share/roscpp with a manifest and no msg/srv files.
+    (tmp_path / "roscpp").mkdir()
+    (tmp_path / "roscpp" / "package.xml").write_text("<package><name>roscpp</name></package>\n")
+    script = (
+        "from rosx.node import Node\n"
+        f"node = Node('/typeless', master_uri={master!r}).start()\n"
+        "print(sorted(node.services))\n"
+        "node.shutdown('done')\n"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", script],
+        capture_output=True,
+        text=True,
+        env=clean_environ(ROS_PACKAGE_PATH=str(tmp_path)),
+        timeout=60,
+        check=False,
+    )
+    assert (done.returncode, done.stderr) == (0, "")
+    assert "/typeless/get_loggers" in done.stdout
 
 
 def test_console_line_follows_rosconsole_format() -> None:

@@ -56,9 +56,14 @@ def ros1_environ(**extra: str) -> dict[str, str]:
     return env
 
 
+#: What rospkg prints before reading a manifest where ``rosdep update`` never ran, as on the
+#: reference machine (offline): a fact about that machine, not part of any tool's answer.
+ROSDEP_UNSET = "the rosdep view is empty: call 'sudo rosdep init' and 'rosdep update'\n"
+
+
 def run_ros1(args: list[str], *, stdin: str = "", **extra: str) -> subprocess.CompletedProcess[str]:
     """Run a ROS 1 command line (``rosmsg show …``) and capture its output."""
-    return subprocess.run(
+    done = subprocess.run(
         args,
         input=stdin,
         capture_output=True,
@@ -67,6 +72,8 @@ def run_ros1(args: list[str], *, stdin: str = "", **extra: str) -> subprocess.Co
         timeout=60,
         check=False,
     )
+    done.stderr = done.stderr.replace(ROSDEP_UNSET, "")
+    return done
 
 
 def ros1_python(script: str, **extra: str) -> Any:

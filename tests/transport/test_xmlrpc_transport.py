@@ -32,6 +32,7 @@ from rosx.transport.errors import (
     CallTimeoutError,
     ConnectError,
     FaultError,
+    InvalidUriError,
 )
 from rosx.transport.loop_thread import LoopThread, ServerThread
 from rosx.transport.server import EncodedResponse
@@ -304,6 +305,8 @@ def _answer_once(listener: socket.socket, reply: bytes) -> threading.Thread:
         b"HTTP/1.1 200 OK\r\nContent-Length: 500\r\n\r\n<methodResponse>",
         b"not http at all\r\n\r\n",
         b"",
+        "HTTP/1.1 2²0 OK\r\nContent-Length: 0\r\n\r\n".encode("latin-1"),
+        "HTTP/1.1 200 OK\r\nContent-Length: ²\r\n\r\n".encode("latin-1"),
     ],
 )
 def test_bad_replies_are_bad_reply_errors(
@@ -313,6 +316,12 @@ def test_bad_replies_are_bad_reply_errors(
     with pytest.raises(BadReplyError):
         XmlRpcClient().call(mute_server[1], "getPid", "/x", timeout=5)
     thread.join()
+
+
+@pytest.mark.parametrize("uri", ["http://127.0.0.1:1²/", "http://[::1/", "rosrpc://h:1"])
+def test_a_uri_that_does_not_parse_is_an_invalid_uri_error(uri: str) -> None:
+    with pytest.raises(InvalidUriError, match=r"invalid host or port|not an http"):
+        XmlRpcClient().call(uri, "getPid", "/x", timeout=5)
 
 
 def test_a_connection_closed_by_the_server_is_replaced(server: ServerThread) -> None:

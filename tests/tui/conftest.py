@@ -8,10 +8,12 @@ live world is for pilot tests that assert on poses and messages, never on pictur
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Callable, Coroutine, Iterator
+from collections.abc import Awaitable, Callable, Coroutine, Iterator
 from typing import Any, TypeVar
 
 import pytest
+from textual.app import App
+from textual.pilot import Pilot
 
 from rosx.graph.state import GraphState
 from rosx.node import WARN, Node
@@ -34,6 +36,22 @@ SNAPSHOT_SIZE = (100, 32)
 def run(coro: Coroutine[Any, Any, T]) -> T:
     """Run a pilot coroutine to completion (the suite has no asyncio plugin)."""
     return asyncio.run(coro)
+
+
+def running_after_key(
+    app: App[Any], key: str, settle: Callable[[Pilot[Any]], Awaitable[None]]
+) -> bool:
+    """Run ``app`` on an 80x24 terminal, let ``settle`` bring it to rest, press ``key``:
+    whether the app is still running after it."""
+
+    async def drive() -> bool:
+        async with app.run_test(size=(80, 24)) as pilot:
+            await settle(pilot)
+            await pilot.press(key)
+            await pilot.pause()
+            return app.is_running
+
+    return run(drive())
 
 
 class Pond:
@@ -74,6 +92,13 @@ def scripted_pond() -> Pond:
     return pond
 
 
+TOPIC_TYPES = {
+    "/rosout": "rosgraph_msgs/Log",
+    "/rosout_agg": "rosgraph_msgs/Log",
+    "/turtle1/cmd_vel": "geometry_msgs/Twist",
+    "/turtle1/color_sensor": "turtlesim/Color",
+    "/turtle1/pose": "turtlesim/Pose",
+}
 LAB1_GRAPH = Graph.of(
     GraphState(
         publishers={
@@ -84,13 +109,7 @@ LAB1_GRAPH = Graph.of(
             "/turtle1/pose": ("/turtlesim",),
         },
         subscribers={"/rosout": ("/rosout",), "/turtle1/cmd_vel": ("/turtlesim",)},
-        topic_types={
-            "/rosout": "rosgraph_msgs/Log",
-            "/rosout_agg": "rosgraph_msgs/Log",
-            "/turtle1/cmd_vel": "geometry_msgs/Twist",
-            "/turtle1/color_sensor": "turtlesim/Color",
-            "/turtle1/pose": "turtlesim/Pose",
-        },
+        topic_types=TOPIC_TYPES,
     )
 )
 
@@ -109,9 +128,21 @@ class StaticLink:
             LogRecord(WARN, " WARN", wall_warning(11.120889, 5.544445))
         )
         self.sent: list[tuple[float, float]] = []
+        self.echoes: dict[str, Callable[[str], object]] = {}
 
     def drive(self, linear: float, angular: float) -> None:
         self.sent.append((linear, angular))
+
+    def describe_topic(self, topic: str) -> str:
+        return f"Type: {TOPIC_TYPES.get(topic, 'unknown type')}\n\nPublishers: None\n"
+
+    def describe_node(self, node: str) -> str:
+        return f"Node [{node}]\n"
+
+    def echo(self, topic: str, offer: Callable[[str], object]) -> Callable[[], None]:
+        """Records ``offer`` in `echoes` (tests call it); stopping removes it."""
+        self.echoes[topic] = offer
+        return lambda: self.echoes.pop(topic, None) and None
 
 
 @pytest.fixture

@@ -35,9 +35,15 @@ def test_rosx_sim_shows_how_to_quit_and_quits_on_ctrl_c(
     tmp_path: Path, size: tuple[int, int]
 ) -> None:
     with Tmux(tmp_path, size, ["sim", "--port", str(free_port())]) as term:
+        term.wait_for("/turtle1/pose")  # the graph has come
         rows = term.wait_for("Quit")
         assert footer(rows)[:2] == ["q", "Quit"], rows
         assert any("Topics" in row for row in rows)
+        # The pond comes first: a square of half blocks as wide as the body's rows allow
+        # (the body is the screen less header and footer, less the pose and log lines).
+        side = 2 * (size[1] - 4)
+        pond = [row for row in rows if "\u2580" * side in row]
+        assert len(pond) == side // 2, rows
         term.keys("C-c")
         assert term.ended()
 

@@ -92,9 +92,10 @@ def test_rosx_sim_command_without_a_terminal() -> None:
         )
         assert second.returncode == 1
         assert second.stderr.splitlines() == [
-            "RLException: roscore cannot run as another roscore/master is already running. ",
-            "Please kill other roscore/master processes before relaunching.",
-            f"The ROS_MASTER_URI is {uri}",
+            f"A ROS master is already running at {uri}",
+            "Nodes there: /rosout, /teleop_turtle, /turtlesim",
+            f"Run `rosx sim --join --port {port}` to start turtlesim and teleop against it,",
+            "or `rosx sim --port PORT` for a master of its own on another port.",
         ]
         sim.send_signal(signal.SIGINT)
         out, err = sim.communicate(timeout=15)

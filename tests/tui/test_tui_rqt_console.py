@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-import os
-import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from typing import Any
 
 import pytest
@@ -15,7 +13,7 @@ from rosx.master.client import MasterUnreachable
 from rosx_commands.rqt_console.app import ConsoleApp, make_console_app
 from rosx_commands.rqt_console.model import Entry, Kind, Rule, Rules
 from rosx_commands.rqt_console.source import Inbox
-from tests.tui.conftest import run
+from tests.tui.conftest import run, running_after_key
 
 SnapCompare = Callable[..., bool]
 NARROW = (80, 24)
@@ -23,17 +21,7 @@ WIDE = (120, 40)
 WALL = "Oh no! I hit the wall! (Clamping from [x=11.120889, y=5.544445])"
 
 
-@pytest.fixture(autouse=True)
-def utc() -> Iterator[None]:
-    saved = os.environ.get("TZ")
-    os.environ["TZ"] = "UTC"
-    time.tzset()
-    yield
-    if saved is None:
-        del os.environ["TZ"]
-    else:
-        os.environ["TZ"] = saved
-    time.tzset()
+pytestmark = pytest.mark.usefixtures("utc")  # times shown as UTC
 
 
 class FixedSource:
@@ -256,14 +244,8 @@ def test_q_and_ctrl_c_quit(key: str) -> None:
     source = FixedSource(lab1_log())
     app = make_console_app(source, period=None)
 
-    async def drive() -> None:
-        async with app.run_test(size=NARROW) as pilot:
-            await settle(pilot)
-            await pilot.press(key)
-            await pilot.pause()
-            assert not app.is_running
-
-    run(drive())
+    running = running_after_key(app, key, settle)
+    assert not running
     assert source.closed
 
 

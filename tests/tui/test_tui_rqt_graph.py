@@ -18,7 +18,7 @@ from rosx.graph.view import Vertex, ViewGraph
 from rosx_commands.rqt_graph.app import GHOST_SECONDS, History, make_graph_app
 from rosx_commands.rqt_graph.view import GraphView
 from tests.graph.states import lab1
-from tests.tui.conftest import SNAPSHOT_SIZE, run
+from tests.tui.conftest import SNAPSHOT_SIZE, run, running_after_key
 from tests.tui.graph_pilot import WIDE, info, mark_at, settle, status
 
 SnapCompare = Callable[..., bool]
@@ -317,11 +317,5 @@ def test_a_failed_refresh_shows_the_whole_error_at_80_columns() -> None:
 def test_q_and_ctrl_c_quit(key: str) -> None:
     app = make_graph_app(StaticSource(lab1()))
 
-    async def drive() -> None:
-        async with app.run_test(size=(80, 24)) as pilot:
-            await settle(pilot)
-            await pilot.press(key)
-            await pilot.pause()
-            assert not app.is_running
-
-    run(drive())
+    running = running_after_key(app, key, settle)
+    assert not running

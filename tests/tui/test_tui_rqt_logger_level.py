@@ -12,7 +12,7 @@ from textual.widgets import OptionList, Static
 from rosx.node.errors import ServiceError
 from rosx_commands.rqt_logger_level.app import LevelApp, make_level_app
 from rosx_commands.rqt_logger_level.source import level_nodes
-from tests.tui.conftest import run
+from tests.tui.conftest import run, running_after_key
 
 SnapCompare = Callable[..., bool]
 NARROW = (80, 24)
@@ -119,14 +119,8 @@ def test_q_and_ctrl_c_quit(key: str) -> None:
     source = FixedSource()
     app = make_level_app(source)
 
-    async def drive() -> None:
-        async with app.run_test(size=NARROW) as pilot:
-            await settle(pilot)
-            await pilot.press(key)
-            await pilot.pause()
-            assert not app.is_running
-
-    run(drive())
+    running = running_after_key(app, key, settle)
+    assert not running
     assert source.closed
 
 

@@ -21,6 +21,9 @@ from rosx_turtle.sim.host import SimHost
 from tests.support.cli import clean_environ
 from tests.tui.conftest import run
 
+#: Seconds each step may take (generous: a loaded machine starts, connects and ticks slowly).
+WAIT = 60.0
+
 
 def test_pose_x_rises_while_the_turtle_moves(
     host: SimHost, make_node: Callable[[str], Node]
@@ -28,13 +31,15 @@ def test_pose_x_rises_while_the_turtle_moves(
     twist = get_message_class("geometry_msgs/Twist")
     driver = make_node("driver").advertise("/turtle1/cmd_vel", twist)
     feed = LiveFeed(Environment(environ={"ROS_MASTER_URI": host.master_uri}))
-    app = make_plot_app(feed, ["/turtle1/pose/x"], PlotSettings(fps=20))
+    # A window longer than the test: the samples of the turtle sitting still stay drawn however
+    # long a loaded machine takes to connect and drive.
+    app = make_plot_app(feed, ["/turtle1/pose/x"], PlotSettings(fps=20, window=3600.0))
 
     async def drive() -> None:
         async with app.run_test(size=(100, 32)) as pilot:
             pane = app.pane
             series = pane.series[0]
-            deadline = time.monotonic() + 20
+            deadline = time.monotonic() + WAIT
             while len(series) < 5:  # the pose arrives (62.5 Hz): the turtle still sits
                 assert time.monotonic() < deadline, series.status
                 await pilot.pause(0.05)
@@ -42,6 +47,7 @@ def test_pose_x_rises_while_the_turtle_moves(
             assert still is not None and still == pytest.approx(5.544445, abs=1e-4)
             command = twist()
             command.linear.x = 2.0
+            deadline = time.monotonic() + WAIT
             while series.latest is None or series.latest < still + 1.0:
                 assert time.monotonic() < deadline, "x did not rise"
                 driver.publish(command)
@@ -50,6 +56,7 @@ def test_pose_x_rises_while_the_turtle_moves(
             moving = values[values > still]
             assert len(moving) > 10 and (np.diff(moving) >= 0).all()  # rising, never back
             assert (np.diff(times) >= 0).all()
+            deadline = time.monotonic() + WAIT
             while pane.frames == 0 or pane.plot._datasets[0].y.max() < still + 1.0:
                 assert time.monotonic() < deadline, "the plot did not draw the rise"
                 await pilot.pause(0.05)

@@ -9,25 +9,31 @@ worth, after waiting for the motion to start and to stop.
 from __future__ import annotations
 
 import math
+import os
 import time
 from collections.abc import Callable
 from typing import Any
 
 from textual.message import Message
 from textual.pilot import Pilot
+from textual.widgets import Static, TabbedContent
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx_turtle.engine.constants import DT
 from rosx_turtle.sim.host import SimHost
+from rosx_turtle.tui.details import DetailsScreen
 from rosx_turtle.tui.factory import make_sim_app
+from rosx_turtle.tui.graph import fetch_graph
 from rosx_turtle.tui.nodes import NodesPanel
+from rosx_turtle.tui.pond import PondView
 from rosx_turtle.tui.pose import PosePanel
 from rosx_turtle.tui.teleop import TeleopPad
 from rosx_turtle.tui.topics import TopicsPanel
 from rosx_turtle.view.scene import TurtlePose
+from tests.support.cli import clean_environ, rosx
 from tests.support.procs import wait_for
-from tests.tui.conftest import Pond, StaticLink, run
+from tests.tui.conftest import Pond, StaticLink, run, scripted_pond
 
 Twist = get_message_class("geometry_msgs/Twist")
 SIZE = (120, 36)
@@ -231,3 +237,127 @@ def test_keys_send_what_turtle_teleop_key_sends() -> None:
     run(type_keys())
     arrows = [(2.0, 0.0), (-2.0, 0.0), (0.0, 2.0), (0.0, -2.0)]
     assert link.sent == arrows + arrows
+
+
+async def wait_until(pilot: Pilot[Any], ready: Callable[[], object], what: str) -> None:
+    """Let the app run until ``ready()`` is true (a generous deadline)."""
+    deadline = time.monotonic() + 30
+    while not ready():
+        assert time.monotonic() < deadline, f"timed out waiting for {what}"
+        await pilot.pause(0.05)
+
+
+def test_enter_on_a_topic_shows_its_info_and_latest_messages(host: SimHost) -> None:
+    app = make_sim_app(host)
+
+    async def look() -> tuple[str, str, bool, bool]:
+        async with app.run_test(size=SIZE) as pilot:
+            topics = app.query_one(TopicsPanel)
+            await wait_until(pilot, lambda: "/turtle1/pose" in topics.rows, "the topic list")
+            topics.focus()
+            topics.move_cursor(row=topics.get_row_index("/turtle1/pose"))
+            await pilot.press("enter")
+            details = app.screen
+            assert isinstance(details, DetailsScreen)
+            await wait_until(pilot, lambda: details.info and details.echoed, "info and echo")
+            info, echoed = details.info, details.echoed
+            await pilot.press("escape")
+            await pilot.pause()
+            return info, echoed, app.screen is not details, app.focused is topics
+
+    info, echoed, closed, refocused = run(look())
+    lines = info.splitlines()
+    assert lines[:3] == ["Type: turtlesim/Pose", "", "Publishers: "]
+    assert lines[3].startswith(" * /turtlesim (http://")
+    # The latest messages, as rostopic echo prints them (turtle1 sits where it started).
+    assert echoed.splitlines()[-6:] == [
+        "x: 5.544444561004639",
+        "y: 5.544444561004639",
+        "theta: 0.0",
+        "linear_velocity: 0.0",
+        "angular_velocity: 0.0",
+        "---",
+    ]
+    assert closed and refocused
+    # The echo's node leaves with the details.
+    wait_for(
+        lambda: not any("rosx_sim_echo" in n.name for n in fetch_graph(host.master_uri).nodes),
+        what="the echo node gone",
+    )
+
+
+def test_enter_on_a_node_shows_rosnode_info(host: SimHost) -> None:
+    app = make_sim_app(host)
+
+    async def look() -> str:
+        async with app.run_test(size=SIZE) as pilot:
+            nodes = app.query_one(NodesPanel)
+            await wait_until(pilot, lambda: "/teleop_turtle" in nodes.rows, "the node list")
+            nodes.focus()
+            nodes.move_cursor(row=nodes.get_row_index("/teleop_turtle"))
+            await pilot.press("enter")
+            details = app.screen
+            assert isinstance(details, DetailsScreen)
+            await wait_until(pilot, lambda: details.info, "the node's info")
+            return details.info
+
+    info = run(look())
+    environ = clean_environ(ROS_MASTER_URI=host.master_uri)
+    printed = rosx("rosnode", "info", "/teleop_turtle", environ=environ).out
+    # Everything up to the live connections is what rosnode info prints.
+    assert info.split("Pid:")[0] == printed.split("Pid:")[0]
+    assert f"Pid: {os.getpid()}" in info.splitlines()
+
+
+def test_details_at_80x24_from_the_topics_tab_echo_and_close() -> None:
+    link = StaticLink(Pond().scene())
+    app = make_sim_app(link)
+
+    async def look() -> tuple[str, str, bool]:
+        async with app.run_test(size=(80, 24)) as pilot:
+            await pilot.pause()
+            topics = app.query_one(TopicsPanel)
+            await wait_until(pilot, lambda: topics.row_count == 5, "the topic list")
+            await pilot.press("tab", "tab")  # teleop → the tabs → the Topics table
+            assert app.focused is topics
+            await pilot.press("down", "down", "enter")
+            details = app.screen
+            assert isinstance(details, DetailsScreen)
+            await wait_until(pilot, lambda: "/turtle1/cmd_vel" in link.echoes, "the echo")
+            link.echoes["/turtle1/cmd_vel"]("linear: \n  x: 2.0\n---\n")
+            await wait_until(pilot, lambda: details.echoed, "the message shown")
+            info, echoed = details.info, details.echoed
+            await pilot.press("escape")
+            await pilot.pause()
+            return info, echoed, "/turtle1/cmd_vel" in link.echoes
+
+    info, echoed, still_echoing = run(look())
+    assert info == "Type: geometry_msgs/Twist\n\nPublishers: None\n"
+    assert echoed == "linear: \n  x: 2.0\n---\n"
+    assert not still_echoing
+
+
+def test_the_pond_gets_its_space_first() -> None:
+    app = make_sim_app(StaticLink(scripted_pond().scene()))
+
+    async def squeeze() -> list[tuple[int, int, bool] | str]:
+        seen: list[tuple[int, int, bool] | str] = []
+        async with app.run_test(size=(80, 24)) as pilot:
+            for size in ((80, 24), (120, 40), (60, 16), (59, 30), (100, 13)):
+                await pilot.resize_terminal(*size)
+                await pilot.pause(0.1)
+                await pilot.pause()
+                if not app.query_one("#columns").display:
+                    seen.append(str(app.query_one("#too-small", Static).render()))
+                    continue
+                fit = app.query_one(PondView).renderer.fit
+                seen.append((fit.side, fit.rows, bool(app.query(TabbedContent))))
+        return seen
+
+    assert run(squeeze()) == [
+        (40, 20, True),  # 80x24: a 40x20 pond, the panels in tabs
+        (72, 36, False),  # 120x40: the panels stacked
+        (20, 10, True),  # 60x16: still a pond
+        "rosx sim needs at least 60x14; this terminal is 59x30",
+        "rosx sim needs at least 60x14; this terminal is 100x13",
+    ]

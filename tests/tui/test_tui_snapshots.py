@@ -54,6 +54,21 @@ def test_sim_screen_after_a_key_and_a_focus_change(snap_compare: SnapCompare) ->
     assert link.sent == [(2.0, 0.0), (0.0, 2.0)]
 
 
+def test_sim_screen_at_80x24_pond_first_panels_in_tabs(snap_compare: SnapCompare) -> None:
+    app = make_sim_app(StaticLink(scripted_pond().scene()))
+    assert snap_compare(app, terminal_size=(80, 24))
+
+
+def test_sim_screen_at_120x40_panels_stacked(snap_compare: SnapCompare) -> None:
+    app = make_sim_app(StaticLink(scripted_pond().scene()))
+    assert snap_compare(app, terminal_size=(120, 40))
+
+
+def test_sim_screen_too_small_says_the_size_it_needs(snap_compare: SnapCompare) -> None:
+    app = make_sim_app(StaticLink(scripted_pond().scene()))
+    assert snap_compare(app, terminal_size=(50, 12))
+
+
 def test_the_pond_survives_any_terminal_size() -> None:
     pond = scripted_pond()
     scenes: Feed[Scene] = Feed(pond.scene())

@@ -194,7 +194,13 @@ def test_rosrpc_uris() -> None:
     assert parse_rosrpc_uri("rosrpc://10.0.0.1:80/extra") == ("10.0.0.1", 80)
     with pytest.raises(ProtocolError, match="Invalid protocol for ROS service URL: http://h:1"):
         parse_rosrpc_uri("http://h:1")
-    for bad in ("rosrpc://host", "rosrpc://host:x", "rosrpc://:1", "rosrpc://a:b:1"):
+    for bad in (
+        "rosrpc://host",
+        "rosrpc://host:x",
+        "rosrpc://:1",
+        "rosrpc://a:b:1",
+        "rosrpc://h:1²",
+    ):
         with pytest.raises(ProtocolError, match=f"ROS service URL is invalid: {bad}"):
             parse_rosrpc_uri(bad)
 

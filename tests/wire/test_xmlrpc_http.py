@@ -170,6 +170,17 @@ def test_keep_alive_rules(version: str, connection: str | None, keep_alive: bool
         (b"POST / HTTP/1.1\r\n\r\n", 411, "needs a Content-Length"),
         (b"POST / HTTP/1.1\r\nContent-Length: 11\r\n\r\n", 413, "body of 11 bytes exceeds"),
         (b"POST / HTTP/1.1\r\nContent-Length: -1\r\n\r\n", 400, "invalid Content-Length"),
+        # Latin-1 has digits that str.isdigit accepts and int refuses.
+        (
+            "POST / HTTP/1.1\r\nContent-Length: ²\r\n\r\n".encode("latin-1"),
+            400,
+            "invalid Content-Length",
+        ),
+        (
+            "POST / HTTP/1.1\r\nContent-Length: 1¹\r\n\r\n".encode("latin-1"),
+            400,
+            "invalid Content-Length",
+        ),
         (
             b"POST / HTTP/1.1\r\nContent-Length: 1\r\nContent-Length: 2\r\n\r\n",
             400,
@@ -205,6 +216,8 @@ def test_request_without_body_for_other_methods() -> None:
     ("data", "eof", "message"),
     [
         (b"HTTP/1.1 abc OK\r\n\r\n", False, "malformed HTTP status line"),
+        ("HTTP/1.1 2²0 OK\r\n\r\n".encode("latin-1"), False, "malformed HTTP status line"),
+        ("HTTP/1.1 200 OK\r\nContent-Length: ³\r\n\r\n".encode("latin-1"), False, "Content-Length"),
         (b"ICY 200 OK\r\n\r\n", False, "malformed HTTP status line"),
         (b"HTTP/1.1 200 OK\r\nContent-Length: 5\r\n\r\nab", True, "after 2 of 5 HTTP body"),
         (b"HTTP/1.1 200 OK\r\nContent-", True, "in the middle of an HTTP response head"),
@@ -299,7 +312,18 @@ def test_parse_http_uri(uri: str, parts: tuple[str, int, str]) -> None:
 
 
 @pytest.mark.parametrize(
-    "uri", ["rosrpc://h:1", "localhost:11311", "http://:80/", "http://h:x/", "http://h:70000/"]
+    "uri",
+    [
+        "rosrpc://h:1",
+        "localhost:11311",
+        "http://:80/",
+        "http://h:x/",
+        "http://h:70000/",
+        "http://127.0.0.1:1²/",
+        "http://127.0.0.1:١٢/",
+        "http://[::1]:²/",
+        "http://[::1/",
+    ],
 )
 def test_parse_http_uri_refuses(uri: str) -> None:
     with pytest.raises(ProtocolError):

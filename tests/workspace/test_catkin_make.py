@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from rosx.workspace.environment import SHARE
 from tests.support.cli import Result, clean_environ, rosx
 from tests.workspace.packages import MANIFEST, package
 
@@ -198,7 +199,8 @@ def test_sourcing_devel_setup_lets_python_import_the_workspace(tmp_path: Path) -
     )
     assert done.returncode == 0, done.stderr
     path, types, package_dir, devel = done.stdout.splitlines()
-    assert path == str(tmp_path / "ws" / "src")  # once, however often it is sourced
+    # once, however often it is sourced; then the packages rosx ships, as /opt/ros/noetic/share
+    assert path == f"{tmp_path / 'ws' / 'src'}:{SHARE}"
     assert json.loads(types) == ["lab2/Num", "std_msgs/String"]
     assert (package_dir, devel) == (str(lab2), str(tmp_path / "ws" / "devel"))
 

@@ -34,6 +34,15 @@ def workspace(tmp_path: Path) -> Path:
     return src
 
 
+#: ``rospack depends beginner_tutorials`` in ROS/Tutorials/CreatingPackage (Noetic).
+TUTORIAL_DEPENDS = [
+    "cpp_common", "rostime", "roscpp_traits", "roscpp_serialization", "catkin", "genmsg", "genpy",
+    "message_runtime", "gencpp", "geneus", "gennodejs", "genlisp", "message_generation",
+    "rosbuild", "rosconsole", "std_msgs", "rosgraph_msgs", "xmlrpcpp", "roscpp", "rosgraph",
+    "ros_environment", "rospack", "roslib", "rospy",
+]  # fmt: skip
+
+
 def env_of(src: Path) -> dict[str, str]:
     return clean_environ(ROS_PACKAGE_PATH=str(src))
 
@@ -42,12 +51,12 @@ def test_rospack_finds_lists_and_follows_dependencies(workspace: Path) -> None:
     env = env_of(workspace)
     assert rosx("rospack", "find", "lab2", environ=env).out == f"{workspace}/lab2\n"
     listing = rosx("rospack", "list", environ=env).out.splitlines()
-    assert f"lab2 {workspace}/lab2" in listing and listing[0].startswith("lab2 ")
+    assert f"lab2 {workspace}/lab2" in listing and listing == sorted(listing)
     assert any(line.startswith("turtlesim ") for line in listing)
     assert rosx("rospack", "depends1", "lab2", environ=env).out == "std_msgs\nrospy\nroscpp\n"
-    assert rosx("rospack", "depends", "user", environ=env).out == (
-        "std_msgs\nrospy\nroscpp\nlab2\n"
-    )
+    # Noetic's closure of std_msgs, rospy and roscpp, then lab2 (the order: tests below).
+    depends = rosx("rospack", "depends", "user", environ=env).out.split()
+    assert depends[-1] == "lab2" and sorted(depends) == sorted([*TUTORIAL_DEPENDS, "lab2"])
     assert rosx("rospack", "depends-on1", "lab2", environ=env).out == "user\n"
 
 
@@ -97,6 +106,17 @@ def test_rosrun_usage_and_invalid_names(workspace: Path) -> None:
     )
     invalid = rosx("rosrun", "lab2", "scripts/", environ=env_of(workspace))
     assert (invalid.status, invalid.out) == (1, "Invalid filename:  scripts/\n")
+
+
+@pytest.mark.parametrize("answer", ["x", "²", "3"])
+def test_rosrun_refuses_a_choice_that_is_not_a_listed_number(workspace: Path, answer: str) -> None:
+    for folder in ("bin", "scripts"):
+        (workspace / "lab2" / folder).mkdir(exist_ok=True)
+        (workspace / "lab2" / folder / "twice").write_text("#!/bin/sh\n")
+        (workspace / "lab2" / folder / "twice").chmod(0o755)
+    result = rosx("rosrun", "lab2", "twice", stdin=answer + "\n", environ=env_of(workspace))
+    assert result.status == 3
+    assert result.err.endswith("2) " + str(workspace / "lab2" / "scripts" / "twice") + "\n#? ")
 
 
 def test_rosrun_runs_python_scripts_with_rosxs_python(workspace: Path) -> None:

@@ -2,9 +2,10 @@
 
 roscore (roslaunch with ``roscore.xml``) prints its start-up summary, starts the master, sets
 its parameters, starts ``/rosout``, then runs until SIGINT, SIGTERM or a ``shutdown`` call. This
-prints the same, in the same order and words, except what rosx does not do: no log files (so no
-"logging to" lines), and no separate roslaunch server (the master's own URI stands for it). Bold,
-red and the terminal title are written only to a terminal.
+prints the same, in the same order and words (the run's log folder and ``... logging to`` line
+come from `rosx.workspace.logdir`, as roslaunch's), except what rosx does not do: no separate
+roslaunch server (the master's own URI stands for it). Bold, red and the terminal title are
+written only to a terminal.
 
 Exit codes, as roscore's: 0 after a clean stop, 1 when the master cannot start (another master
 already runs on the port, or the port is taken).
@@ -22,6 +23,7 @@ from rosx.core.params import ROSDISTRO, ROSVERSION
 from rosx.master.client import master_uri
 from rosx.transport.address import address_warnings, foreign_address_warning, is_local_host
 from rosx.wire.xmlrpc_http import parse_http_uri
+from rosx.workspace.logdir import announce_run_log
 
 if TYPE_CHECKING:
     from collections.abc import Mapping
@@ -193,8 +195,9 @@ def run_roscore(
     foreign = foreign_address_warning(environ)
     if foreign is not None:
         out.error(foreign)
-    out.title("roscore")
     core = Core(port, environ)
+    announce_run_log(environ, core.run_id, out=out.line, err=out.error)
+    out.title("roscore")
     with _StopSignals() as signals:
         try:
             core.start()

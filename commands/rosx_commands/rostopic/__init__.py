@@ -7,7 +7,7 @@
 import importlib
 from collections.abc import Callable, Sequence
 
-from rosx.names.remap_args import strip_remap_args
+from rosx.names.remap_args import parse_remap_args
 from rosx_commands.cli import commands_overview, run_command
 from rosx_commands.context import Environment, ExitStatus
 from rosx_commands.rostopic import listing
@@ -54,7 +54,8 @@ def _streaming(name: str) -> Callable[[list[str], Environment], int]:
 
 def rostopic(argv: Sequence[str], env: Environment) -> int:
     """Run ``rostopic ARGV…``."""
-    args = strip_remap_args(list(argv))
+    env.remap_args = parse_remap_args(list(argv))
+    args = list(env.remap_args.argv)
     handlers: dict[str, Callable[[list[str], Environment], int]] = {
         "list": listing.list_topics,
         "info": listing.info,

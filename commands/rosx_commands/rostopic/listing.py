@@ -160,7 +160,7 @@ def _print_by_host(
     verbose: bool,
 ) -> None:
 
-    from urllib.parse import urlparse  # noqa: PLC0415 - only list --host needs it
+    from rosx.transport.address import uri_hostname  # noqa: PLC0415 - only list --host
 
     uris: dict[str, str | None] = {}
 
@@ -170,7 +170,7 @@ def _print_by_host(
             for node in nodes:
                 if node not in uris:
                     uris[node] = master.lookup_node(node)
-                host = urlparse(uris[node] or "").hostname or ""
+                host = uri_hostname(uris[node] or "")
                 mine = hosts.setdefault(host, [])
                 match = [n for t, _, n in mine if t == topic]
                 if match:
@@ -210,21 +210,26 @@ def topic_type(argv: list[str], env: Environment) -> int:
     from rosx.msg.text.fieldpath import find_topic  # noqa: PLC0415 - only type needs it
 
     types = env.master(CALLER_ID).topic_types()
-    found = find_topic(name, types)
+    if name in types:
+        env.out(types[name])
+        return ExitStatus.OK
+    from rosx.msg.store import TypeStore, UnknownTypeError  # noqa: PLC0415 - field paths only
+
+    store = TypeStore.from_environ(env.environ)
+    found = find_topic(name, types, store)
     if found is None:
         raise CommandError(f"unknown topic type [{name}]")
     topic, type_name = found
-    if topic == name:
-        env.out(type_name)
-        return ExitStatus.OK
     field = name[len(topic) + 1 :]
     field_type = type_name
-    from rosx.msg.store import TypeStore  # noqa: PLC0415 - only field paths need types
-
-    store = TypeStore.from_environ(env.environ)
-    for part in field.split("/"):
-        spec = store.msg(field_type)
-        field_type = next(f.type for f in spec.fields if f.name == part)
+    try:
+        for part in field.split("/"):
+            spec = store.msg(field_type)
+            field_type = next(f.type for f in spec.fields if f.name == part)
+    except UnknownTypeError as error:
+        raise CommandError(
+            f"ERROR: Cannot load message class for [{error.full_name}]. Are your messages built?"
+        ) from None
     env.out(f"{type_name} {field} {field_type}")
     return ExitStatus.OK
 

@@ -140,23 +140,24 @@ def pub(argv: list[str], env: Environment) -> int:
 
 
 def _message_class(session: Session, type_name: str) -> type[Message]:
-    """The class to publish, or ROS 1's ``invalid topic type`` / ``invalid message type``."""
+    """The class to publish, or ROS 1's ``invalid topic type`` / ``invalid message type``.
+
+    As genpy looks a class up: a name that is not ``package/Type`` (bare ``Header`` aside) is an
+    ``invalid topic type``; any other name that gives no class is an ``invalid message type``,
+    with the hint to build its package.
+    """
     from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
-    from rosx.msg.parser import is_valid_type_name  # noqa: PLC0415
-    from rosx.msg.store import UnknownTypeError  # noqa: PLC0415
 
     try:
         return get_message_class(type_name, session.store)
-    except UnknownTypeError as error:
-        if is_valid_type_name(type_name) and not error.package_known:
-            package = type_name.partition("/")[0]
-            fail(
-                f"invalid message type: {type_name}.\n"
-                f"If this is a valid message type, perhaps you need to type 'rosmake {package}'"
-            )
-        fail(f"invalid topic type: {type_name}")
-    except Exception:  # a definition that does not parse
-        fail(f"invalid topic type: {type_name}")
+    except Exception:  # unknown, or a definition that does not parse
+        package, slash, rest = type_name.partition("/")
+        if not (package and slash) or "/" in rest:
+            fail(f"invalid topic type: {type_name}")
+        fail(
+            f"invalid message type: {type_name}.\n"
+            f"If this is a valid message type, perhaps you need to type 'rosmake {package}'"
+        )
 
 
 def _file_documents(filename: str) -> list[Any]:

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, NoReturn
 
 from rosx.msg.text.fieldpath import find_topic
 from rosx.names.anonymous import anonymous_node_name
+from rosx.names.remap_args import RemapArgs
 from rosx_commands.context import CommandError, Environment
 from rosx_commands.rostopic.listing import CALLER_ID
 
@@ -67,11 +68,19 @@ class Session:
         self.master.call("getPid")
 
     def start_node(self, *, rosout: bool = True) -> Node:
-        """Start the tool's node (``/rostopic_<pid>_<ms>`` in ``ROS_NAMESPACE``)."""
+        """Start the tool's node (``/rostopic_<pid>_<ms>`` in ``ROS_NAMESPACE``).
+
+        As rospy's ``init_node``, the command line's ``__name:=`` and ``__ns:=`` rename it,
+        its ``from:=to`` remap names, and its ``_param:=value`` set private parameters.
+        """
         from rosx.node import Node  # noqa: PLC0415 - only streaming commands need the runtime
 
+        args = self.env.remap_args or RemapArgs()
         node = Node(
-            anonymous_node_name("rostopic"),
+            args.name or anonymous_node_name("rostopic"),
+            namespace=args.ns,
+            remappings=args.remappings,
+            private_params=args.params,
             master_uri=self.master.uri,
             environ=self.env.environ,
             rosout_enabled=rosout,

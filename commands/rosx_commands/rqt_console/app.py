@@ -18,15 +18,14 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from rich.text import Text
-from textual.app import App  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import Vertical  # noqa: TID253 - TUI code
 from textual.widgets import Input, Static  # noqa: TID253 - TUI code
 
 from rosx_commands.errors import error_line
+from rosx_commands.paneapp import PaneApp
 from rosx_commands.rqt_console.model import DEFAULT_LIMIT, Kind, Log, Rule, RuleError, details
 from rosx_commands.rqt_console.table import LogTable
-from rosx_turtle.tui.quit import QUIT_BINDINGS, QuitFooter
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -230,20 +229,10 @@ class ConsolePane(Vertical):
         self.source.close()
 
 
-class ConsoleApp(App[int]):
+class ConsoleApp(PaneApp[ConsolePane]):
     """``rosx rqt_console`` on its own: the pane and a footer."""
 
     TITLE = "rqt_console"
-    ENABLE_COMMAND_PALETTE = False
-    BINDINGS: ClassVar[list[BindingType]] = list(QUIT_BINDINGS)
-
-    def __init__(self, pane: ConsolePane) -> None:
-        super().__init__()
-        self.pane = pane
-
-    def compose(self) -> ComposeResult:
-        yield self.pane
-        yield QuitFooter()
 
 
 def make_console_app(

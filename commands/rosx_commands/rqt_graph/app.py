@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 from rich.text import Text
-from textual.app import App, ComposeResult  # noqa: TID253 - TUI code
+from textual.app import ComposeResult  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import Horizontal, Vertical, VerticalScroll  # noqa: TID253 - TUI code
 from textual.widgets import Input, Static  # noqa: TID253 - TUI code
@@ -32,9 +32,9 @@ from rosx.graph.builder import build
 from rosx.graph.options import GraphOptions, Mode, NameFilter
 from rosx.graph.text import Drawing, draw
 from rosx.graph.view import Changes, Kind, ViewGraph, changes, vanished, with_ghosts
+from rosx_commands.paneapp import PaneApp
 from rosx_commands.rqt_graph.source import GraphSource
 from rosx_commands.rqt_graph.view import GraphView, Marks
-from rosx_turtle.tui.quit import QuitFooter
 
 _MODES = list(Mode)
 #: Seconds the last changes stay marked (what vanished drawn as gone) on an unchanged graph.
@@ -274,21 +274,10 @@ class GraphPane(Vertical):
         self.source.close()
 
 
-class GraphApp(App[int]):
+class GraphApp(PaneApp[GraphPane]):
     """``rosx rqt_graph`` on its own: the pane and a footer; the pane's state reads through."""
 
-    BINDINGS: ClassVar[list[BindingType]] = [
-        Binding("q", "quit", "Quit"),
-        Binding("ctrl+c", "quit", "Quit", show=False, priority=True),
-    ]
-
-    def __init__(self, pane: GraphPane) -> None:
-        super().__init__()
-        self.pane = pane
-
-    def compose(self) -> ComposeResult:
-        yield self.pane
-        yield QuitFooter()
+    ENABLE_COMMAND_PALETTE = True  # its footer has always offered the palette
 
     @property
     def drawing(self) -> Drawing:

@@ -14,15 +14,14 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from rich.text import Text
-from textual.app import App  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import Horizontal, Vertical  # noqa: TID253 - TUI code
 from textual.widgets import OptionList, Static  # noqa: TID253 - TUI code
 from textual.widgets.option_list import Option  # noqa: TID253 - TUI code
 
 from rosx_commands.errors import error_line
+from rosx_commands.paneapp import PaneApp
 from rosx_commands.rqt_logger_level.source import LEVELS
-from rosx_turtle.tui.quit import QUIT_BINDINGS, QuitFooter
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -212,20 +211,10 @@ class LevelPane(Vertical):
         self.source.close()
 
 
-class LevelApp(App[int]):
+class LevelApp(PaneApp[LevelPane]):
     """``rosx rqt_logger_level`` on its own: the pane and a footer."""
 
     TITLE = "rqt_logger_level"
-    ENABLE_COMMAND_PALETTE = False
-    BINDINGS: ClassVar[list[BindingType]] = list(QUIT_BINDINGS)
-
-    def __init__(self, pane: LevelPane) -> None:
-        super().__init__()
-        self.pane = pane
-
-    def compose(self) -> ComposeResult:
-        yield self.pane
-        yield QuitFooter()
 
 
 def make_level_app(source: LevelSource) -> LevelApp:

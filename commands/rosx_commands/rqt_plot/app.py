@@ -19,14 +19,14 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, ClassVar
 
 from rich.text import Text
-from textual.app import App, ComposeResult  # noqa: TID253 - TUI code
+from textual.app import ComposeResult  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import Vertical  # noqa: TID253 - TUI code
 from textual.widgets import Input, OptionList, Static  # noqa: TID253 - TUI code
 from textual.widgets.option_list import Option  # noqa: TID253 - TUI code
 
+from rosx_commands.paneapp import PaneApp
 from rosx_commands.rqt_plot.series import Series, SeriesError, envelope, expand_args
-from rosx_turtle.tui.quit import QuitFooter
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -324,22 +324,8 @@ class PlotPane(Vertical):
         self.feed.close()
 
 
-class PlotApp(App[int]):
+class PlotApp(PaneApp[PlotPane]):
     """``rosx rqt_plot`` on its own: the pane and a footer."""
-
-    ENABLE_COMMAND_PALETTE = False  # its footer entry would push "q Quit" off 80 columns
-    BINDINGS: ClassVar[list[BindingType]] = [
-        Binding("q", "quit", "Quit"),
-        Binding("ctrl+c", "quit", "Quit", show=False, priority=True),
-    ]
-
-    def __init__(self, pane: PlotPane) -> None:
-        super().__init__()
-        self.pane = pane
-
-    def compose(self) -> ComposeResult:
-        yield self.pane
-        yield QuitFooter()
 
 
 def make_plot_app(

@@ -13,12 +13,13 @@ import time
 from typing import TYPE_CHECKING, Any, Protocol
 
 from rosx_commands.rqt_plot.series import Series, SeriesError
+from rosx_commands.toolnode import ToolNode
 
 if TYPE_CHECKING:
     from collections.abc import Callable
 
     from rosx.msg.store import TypeStore
-    from rosx.node import Node, Subscriber
+    from rosx.node import Subscriber
     from rosx_commands.context import Environment
 
 CALLER_ID = "/rqt_plot"
@@ -44,15 +45,13 @@ class PlotFeed(Protocol):
     def close(self) -> None: ...
 
 
-class LiveFeed:
+class LiveFeed(ToolNode):
     """A master's topics, through one node of its own (``/rqt_plot_<pid>_<ms>``)."""
 
     def __init__(self, env: Environment, clock: Callable[[], float] = time.monotonic) -> None:
-        self.env = env
+        super().__init__(env, "rqt_plot")
         self._clock = clock
         self._start = clock()
-        self._node: Node | None = None
-        self._store: TypeStore | None = None
         self._subscribers: dict[Series, Subscriber] = {}
         self._lock = threading.Lock()
 
@@ -102,31 +101,6 @@ class LiveFeed:
             subscriber = self._subscribers.pop(series, None)
         if subscriber is not None:
             subscriber.unregister()
-
-    def close(self) -> None:
-        if self._node is not None:
-            self._node.shutdown("rqt_plot closed")
-            self._node = None
-
-    def _types(self) -> TypeStore:
-        if self._store is None:
-            from rosx.msg.store import TypeStore  # noqa: PLC0415
-
-            self._store = TypeStore.from_environ(self.env.environ)
-        return self._store
-
-    def _started(self) -> Node:
-        with self._lock:
-            if self._node is None:
-                from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415
-                from rosx.node import Node  # noqa: PLC0415
-
-                self._node = Node(
-                    anonymous_node_name("rqt_plot"),
-                    master_uri=self.env.master_uri,
-                    environ=self.env.environ,
-                ).start()
-            return self._node
 
 
 def _numeric_path(

@@ -13,13 +13,13 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, ClassVar
 
 from rich.text import Text
-from textual.app import App, ComposeResult  # noqa: TID253 - TUI code
+from textual.app import ComposeResult  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import Vertical  # noqa: TID253 - TUI code
 from textual.widgets import Static, Tree  # noqa: TID253 - TUI code
 
+from rosx_commands.paneapp import PaneApp
 from rosx_commands.rqt_topic.monitor import Field, Reading, bytes_per_second, fields
-from rosx_turtle.tui.quit import QuitFooter
 
 if TYPE_CHECKING:
     from textual.widgets.tree import TreeNode
@@ -229,22 +229,8 @@ def _label(row: Field) -> Text:
     return text
 
 
-class TopicApp(App[int]):
+class TopicApp(PaneApp[TopicPane]):
     """``rosx rqt_topic`` on its own: the pane and a footer."""
-
-    ENABLE_COMMAND_PALETTE = False
-    BINDINGS: ClassVar[list[BindingType]] = [
-        Binding("q", "quit", "Quit"),
-        Binding("ctrl+c", "quit", "Quit", show=False, priority=True),
-    ]
-
-    def __init__(self, pane: TopicPane) -> None:
-        super().__init__()
-        self.pane = pane
-
-    def compose(self) -> ComposeResult:
-        yield self.pane
-        yield QuitFooter()
 
 
 def make_topic_app(source: TopicSource, *, periodic: bool = True) -> TopicApp:

@@ -14,11 +14,12 @@ import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Protocol
 
+from rosx_commands.toolnode import ToolNode
+
 if TYPE_CHECKING:
     from collections.abc import Callable
 
-    from rosx.msg.store import TypeStore
-    from rosx.node import Node, RawMessage, Subscriber
+    from rosx.node import RawMessage, Subscriber
     from rosx.node.stats import BandwidthTracker, HzTracker
     from rosx_commands.context import Environment
 
@@ -78,14 +79,12 @@ class _Monitored:
         self.subscriber: Subscriber | None = None
 
 
-class LiveTopicSource:
+class LiveTopicSource(ToolNode):
     """A master's topics through one node of its own (``/rqt_topic_<pid>_<ms>``)."""
 
     def __init__(self, env: Environment, clock: Callable[[], float] = time.monotonic) -> None:
-        self.env = env
+        super().__init__(env, "rqt_topic")
         self._clock = clock
-        self._node: Node | None = None
-        self._store: TypeStore | None = None
         self._monitored: dict[str, _Monitored] = {}
         self._lock = threading.Lock()
 
@@ -148,31 +147,6 @@ class LiveTopicSource:
             message = f"cannot decode {type_name}: {error}"
         watched.decoded = (latest, message)
         return message
-
-    def close(self) -> None:
-        if self._node is not None:
-            self._node.shutdown("rqt_topic closed")
-            self._node = None
-
-    def _types(self) -> TypeStore:
-        if self._store is None:
-            from rosx.msg.store import TypeStore  # noqa: PLC0415
-
-            self._store = TypeStore.from_environ(self.env.environ)
-        return self._store
-
-    def _started(self) -> Node:
-        with self._lock:
-            if self._node is None:
-                from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415
-                from rosx.node import Node  # noqa: PLC0415
-
-                self._node = Node(
-                    anonymous_node_name("rqt_topic"),
-                    master_uri=self.env.master_uri,
-                    environ=self.env.environ,
-                ).start()
-            return self._node
 
 
 def fields(message: object) -> tuple[Field, ...]:

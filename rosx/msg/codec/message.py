@@ -68,12 +68,21 @@ class Message:
     # -- the codec (generated per type) -----------------------------------------------------
 
     def serialize(self, buff: Writable) -> None:
-        """Write this message in the ROS 1 wire format to ``buff``."""
-        raise NotImplementedError(f"{type(self).__name__} has no generated serializer")
+        """Write this message in the ROS 1 wire format to ``buff``.
+
+        A message without fields (``rospy.Message()`` itself) writes nothing, as genpy's.
+        """
+        if self._slot_types:
+            raise NotImplementedError(f"{type(self).__name__} has no generated serializer")
 
     def deserialize(self: _M, data: bytes) -> _M:
-        """Read this message's fields from ``data`` (bytes-like) and return ``self``."""
-        raise NotImplementedError(f"{type(self).__name__} has no generated deserializer")
+        """Read this message's fields from ``data`` (bytes-like) and return ``self``.
+
+        A message without fields reads nothing.
+        """
+        if self._slot_types:
+            raise NotImplementedError(f"{type(self).__name__} has no generated deserializer")
+        return self
 
     def serialize_numpy(self, buff: Writable, numpy: ModuleType) -> None:
         """As `serialize`, taking numeric arrays as numpy arrays."""

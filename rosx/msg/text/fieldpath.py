@@ -132,7 +132,8 @@ def find_topic(
     """The topic ``name`` denotes, itself or the longest topic it is a field path of.
 
     A topic whose type has no such field (in ``store``: the standard types by default) is
-    skipped, as ROS 1 does.
+    skipped, as ROS 1 does; one whose type is not known is taken as it is (its users then say
+    they cannot load the type, as ROS 1's do).
     """
     if name in types:
         return name, types[name]
@@ -148,8 +149,10 @@ def find_topic(
             for part in path.split("/"):
                 field = next(f for f in store.msg(spec_type).fields if f.name == part)
                 spec_type = field.base_type
-        except (StopIteration, UnknownTypeError):
+        except StopIteration:
             continue
+        except UnknownTypeError:
+            return topic, types[topic]
         return topic, types[topic]
     return None
 

@@ -4,8 +4,9 @@
 defaults: block style (``default_flow_style=False``), keys sorted, indent 2, width 80, no
 unicode (non-ASCII characters are escaped in double quotes). This module reproduces that output
 for the values the Parameter Server holds: dicts with string keys, lists and tuples, strings,
-ints, floats, bools, ``None`` and bytes (binary values), and for the dates and times YAML files
-may hold (``--dump-params`` of roslaunch writes them back as PyYAML does).
+ints, floats, bools, ``None``, bytes (binary values) and ``xmlrpc.client.DateTime`` (XML-RPC
+dates, as rospy hands them to rosparam), and for the dates and times YAML files may hold
+(``--dump-params`` of roslaunch writes them back as PyYAML does).
 
 The layout rules, as PyYAML's emitter applies them:
 
@@ -22,6 +23,8 @@ The layout rules, as PyYAML's emitter applies them:
   ``null``;
 * bytes print as ``!!binary |-`` followed by their base64 text on one indented line: what
   ROS 1's rosparam registers for binary values (``base64.b64encode``, literal style);
+* a ``DateTime`` prints as PyYAML prints any Python object: the tag
+  ``!!python/object:xmlrpc.client.DateTime`` and the mapping of its state, ``value: TEXT``;
 * a plain scalar at the root ends the document with a ``...`` line.
 """
 
@@ -36,9 +39,11 @@ from rosx.msg.text.yamlstr import Writer, analyze, resolves_as_non_str
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from typing import Any
+    from typing import Any, TypeGuard
+    from xmlrpc.client import DateTime as _DateTime
 
 _INDENT = 2
+_DATE_TIME = "xmlrpc.client.DateTime"
 _SIMPLE_KEY_LIMIT = 128
 
 #: Decides whether a plain string would be read back as something else than a string.
@@ -121,6 +126,9 @@ class _Emitter:
                 self._block_sequence(value, mapping=mapping)
             else:
                 self._empty_flow("[", "]")
+        elif _is_date_time(value):
+            self.writer.indicator(f"!!python/object:{_DATE_TIME}", need_space=True)
+            self._block_mapping({"value": value.value})
         else:
             self._increase(flow=True)
             self._scalar(value, root=root, key=key)
@@ -189,6 +197,12 @@ class _Emitter:
             writer.single_quoted(text, split)
         else:
             writer.double_quoted(text, split)
+
+
+def _is_date_time(value: object) -> TypeGuard[_DateTime]:
+    # Looked at by name: the class is only loaded where XML-RPC delivered a date.
+    kind = type(value)
+    return f"{kind.__module__}.{kind.__qualname__}" == _DATE_TIME
 
 
 def _scalar_text(value: object) -> str:

@@ -14,8 +14,9 @@ Reading (`load_value` for ``rosparam set``, `load_documents` for ``rosparam load
 Writing (`dump_value`) is ``yaml.dump`` (`rosx.msg.text.yamldump`), whose resolver rosparam also
 taught ``deg(…)``/``rad(…)``: strings of that shape are quoted so that they read back as strings.
 
-`check_value` refuses what the Parameter Server cannot hold: null, dates, sets, integers outside
-32 bits, dictionaries with keys that are not strings.
+`check_value` refuses what the Parameter Server cannot hold: null, dates (a time stamp is sent as
+XML-RPC's ``dateTime.iso8601``, as ROS 1 sends it), sets, integers outside 32 bits, dictionaries
+with keys that are not strings.
 """
 
 from __future__ import annotations
@@ -109,6 +110,10 @@ def check_value(value: object, name: str = "") -> None:
                 raise ParamValueError(f"cannot set parameter [{path}]{_colon_hint(key, item)}")
             check_value(item, path)
         return
+    import datetime as dt  # noqa: PLC0415 - kept off rosparam get's start-up
+
+    if isinstance(value, dt.datetime):
+        return  # sent as XML-RPC's dateTime.iso8601, as ROS 1's rosparam sends it
     raise ParamValueError(
         f"cannot set parameter [{name}]: the Parameter Server cannot store {_describe_value(value)}"
     )

@@ -5,8 +5,10 @@ It starts what Lab 1 starts in four terminals: roscore's core (`rosx.core.Core`)
 ``/teleop_turtle``, which publishes ``geometry_msgs/Twist`` on ``/turtle1/cmd_vel`` with queue 1
 and reads ``scale_linear``/``scale_angular`` once, in its public namespace, as
 ``turtle_teleop_key`` does. The graph therefore looks the same to ``rostopic``, ``rosnode`` and
-rqt_graph in other terminals. On top it runs the feeds the screen follows: a scene after each
-tick that changes the pond, the graph whenever the master's lists change, and turtlesim's log.
+rqt_graph in other terminals. With ``join`` it starts no core: the two nodes register with
+the master already running at that URI. On top it runs the feeds the screen follows: a scene
+after each tick that changes the pond, the graph whenever the master's lists change, and
+turtlesim's log.
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from rosx.core import Core
+from rosx.master.client import MasterClient
 from rosx.msg.codec.classes import get_message_class
 from rosx_turtle.roscpp import NodeArgs
 from rosx_turtle.teleop import DEFAULT_NAME as TELEOP_NAME
@@ -25,11 +28,14 @@ if TYPE_CHECKING:
     from rosx.node import Node, Publisher
     from rosx_turtle.console import Console
     from rosx_turtle.node.turtlesim import TurtlesimNode
+    from rosx_turtle.sim.inspect import Inspector
     from rosx_turtle.tui.feed import Feed
     from rosx_turtle.tui.graph import Graph
     from rosx_turtle.tui.log import LogRecord
     from rosx_turtle.view.scene import Scene
 
+#: Seconds the master to join has to answer.
+JOIN_TIMEOUT = 3.0
 #: Where the teleop publishes, relative to its namespace (turtle_teleop_key's name).
 CMD_VEL = "turtle1/cmd_vel"
 
@@ -38,12 +44,13 @@ class SimHost:
     """Master, ``/rosout``, ``/turtlesim`` and ``/teleop_turtle``; `start`, use, `stop`.
 
     Args:
-        port: The master's port.
+        port: The master's port (unused with ``join``).
         environ: The environment (``ROS_IP``, ``ROS_HOSTNAME``, ``ROSCONSOLE_FORMAT``...).
         console: Where turtlesim's log lines go besides ``/rosout`` (None: to `logs` when
             watching, else nowhere).
         seed: Seeds turtlesim's choice of sprites (None: unpredictable).
         watch: Whether to run the feeds for a screen (`scenes`, `graph` and `logs`).
+        join: The URI of a master already running: start no core, register the nodes there.
     """
 
     def __init__(
@@ -54,8 +61,10 @@ class SimHost:
         console: Console | None = None,
         seed: int | None = None,
         watch: bool = True,
+        join: str | None = None,
     ) -> None:
-        self.core = Core(port, environ)
+        self.core = Core(port, environ) if join is None else None
+        self.joined = join
         self.environ = environ
         self.console = console
         self.seed = seed
@@ -70,10 +79,14 @@ class SimHost:
         self.cmd_vel: Publisher | None = None
         self._twist: type[Any] = get_message_class("geometry_msgs/Twist")
         self._stops: list[Callable[[], object]] = []
+        self._inspecting: Inspector | None = None
 
     @property
     def master_uri(self) -> str:
         """The master's URI (what other terminals set ``ROS_MASTER_URI`` to)."""
+        if self.core is None:
+            assert self.joined is not None
+            return self.joined
         return self.core.uri
 
     @property
@@ -99,9 +112,13 @@ class SimHost:
 
         Raises:
             PortInUseError: the master's port is taken.
+            MasterUnreachable: joining, and no master answers at ``join``.
         """
-        self.core.start()
-        self._stops.append(self.core.stop)
+        if self.core is None:
+            _check_master(self.master_uri)
+        else:
+            self.core.start()
+            self._stops.append(self.core.stop)
         try:
             self._start_nodes()
         except BaseException:
@@ -112,7 +129,7 @@ class SimHost:
     def _start_nodes(self) -> None:
         from rosx_turtle.node.turtlesim import TurtlesimNode  # noqa: PLC0415 - loads numpy
 
-        uri = self.core.uri
+        uri = self.master_uri
         environ = {**self.environ, "ROS_MASTER_URI": uri}
         console = self._open_feeds() if self.watch else self.console
         turtlesim = TurtlesimNode(
@@ -156,7 +173,36 @@ class SimHost:
         twist.angular.z = angular
         self.cmd_vel.publish(twist)
 
+    def describe_topic(self, topic: str) -> str:
+        """``rostopic info TOPIC``'s text (blocks: call from a worker thread)."""
+        return self._inspector().describe_topic(topic)
+
+    def describe_node(self, node: str) -> str:
+        """``rosnode info NODE``'s text (blocks: call from a worker thread)."""
+        return self._inspector().describe_node(node)
+
+    def echo(self, topic: str, offer: Callable[[str], object]) -> Callable[[], None]:
+        """Offer each message of ``topic`` as ``rostopic echo`` text; returns how to stop."""
+        return self._inspector().echo(topic, offer)
+
+    def _inspector(self) -> Inspector:
+        if self._inspecting is None:
+            from rosx_turtle.sim.inspect import Inspector  # noqa: PLC0415 - when asked
+
+            self._inspecting = Inspector(self.master_uri, self.environ)
+            self._stops.append(self._inspecting.close)
+        return self._inspecting
+
     def stop(self) -> None:
         """Stop everything started, in reverse order (nodes unregister from the master first)."""
         while self._stops:
             self._stops.pop()()
+
+
+def _check_master(uri: str) -> None:
+    """Raise `MasterUnreachable` unless a master answers at ``uri``."""
+    master = MasterClient(uri, "/rosx_sim", timeout=JOIN_TIMEOUT)
+    try:
+        master.call("getPid")
+    finally:
+        master.close()

@@ -3,8 +3,13 @@
 On a terminal it draws the pond, the teleop pane and the live graph panels until ``q`` or
 Ctrl-C. When stdout is not a terminal, or with ``--headless``, it prints the master's URI and
 turtlesim's log lines instead, and runs until SIGINT or SIGTERM. Either way other terminals
-attach with ``ROS_MASTER_URI``. Exit status 0, or 1 when the master's port is taken (with
-roscore's words for it), or 2 for a bad option.
+attach with ``ROS_MASTER_URI``.
+
+With ``--join`` it starts no core: turtlesim and teleop (and the screen) join the master already
+running at ``ROS_MASTER_URI`` (or, with ``--port``, the one on that port of this host). When the
+port is taken by a master, it says which nodes run there and how to join it or pick another
+port. Exit status 0; 1 when the port is taken or the master to join does not answer; 2 for a
+bad option.
 """
 
 from __future__ import annotations
@@ -14,6 +19,8 @@ import sys
 from typing import TYPE_CHECKING, NoReturn
 
 from rosx.core import PortInUseError
+from rosx.master.client import MasterError, MasterUnreachable, master_uri
+from rosx.transport.address import advertised_host, http_uri
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.program import stop_on_signals
@@ -68,8 +75,12 @@ def port(text: str) -> int:
 
 def _parse(argv: Sequence[str], env: Env) -> argparse.Namespace:
     parser = _Parser(env)
+    parser.add_argument("-p", "--port", type=port, default=None, help="the master's port (11311)")
     parser.add_argument(
-        "-p", "--port", type=port, default=DEFAULT_PORT, help="the master's port (11311)"
+        "--join",
+        action="store_true",
+        help="start no master: run turtlesim and teleop against the master at ROS_MASTER_URI "
+        "(or at --port on this host)",
     )
     parser.add_argument(
         "--headless", action="store_true", help="no screen: print log lines, run until Ctrl-C"
@@ -86,14 +97,19 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
         return done.status
     headless = options.headless or not is_terminal(env.stdout)
     console = Console(env.stdout, env.stderr, env.environ) if headless else None
-    host = SimHost(options.port, env.environ, console=console, seed=seed, watch=not headless)
+    port_number = DEFAULT_PORT if options.port is None else options.port
+    join = _join_uri(options.port, env) if options.join else None
+    host = SimHost(
+        port_number, env.environ, console=console, seed=seed, watch=not headless, join=join
+    )
     try:
         host.start()
     except PortInUseError as busy:
-        colour = is_terminal(env.stderr)
-        text = busy.message
-        env.stderr.write((f"\033[31m{text}\033[0m" if colour else text) + "\n")
-        env.stderr.flush()
+        _error(env, _port_taken(busy, options.port))
+        return 1
+    except (MasterUnreachable, MasterError):
+        _error(env, f"ERROR: Unable to communicate with master at {join}")
+        _error(env, "Start one (rosx roscore), or run rosx sim without --join for its own.")
         return 1
     except KeyboardInterrupt:  # Ctrl-C while starting: what started has been stopped
         return 0
@@ -107,6 +123,44 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
     finally:
         host.stop()
     return 0
+
+
+def _join_uri(port_option: int | None, env: Env) -> str:
+    """The master ``--join`` joins: at ``--port`` on this host, else ``ROS_MASTER_URI``."""
+    if port_option is not None:
+        return http_uri(advertised_host(env.environ), port_option)
+    return master_uri(env.environ)
+
+
+def _port_taken(busy: PortInUseError, port_option: int | None) -> str:
+    """What to say when the master's port is taken: by a master (which nodes run there, and
+    how to join it or use another port), or by something else (roscore's words, and the
+    option)."""
+    if not busy.another_master:
+        return f"{busy.message}\nUse --port PORT for another port."
+    join = "rosx sim --join" + (f" --port {busy.port}" if port_option is not None else "")
+    return (
+        f"A ROS master is already running at {busy.uri}\n"
+        f"{_running_there(busy.uri)}\n"
+        f"Run `{join}` to start turtlesim and teleop against it,\n"
+        "or `rosx sim --port PORT` for a master of its own on another port."
+    )
+
+
+def _running_there(uri: str) -> str:
+    from rosx.graph.fetch import fetch_state  # noqa: PLC0415 - only when the port is taken
+
+    try:
+        nodes = fetch_state(uri, "/rosx_sim", bus_info=False).nodes
+    except (MasterUnreachable, MasterError):
+        return "Its nodes could not be listed."
+    return "Nodes there: " + (", ".join(nodes) if nodes else "none")
+
+
+def _error(env: Env, text: str) -> None:
+    colour = is_terminal(env.stderr)
+    env.stderr.write((f"\033[31m{text}\033[0m" if colour else text) + "\n")
+    env.stderr.flush()
 
 
 def _run_headless(host: SimHost, env: Env) -> None:

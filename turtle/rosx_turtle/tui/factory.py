@@ -5,10 +5,13 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from rosx_turtle.tui.feed import Feed
     from rosx_turtle.tui.link import SimLink
     from rosx_turtle.tui.log import LogRecord
     from rosx_turtle.tui.pond_app import PondApp
+    from rosx_turtle.tui.ponds_app import PondsApp
     from rosx_turtle.tui.sim_app import SimApp
     from rosx_turtle.view.scene import Scene
 
@@ -18,6 +21,14 @@ def make_pond_app(scenes: Feed[Scene], logs: Feed[LogRecord] | None = None) -> P
     from rosx_turtle.tui.pond_app import PondApp  # noqa: PLC0415 - textual only when drawn
 
     return PondApp(scenes, logs)
+
+
+def make_ponds_app(started: Callable[[], object] | None = None) -> PondsApp:
+    """turtlesim_view's window (ponds are added as the graph shows them); ``started`` runs once
+    it is up."""
+    from rosx_turtle.tui.ponds_app import PondsApp  # noqa: PLC0415 - textual only when drawn
+
+    return PondsApp(started)
 
 
 def make_sim_app(link: SimLink) -> SimApp:

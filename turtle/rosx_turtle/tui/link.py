@@ -9,6 +9,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Protocol
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from rosx_turtle.tui.feed import Feed
     from rosx_turtle.tui.graph import Graph
     from rosx_turtle.tui.log import LogRecord
@@ -16,7 +18,8 @@ if TYPE_CHECKING:
 
 
 class SimLink(Protocol):
-    """The feeds the panes show and the way the teleop pane drives."""
+    """The feeds the panes show, the way the teleop pane drives, and the details of a topic
+    or node."""
 
     @property
     def master_uri(self) -> str:
@@ -45,4 +48,17 @@ class SimLink(Protocol):
 
     def drive(self, linear: float, angular: float) -> None:
         """Publish one command for turtle1: ``linear.x`` and ``angular.z``, all else 0."""
+        ...
+
+    def describe_topic(self, topic: str) -> str:
+        """What ``rostopic info TOPIC`` prints (may block: called from a worker thread)."""
+        ...
+
+    def describe_node(self, node: str) -> str:
+        """What ``rosnode info NODE`` prints (may block: called from a worker thread)."""
+        ...
+
+    def echo(self, topic: str, offer: Callable[[str], object]) -> Callable[[], None]:
+        """Call ``offer(text)`` with each message of ``topic`` as ``rostopic echo`` prints it,
+        from any thread, until the returned function is called (may block: a worker thread)."""
         ...

@@ -1,7 +1,9 @@
 """turtlesim_node on a terminal: the pond full-screen instead of log lines.
 
-`run_turtlesim_node` is the program: with stdout a terminal (and no ``--headless``) it starts
-the node as `rosx_turtle.node.run.run_turtlesim` does, then draws the pond until ``q``, Ctrl-C,
+`run_turtlesim_node` is the program: with stdout a terminal (and no ``--headless``, and no
+``ROSX_HEADLESS`` in the environment: ``rosx roslaunch`` sets it for the nodes that share its
+terminal) it starts the node as `rosx_turtle.node.run.run_turtlesim` does, then draws the pond
+until ``q``, Ctrl-C,
 SIGTERM or a shutdown from outside (``rosnode kill``), and leaves the graph. Otherwise it is
 `run_turtlesim` itself, log lines only. The log lines still reach ``/rosout`` while the pond is
 drawn; messages from before the pond opens (waiting for the master) are printed as usual.
@@ -31,6 +33,8 @@ if TYPE_CHECKING:
 
 #: The option that asks for log lines even on a terminal.
 HEADLESS = "--headless"
+#: The environment variable that asks for them too (any value but "" and "0").
+HEADLESS_VARIABLE = "ROSX_HEADLESS"
 
 
 def run_turtlesim_node(
@@ -39,7 +43,8 @@ def run_turtlesim_node(
     """Run turtlesim_node: the pond on a terminal, log lines otherwise; the exit status."""
     env = env or ProcessEnv()
     args = [arg for arg in argv if arg != HEADLESS]
-    if len(args) != len(argv) or not is_terminal(env.stdout):
+    headless = env.environ.get(HEADLESS_VARIABLE, "") not in ("", "0")
+    if len(args) != len(argv) or headless or not is_terminal(env.stdout):
         return run_turtlesim(args, env, seed=seed)
     from rosx_turtle.node.turtlesim import TurtlesimNode  # noqa: PLC0415 - loads numpy
     from rosx_turtle.tui.feed import Feed  # noqa: PLC0415 - textual to draw

@@ -1,8 +1,10 @@
 """`SimApp`: ``rosx sim``'s screen: the pond, the teleop pane and the live graph panels.
 
-Composition and key bindings only; the panes do their own work and the link does the ROS side.
-Tab and Shift-Tab move the focus between the panes; the focused pane is lit and owns the keys
-(the arrow keys drive the turtle in the teleop pane and move the cursor in the tables).
+Composition and key bindings only; the panes do their own work, `SimBody` lays them out for the
+terminal's size and the link does the ROS side. Tab and Shift-Tab move the focus between the
+panes; the focused pane is lit and owns the keys (the arrow keys drive the turtle in the teleop
+pane and move the cursor in the tables). Enter on a topic or a node opens its details
+(`DetailsScreen`: ``rostopic info`` and echo, or ``rosnode info``); Esc closes them.
 """
 
 from __future__ import annotations
@@ -11,20 +13,17 @@ from typing import TYPE_CHECKING, ClassVar
 
 from textual.app import App  # noqa: TID253 - TUI code
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
-from textual.containers import Horizontal, Vertical  # noqa: TID253 - TUI code
 from textual.widgets import Header  # noqa: TID253 - TUI code
 
-from rosx_turtle.tui.log_line import LogLine
+from rosx_turtle.tui.details import DetailsScreen
 from rosx_turtle.tui.nodes import NodesPanel
-from rosx_turtle.tui.pond import PondView
-from rosx_turtle.tui.pose import PosePanel
 from rosx_turtle.tui.quit import QuitFooter
-from rosx_turtle.tui.status import PoseLine
-from rosx_turtle.tui.teleop import TeleopPad
+from rosx_turtle.tui.sim_body import SimBody
 from rosx_turtle.tui.topics import TopicsPanel
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
+    from textual.widgets import DataTable
 
     from rosx_turtle.tui.link import SimLink
 
@@ -35,11 +34,6 @@ class SimApp(App[None]):
     TITLE = "rosx sim"
     AUTO_FOCUS = "#teleop"
     ENABLE_COMMAND_PALETTE = False
-    CSS = """
-    #body { height: 1fr; }
-    #world { width: 1fr; }
-    #side { width: 58; }
-    """
     BINDINGS: ClassVar[list[BindingType]] = [
         Binding("tab", "focus_next", "Next pane", priority=True),
         Binding("shift+tab", "focus_previous", "Previous pane", show=False, priority=True),
@@ -53,19 +47,16 @@ class SimApp(App[None]):
         self.sub_title = f"ROS_MASTER_URI={link.master_uri}"
 
     def compose(self) -> ComposeResult:
-        link = self.link
-        scale_linear, scale_angular = link.scales
         yield Header(icon="≈")
-        with Horizontal(id="body"):
-            with Vertical(id="world"):
-                yield PondView(link.scenes, id="pond")
-                yield PoseLine(link.scenes, id="poses")
-                yield LogLine(link.logs, id="log")
-            with Vertical(id="side"):
-                yield TeleopPad(
-                    link.drive, scale_linear=scale_linear, scale_angular=scale_angular, id="teleop"
-                )
-                yield TopicsPanel(link.graph, id="topics")
-                yield NodesPanel(link.graph, id="nodes")
-                yield PosePanel(link.scenes, id="pose")
+        yield SimBody(self.link, id="body")
         yield QuitFooter()
+
+    def on_data_table_row_selected(self, event: DataTable.RowSelected) -> None:
+        """Enter on a topic or a node: its details."""
+        kind = "topic" if isinstance(event.data_table, TopicsPanel) else None
+        if isinstance(event.data_table, NodesPanel):
+            kind = "node"
+        name = event.row_key.value
+        if kind is not None and name:
+            event.stop()
+            self.push_screen(DetailsScreen(self.link, kind, name))

@@ -100,13 +100,14 @@ class TeleopPad(Static, can_focus=True):
         self.post_message(self.Sent(linear, angular))
 
     def _describe(self) -> None:
+        # Each line fits the narrowest side column (`rosx_turtle.view.layout.SIDE_MIN`).
         lines = [
-            f"↑ ↓  forward / back     linear.x  ±{self.scale_linear}",
-            f"← →  turn left / right  angular.z ±{self.scale_angular}",
+            f"↑ ↓  forward / back   linear.x ±{self.scale_linear}",
+            f"← →  turn left/right  angular.z ±{self.scale_angular}",
         ]
         if self.last is None:
             lines.append("nothing sent yet")
         else:
             linear, angular = self.last
-            lines.append(f"sent {self.sent}, last: linear.x={linear} angular.z={angular}")
+            lines.append(f"#{self.sent} linear.x={linear} angular.z={angular}")
         self.update("\n".join(lines))

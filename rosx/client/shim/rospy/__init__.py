@@ -9,32 +9,17 @@ gets the next ``rospy`` on its path instead, so ROS 1 keeps working in the same 
 
 from __future__ import annotations
 
-import importlib.machinery
-import importlib.util
-import sys
-from pathlib import Path
+import importlib
 
-
-def _defer_to_next_rospy() -> None:
-    here = Path(__file__).resolve().parent.parent
-    path = [p for p in sys.path if Path(p or ".").resolve() != here]
-    spec = importlib.machinery.PathFinder.find_spec("rospy", path)
-    if spec is None or spec.loader is None:
-        raise ImportError(
-            "this rospy is rosx's, and this Python cannot import rosx "
-            f"({sys.executable}); run the script with `rosx rosrun PACKAGE SCRIPT`, "
-            "or with the Python that rosx is installed in"
-        )
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["rospy"] = module
-    spec.loader.exec_module(module)
-
+_SUBMODULES = ("exceptions", "names")
 
 try:
     import rosx.client as _client
     from rosx.client.modules import install as _install
 except ImportError:
-    _defer_to_next_rospy()
+    from _rosx_shim import load_next  # type: ignore[import-not-found]
+
+    load_next("rospy")
 else:
     _install()
     globals().update({name: getattr(_client, name) for name in _client.__all__ if name != "Header"})
@@ -43,4 +28,6 @@ else:
     def __getattr__(name: str) -> object:
         if name == "Header":  # built on first use: it needs the standard type store
             return _client.Header
+        if name in _SUBMODULES:  # rospy's own __init__ imports them: rospy.names.x works
+            return importlib.import_module(f"{__name__}.{name}")
         raise AttributeError(f"module 'rospy' has no attribute {name!r}")

@@ -1,0 +1,20 @@
+"""``rosgraph`` for scripts that rosx runs: ``Master``, its errors, ``names``.
+
+Served by `rosx.client.rosgraph`. A Python that cannot import rosx gets the next ``rosgraph``
+on its path instead (see ``rospy``).
+"""
+
+from __future__ import annotations
+
+try:
+    import rosx.client.rosgraph as _rosgraph
+except ImportError:
+    from _rosx_shim import load_next  # type: ignore[import-not-found]
+
+    load_next("rosgraph")
+else:
+    from . import masterapi, names
+
+    globals().update({name: getattr(_rosgraph, name) for name in _rosgraph.__all__})
+    __all__ = list(_rosgraph.__all__)
+    __all__ += ["masterapi", "names"]

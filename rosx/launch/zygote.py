@@ -1,0 +1,383 @@
+"""Starting Python nodes fast: a process that has rosx's ``rospy`` loaded forks them.
+
+Most of a Python node's start-up is Python's: the interpreter, then ``import rospy`` and the
+message types (about 0.2 s of CPU each). A launch of five nodes on two cores spends a second on
+it. The launcher therefore starts, next to itself and at once, one helper process (``python -m
+rosx.launch.zygote FD``) that imports all of that and waits; each Python node is then a
+``fork`` of it that runs the node's script (`rosx.client.script.run_script`), in a session of
+its own, with the node's environment, working folder, arguments and output. It is still one
+process per node, with its own pid, signals and exit status; only the cost of loading Python is
+paid once.
+
+The helper is single-threaded (nothing it imports starts a thread), so forking it is safe. It
+talks with the launcher over a socket (`ZygoteClient`), one JSON document a line:
+
+* the launcher asks ``{"id": N, "script": PATH, "args": [...], "env": {...}, "cwd": DIR,
+  "stdout": FILE or null, "append": BOOL}``; the helper answers ``{"id": N, "pid": PID}`` (or
+  ``{"id": N, "error": TEXT}``);
+* when a node ends, the helper (its parent) reaps it and says ``{"exit": PID, "code": CODE}``
+  (a signal's death as its negative number, as `subprocess` reports it).
+
+When the launcher goes away (the socket closes) the helper ends; nodes still running are the
+launcher's to stop, as it does. Scripts whose environment changes what the helper loaded
+(``ROS_PACKAGE_PATH``, ``PYTHONPATH``) or that have a ``launch-prefix`` are started the usual
+way instead (`rosx.launch.monitor.LocalProcess`).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import select
+import signal
+import socket
+import sys
+import threading
+import time
+from typing import TYPE_CHECKING, Any
+
+from rosx.launch.monitor import LocalProcess
+
+if TYPE_CHECKING:
+    from collections.abc import Callable, Mapping, Sequence
+
+#: Variables that decide what the helper has loaded: a node must have the helper's values.
+LOADED_FROM = ("ROS_PACKAGE_PATH", "PYTHONPATH")
+
+
+def _preload() -> None:
+    """Import what a rospy node imports, and the types every node uses."""
+    from rosx.client.script import prepare_imports  # noqa: PLC0415
+
+    prepare_imports()
+    import rospy  # type: ignore[import-not-found]  # noqa: F401, PLC0415 - rosx's, via the shim
+
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+
+    for name in ("rosgraph_msgs/Log", "std_msgs/String", "geometry_msgs/Twist"):
+        with contextlib.suppress(Exception):
+            get_message_class(name)
+
+
+def _child(request: Mapping[str, Any], inherited: Sequence[socket.socket]) -> None:
+    """In the fork: become the node, run its script, and exit with its status as a Python
+    process exits (``atexit`` hooks and the node's own shutdown run); never returns."""
+    code = 1
+    try:
+        signal.set_wakeup_fd(-1)
+        for sock in inherited:
+            sock.close()
+        for sig in (signal.SIGTERM, signal.SIGCHLD, signal.SIGHUP):
+            signal.signal(sig, signal.SIG_DFL)
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+        os.setsid()
+        os.environ.clear()
+        os.environ.update(request["env"])
+        os.chdir(request["cwd"])
+        if request.get("stdout"):
+            flags = os.O_WRONLY | os.O_CREAT | (os.O_APPEND if request["append"] else os.O_TRUNC)
+            fd = os.open(request["stdout"], flags, 0o644)
+            os.dup2(fd, 1)
+            os.close(fd)
+        from rosx.client.script import run_script  # noqa: PLC0415
+
+        code = run_script(request["script"], request["args"])
+    except KeyboardInterrupt:
+        code = 130
+    except BaseException as error:  # the node must end with a status, never return here
+        with contextlib.suppress(Exception):
+            sys.stderr.write(f"{request.get('script')}: {error}\n")
+    raise _NodeExit(code)
+
+
+class _NodeExit(SystemExit):
+    """Ends a forked node: unwinds out of the helper's loop to the interpreter's exit."""
+
+
+def _send(control: socket.socket, message: Mapping[str, Any]) -> None:
+    control.sendall((json.dumps(message) + "\n").encode())
+
+
+def serve(fd: int) -> int:
+    """The helper's loop on the control socket ``fd``; returns when the launcher is gone."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    control = socket.socket(fileno=fd)
+    _preload()
+    wake_read, wake_write = socket.socketpair()
+    wake_write.setblocking(False)
+    signal.set_wakeup_fd(wake_write.fileno(), warn_on_full_buffer=False)
+    signal.signal(signal.SIGCHLD, lambda *_: None)
+    _send(control, {"ready": os.getpid()})
+    buffer = b""
+    while True:
+        ready, _, _ = select.select([control, wake_read], [], [])
+        if wake_read in ready:
+            with contextlib.suppress(BlockingIOError):
+                wake_read.recv(4096)
+            _reap(control)
+        if control not in ready:
+            continue
+        data = control.recv(1 << 16)
+        if not data:
+            return 0
+        buffer += data
+        while b"\n" in buffer:
+            line, buffer = buffer.split(b"\n", 1)
+            request = json.loads(line)
+            try:
+                pid = os.fork()
+            except OSError as error:
+                _send(control, {"id": request["id"], "error": str(error)})
+                continue
+            if pid == 0:
+                _child(request, (control, wake_read, wake_write))
+            _send(control, {"id": request["id"], "pid": pid})
+
+
+def _reap(control: socket.socket) -> None:
+    while True:
+        try:
+            pid, status = os.waitpid(-1, os.WNOHANG)
+        except ChildProcessError:
+            return
+        if pid == 0:
+            return
+        code = os.waitstatus_to_exitcode(status)
+        with contextlib.suppress(OSError):
+            _send(control, {"exit": pid, "code": code})
+
+
+class ZygoteError(Exception):
+    """The helper could not start a node (or is gone); the node is started the usual way."""
+
+
+class ZygoteClient:
+    """The launcher's side: start the helper, ask it for nodes, learn how they end.
+
+    ``on_exit()`` is called (from a reader thread) after a node's exit is recorded.
+    """
+
+    def __init__(self, environ: Mapping[str, str], on_exit: Callable[[], object]) -> None:
+        import subprocess  # noqa: PLC0415
+
+        self.environ = dict(environ)
+        self.on_exit = on_exit
+        ours, theirs = socket.socketpair()
+        self._socket = ours
+        self.process = subprocess.Popen(
+            [sys.executable, "-m", "rosx.launch.zygote", str(theirs.fileno())],
+            env=self.environ,
+            pass_fds=(theirs.fileno(),),
+            start_new_session=True,
+        )
+        theirs.close()
+        self._lock = threading.Lock()
+        self._replies: dict[int, dict[str, Any]] = {}
+        self._answered = threading.Condition(self._lock)
+        self.exits: dict[int, int] = {}
+        self._next = 0
+        self._ready = False
+        self._gone = False
+        self._reader = threading.Thread(target=self._read, name="rosx-zygote", daemon=True)
+        self._reader.start()
+
+    def accepts(self, environ: Mapping[str, str]) -> bool:
+        """Whether a node with ``environ`` can be forked from the helper."""
+        from rosx.client.script import shim_environ  # noqa: PLC0415
+
+        loaded = shim_environ(self.environ)
+        return not self._gone and all(environ.get(k) == loaded.get(k) for k in LOADED_FROM)
+
+    def _read(self) -> None:
+        buffer = b""
+        while True:
+            try:
+                data = self._socket.recv(1 << 16)
+            except OSError:
+                data = b""
+            if not data:
+                with self._lock:
+                    self._gone = True
+                    self._answered.notify_all()
+                self.on_exit()
+                return
+            buffer += data
+            while b"\n" in buffer:
+                line, buffer = buffer.split(b"\n", 1)
+                message = json.loads(line)
+                with self._lock:
+                    if "exit" in message:
+                        self.exits[int(message["exit"])] = int(message["code"])
+                    elif "ready" in message:
+                        self._ready = True
+                    else:
+                        self._replies[int(message["id"])] = message
+                    self._answered.notify_all()
+                if "exit" in message:
+                    self.on_exit()
+
+    def start(
+        self,
+        script: str,
+        args: Sequence[str],
+        environ: Mapping[str, str],
+        cwd: str,
+        stdout: str | None,
+        *,
+        append: bool,
+        timeout: float = 30.0,
+    ) -> int:
+        """Fork a node running ``script``; its pid.
+
+        Raises:
+            ZygoteError: the helper is gone or did not answer.
+        """
+        with self._lock:
+            self._next += 1
+            ident = self._next
+        request = {
+            "id": ident,
+            "script": script,
+            "args": list(args),
+            "env": dict(environ),
+            "cwd": cwd,
+            "stdout": stdout,
+            "append": append,
+        }
+        try:
+            self._socket.sendall((json.dumps(request) + "\n").encode())
+        except OSError as error:
+            raise ZygoteError(str(error)) from None
+        with self._lock:
+            if not self._answered.wait_for(
+                lambda: ident in self._replies or self._gone, timeout=timeout
+            ):
+                raise ZygoteError("no answer")
+            reply = self._replies.pop(ident, None)
+        if reply is None or "pid" not in reply:
+            raise ZygoteError(str(reply.get("error") if reply else "gone"))
+        return int(reply["pid"])
+
+    @property
+    def gone(self) -> bool:
+        """Whether the helper has ended."""
+        with self._lock:
+            return self._gone
+
+    def exit_code(self, pid: int) -> int | None:
+        """How node ``pid`` ended, once the helper has reaped it."""
+        with self._lock:
+            return self.exits.get(pid)
+
+    def wait_ready(self, timeout: float) -> bool:
+        """Wait until the helper has loaded everything (False: not within ``timeout``)."""
+        with self._lock:
+            return self._answered.wait_for(lambda: self._ready or self._gone, timeout=timeout)
+
+    def close(self) -> None:
+        """End the helper (nodes still running stay; the launcher stops them first)."""
+        with contextlib.suppress(OSError):
+            self._socket.shutdown(socket.SHUT_RDWR)
+        self._socket.close()
+        try:
+            self.process.wait(5.0)
+        except Exception:  # it must not outlive the launch
+            self.process.kill()
+            self.process.wait()
+        self._reader.join(timeout=2.0)
+
+
+class ForkedProcess(LocalProcess):
+    """A `LocalProcess` running a Python script, forked by the helper (see the module).
+
+    ``script_index`` is where the script's path is in the command line; what follows it (and
+    ``__log:=``) are its arguments. When the helper cannot fork it, it starts as any process.
+    """
+
+    def __init__(self, *args: Any, zygote: ZygoteClient, script_index: int, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.zygote = zygote
+        self.script_index = script_index
+        self.forked = False
+
+    def start(self) -> None:
+        argv = self.argv
+        if not self.zygote.accepts(self.environ):
+            self.forked = False
+            super().start()
+            return
+        self.spawn_count += 1
+        self.exit_code = self.time_of_death = None
+        with contextlib.suppress(OSError):
+            self.cwd.mkdir(parents=True, exist_ok=True)
+        stdout = self.stdout_path
+        try:
+            self.pid = self.zygote.start(
+                argv[self.script_index],
+                argv[self.script_index + 1 :],
+                self.environ,
+                str(self.cwd),
+                None if stdout is None else str(stdout),
+                append=self.respawn,
+            )
+        except ZygoteError:
+            self.spawn_count -= 1
+            self.forked = False
+            super().start()
+            return
+        self.forked = True
+
+    def _ended(self) -> tuple[bool, int | None]:
+        code = self.zygote.exit_code(self.pid)
+        if code is not None:
+            return True, code
+        if self.zygote.gone:  # no one to tell: look for the process itself
+            try:
+                os.kill(self.pid, 0)
+            except ProcessLookupError:
+                return True, None
+        return False, None
+
+    def poll(self) -> bool:
+        if not self.forked:
+            return super().poll()
+        ended, code = self._ended()
+        if not ended:
+            return True
+        if self.time_of_death is None:
+            self.exit_code = code
+            self.time_of_death = time.monotonic()
+        return False
+
+    def running(self) -> bool:
+        if not self.forked:
+            return super().running()
+        return not self._ended()[0]
+
+    def signal(self, sig: signal.Signals) -> None:
+        if not self.forked:
+            super().signal(sig)
+            return
+        if self._ended()[0]:
+            return
+        try:
+            os.killpg(self.pid, sig)
+        except (ProcessLookupError, PermissionError):  # not yet its own group leader
+            with contextlib.suppress(ProcessLookupError):
+                os.kill(self.pid, sig)
+
+    def reap(self) -> None:
+        if not self.forked:
+            super().reap()
+            return
+        if self._ended()[0]:
+            with contextlib.suppress(ProcessLookupError, PermissionError):
+                os.killpg(self.pid, signal.SIGKILL)  # children that outlived the node
+
+
+if __name__ == "__main__":
+    sys.exit(serve(int(sys.argv[1])))
+
+
+__all__ = ["LOADED_FROM", "ForkedProcess", "ZygoteClient", "ZygoteError", "serve"]

@@ -1,0 +1,26 @@
+#!/usr/bin/env python3
+"""rospy_tutorials' talker: node ``talker`` (anonymous), "hello world <time>" on ``chatter``.
+
+Ten times a second it logs the text at INFO and publishes it as a std_msgs/String.
+"""
+
+import contextlib
+
+import rospy
+from std_msgs.msg import String
+
+
+def talk() -> None:
+    chatter = rospy.Publisher("chatter", String, queue_size=10)
+    rospy.init_node("talker", anonymous=True)
+    rate = rospy.Rate(10)
+    while not rospy.is_shutdown():
+        text = f"hello world {rospy.get_time()}"
+        rospy.loginfo(text)
+        chatter.publish(text)
+        rate.sleep()
+
+
+if __name__ == "__main__":
+    with contextlib.suppress(rospy.ROSInterruptException):
+        talk()

@@ -1,0 +1,155 @@
+"""The ROS packages shipped with rosx: Noetic's core, the standard messages, the tutorials'.
+
+``rospack``, ``roscd`` and ``rosls`` find them as on Noetic (ROS/Tutorials/NavigatingTheFilesystem,
+CreatingPackage), and their dependencies are Noetic's: compared with Debian's rospack run over
+rosx's own package folders where the reference is installed.
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from rosx.packages.crawl import PREFIX, bundled_packages
+from rosx.packages.manifest import check_manifest, read_manifest
+from tests.support.cli import clean_environ, rosx
+from tests.workspace.test_rosrun_rospack import TUTORIAL_DEPENDS
+
+SHARE = PREFIX / "share"
+DEBIAN_ROSPACK = shutil.which("rospack", path="/usr/bin")
+needs_rospack = pytest.mark.skipif(DEBIAN_ROSPACK is None, reason="Debian's rospack is absent")
+
+#: The packages of ROS/Tutorials that must exist (issue 15).
+CORE = [
+    "roscpp", "rospy", "roslib", "rosgraph", "genpy", "std_msgs", "geometry_msgs", "sensor_msgs",
+    "rosgraph_msgs", "std_srvs", "roscpp_tutorials", "rospy_tutorials", "turtlesim",
+]  # fmt: skip
+
+
+def test_every_shipped_folder_is_the_package_it_is_named_after() -> None:
+    for directory in sorted(SHARE.iterdir()):
+        if directory.name == "ros":  # ROS_ROOT; Noetic's ros is a metapackage (a stack)
+            assert not (directory / "package.xml").exists()
+            continue
+        manifest = read_manifest(directory)
+        assert manifest.name == directory.name
+        assert check_manifest(manifest) == []
+
+
+@pytest.mark.parametrize("package", CORE)
+def test_the_tutorials_packages_are_found(package: str) -> None:
+    found = rosx("rospack", "find", package)
+    assert (found.status, found.err) == (0, "")
+    assert Path(found.out.strip()) == bundled_packages()[package]
+    assert rosx("roscd", "--where", package).out == found.out
+
+
+def test_every_run_dependency_of_a_shipped_package_is_shipped() -> None:
+    """``rospack depends`` of each is complete: only system or unshipped tool keys are missing."""
+    allowed_missing = {"rosservice", "rosbag_migration_rule"}
+    for package in bundled_packages():
+        for dependency in read_manifest(bundled_packages()[package]).run_depends():
+            assert dependency in bundled_packages() or dependency in allowed_missing, (
+                package,
+                dependency,
+            )
+
+
+def test_rospack_depends1_rospy_is_noetics() -> None:
+    result = rosx("rospack", "depends1", "rospy")
+    assert (result.status, result.err) == (0, "")
+    assert result.out == "genpy\nroscpp\nrosgraph\nrosgraph_msgs\nroslib\nstd_msgs\n"
+
+
+def test_rospack_of_an_unknown_package_is_rospacks_error() -> None:
+    for command in ("depends1", "depends", "depends-on1"):
+        result = rosx("rospack", command, "no_such_package")
+        assert (result.status, result.out) == (1, "")
+        assert result.err == "[rospack] Error: no such package no_such_package\n"
+
+
+def _beginner_tutorials(src: Path) -> dict[str, str]:
+    """``catkin_create_pkg beginner_tutorials std_msgs rospy roscpp`` in ``src``."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.chdir(src)
+        done = rosx(
+            "catkin_create_pkg", "beginner_tutorials", "std_msgs", "rospy", "roscpp",
+            environ=clean_environ(PWD=str(src)),
+        )  # fmt: skip
+    assert done.status == 0, done.err
+    return clean_environ(ROS_PACKAGE_PATH=str(src))
+
+
+def test_rospack_depends_beginner_tutorials_is_the_tutorials_list(tmp_path: Path) -> None:
+    env = _beginner_tutorials(tmp_path)
+    assert rosx("rospack", "depends1", "beginner_tutorials", environ=env).out == (
+        "roscpp\nrospy\nstd_msgs\n"
+    )
+    assert rosx("rospack", "depends", "beginner_tutorials", environ=env).out == (
+        "\n".join(TUTORIAL_DEPENDS) + "\n"
+    )
+
+
+def test_rosls_shows_the_tutorial_packages_as_noetic_installs_them() -> None:
+    assert rosx("rosls", "roscpp_tutorials").out == "cmake\nlaunch\npackage.xml\nsrv\n"
+    assert rosx("rosls", "rospy_tutorials").out.split() == [
+        "001_talker_listener", "005_add_two_ints", "cmake", "msg", "package.xml", "srv",
+    ]  # fmt: skip
+    assert rosx("rosls", "std_msgs").out == "msg\npackage.xml\n"
+
+
+def test_rossrv_show_add_two_ints_lists_both_tutorial_types(tmp_path: Path) -> None:
+    env = _beginner_tutorials(tmp_path)
+    srv = tmp_path / "beginner_tutorials" / "srv"
+    srv.mkdir()
+    (srv / "AddTwoInts.srv").write_text("int64 a\nint64 b\n---\nint64 sum\n")
+    shown = rosx("rossrv", "show", "AddTwoInts", environ=env)
+    body = "int64 a\nint64 b\n---\nint64 sum\n"
+    assert shown.out == (
+        f"[beginner_tutorials/AddTwoInts]:\n{body}\n[rospy_tutorials/AddTwoInts]:\n{body}\n"
+    )
+    refused = rosx("rosmsg", "show", "AddTwoInts", environ=env)
+    assert (refused.status, refused.out) == (1, "")
+    assert refused.err == "Could not find msg 'AddTwoInts'\n"
+
+
+# -- against Debian's rospack, over the same folders ----------------------------------------
+
+
+def _debian(*argv: str, package_path: str) -> str:
+    assert DEBIAN_ROSPACK is not None
+    done = subprocess.run(
+        [DEBIAN_ROSPACK, *argv],
+        capture_output=True,
+        text=True,
+        env=clean_environ(ROS_PACKAGE_PATH=package_path),
+        timeout=60,
+        check=False,
+    )
+    return done.stdout
+
+
+@needs_rospack
+def test_dependencies_are_what_debians_rospack_computes_over_the_same_manifests(
+    tmp_path: Path,
+) -> None:
+    """Debian's rospack always adds ``/usr/share`` (its own ROS packages): packages whose
+    dependencies reach one of those are compared only where that cannot matter."""
+    _beginner_tutorials(tmp_path)
+    turtle = bundled_packages()["turtlesim"]
+    path = f"{tmp_path}:{SHARE}:{turtle}"
+    env = clean_environ(ROS_PACKAGE_PATH=path)
+    for package in [*bundled_packages(), "beginner_tutorials"]:
+        for command in ("depends1", "depends"):
+            theirs = _debian(command, package, package_path=path)
+            ours = rosx("rospack", command, package, environ=env).out
+            if package == "dynamic_reconfigure":  # its rosservice is Debian's alone
+                theirs = "".join(line for line in theirs.splitlines(True) if line in ours)
+            assert ours == theirs, (command, package)
+        ours_on = set(rosx("rospack", "depends-on1", package, environ=env).out.split())
+        theirs_on = set(_debian("depends-on1", package, package_path=path).split())
+        assert ours_on <= theirs_on, package
+        assert all(name not in bundled_packages() for name in theirs_on - ours_on), package

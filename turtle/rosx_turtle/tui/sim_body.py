@@ -1,0 +1,116 @@
+"""`SimBody`: ``rosx sim``'s screen between header and footer, laid out for the terminal's size.
+
+The sizes come from `rosx_turtle.view.layout.sim_layout`: the world column (pond, pose line, log
+line) gets the pond's width first, the side column (teleop pane, graph panels) the rest. The
+graph panels (`GraphPanels`) are stacked where the side column is tall enough, else folded into
+tabs. In a terminal too small for any of it, the body shows which size it needs instead.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from textual.containers import Container, Horizontal, Vertical  # noqa: TID253 - TUI code
+from textual.reactive import reactive  # noqa: TID253 - TUI code
+from textual.widgets import Static, TabbedContent, TabPane  # noqa: TID253 - TUI code
+
+from rosx_turtle.tui.log_line import LogLine
+from rosx_turtle.tui.nodes import NodesPanel
+from rosx_turtle.tui.pond import PondView
+from rosx_turtle.tui.pose import PosePanel
+from rosx_turtle.tui.status import PoseLine
+from rosx_turtle.tui.teleop import TeleopPad
+from rosx_turtle.tui.topics import TopicsPanel
+from rosx_turtle.view.layout import SimLayout, sim_layout
+
+if TYPE_CHECKING:
+    from textual import events
+    from textual.app import ComposeResult
+
+    from rosx_turtle.tui.link import SimLink
+
+
+class GraphPanels(Vertical):
+    """The topics, nodes and pose panels: stacked, or (``tabs``) one at a time under tabs."""
+
+    DEFAULT_CSS = """
+    GraphPanels { height: 1fr; }
+    GraphPanels TabbedContent { height: 1fr; }
+    GraphPanels TabPane { padding: 0; height: 1fr; }
+    GraphPanels TabPane > * { height: 1fr; }
+    """
+
+    tabs: reactive[bool] = reactive(False, recompose=True)
+
+    def __init__(self, link: SimLink, *, id: str | None = None) -> None:
+        super().__init__(id=id)
+        self.link = link
+
+    def compose(self) -> ComposeResult:
+        link = self.link
+        if not self.tabs:
+            yield TopicsPanel(link.graph, id="topics")
+            yield NodesPanel(link.graph, id="nodes")
+            yield PosePanel(link.scenes, id="pose")
+            return
+        with TabbedContent():
+            with TabPane("Topics", id="tab-topics"):
+                yield TopicsPanel(link.graph, id="topics")
+            with TabPane("Nodes", id="tab-nodes"):
+                yield NodesPanel(link.graph, id="nodes")
+            with TabPane("Pose", id="tab-pose"):
+                yield PosePanel(link.scenes, id="pose")
+
+
+class SimBody(Container):
+    """The world and side columns, sized by `sim_layout` at each resize."""
+
+    DEFAULT_CSS = """
+    SimBody { height: 1fr; layout: vertical; }
+    SimBody > #columns { height: 1fr; }
+    SimBody #side { width: 1fr; }
+    SimBody > #too-small {
+        display: none;
+        height: 1fr;
+        width: 1fr;
+        content-align: center middle;
+        text-align: center;
+    }
+    SimBody.-too-small > #columns { display: none; }
+    SimBody.-too-small > #too-small { display: block; }
+    """
+
+    def __init__(self, link: SimLink, *, id: str | None = None) -> None:
+        super().__init__(id=id)
+        self.link = link
+        #: The layout in force (None before the first resize).
+        self.layout_now: SimLayout | None = None
+
+    def compose(self) -> ComposeResult:
+        link = self.link
+        scale_linear, scale_angular = link.scales
+        with Horizontal(id="columns"):
+            with Vertical(id="world"):
+                yield PondView(link.scenes, id="pond")
+                yield PoseLine(link.scenes, id="poses")
+                yield LogLine(link.logs, id="log")
+            with Vertical(id="side"):
+                yield TeleopPad(
+                    link.drive, scale_linear=scale_linear, scale_angular=scale_angular, id="teleop"
+                )
+                yield GraphPanels(link, id="panels")
+        yield Static("", id="too-small", markup=False)
+
+    def on_resize(self, event: events.Resize) -> None:
+        self.lay_out(*self.app.size)
+
+    def lay_out(self, width: int, height: int) -> None:
+        """Size the columns for a terminal of ``width`` x ``height``."""
+        layout = sim_layout(width, height)
+        if layout == self.layout_now:
+            return
+        self.layout_now = layout
+        self.set_class(layout.too_small, "-too-small")
+        self.query_one("#too-small", Static).update(layout.message)
+        self.query_one("#world", Vertical).styles.width = layout.world
+        self.query_one(GraphPanels).tabs = layout.tabs
