@@ -43,6 +43,8 @@ GUARDED = {
     "rosx/bag/recorder.py": "FIONREAD (fcntl, termios) to see how far a recorder lags",
     "commands/rosx_commands/rosbag/play.py": "space and s keys read in cbreak mode (termios, tty)",
     "turtle/rosx_turtle/keyboard.py": "turtle_teleop_key's raw keys (termios)",
+    "rosx/launch/monitor.py": "roslaunch stops each node's process group (killpg, SIGKILL)",
+    "rosx/launch/zygote.py": "roslaunch's fork server for Python nodes (fork, setsid, SIGCHLD)",
 }
 
 _FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
