@@ -36,6 +36,7 @@ if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
     from types import FrameType
 
+    from rosx.client.logfile import LogFile
     from rosx.master.client import MasterClient
     from rosx.node import Node
 
@@ -103,10 +104,30 @@ def init_node(
             f"'{name}' is not a legal ROS base name. This may cause problems with other ROS tools.",
             stacklevel=2,
         )
+    log_file = _open_log_file(name)
     node = _start_node(name, log_level or INFO, xmlrpc_port, tcpros_port, disable_rosout)
     node.on_shutdown(state.CLIENT.signal_shutdown)
+    if log_file is not None:
+        node.log_sink.record = log_file.rosout
+        node.on_shutdown(
+            lambda reason: log_file.write("rospy.core", INFO, f"signal_shutdown [{reason}]")
+        )
     if not state.CLIENT.started(node):
         raise ROSInitException("init_node interrupted before it could complete")
+
+
+def _open_log_file(name: str) -> LogFile | None:
+    """The ``__log:=`` file, opened and begun with rospy's first line; None without one."""
+    path = state.CLIENT.args.log
+    if not path:
+        return None
+    from rosx.client.logfile import open_log_file  # noqa: PLC0415 - only under roslaunch
+
+    log_file = open_log_file(path)
+    if log_file is not None:
+        full = state.CLIENT.namespace() + name
+        log_file.write("rospy.client", INFO, f"init_node, name[{full}], pid[{os.getpid()}]")
+    return log_file
 
 
 def _make_node(

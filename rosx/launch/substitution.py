@@ -78,13 +78,21 @@ class World:
     def optenv(self, name: str, default: str = "") -> str:
         return self.environ.get(name, default)
 
-    def find(self, package: str) -> str:
+    def find(self, package: str, path: str = "") -> str:
+        """``$(find package)``, or the directory to read ``path`` from when one follows it:
+        the first package on the package path, as ROS 1, unless only rosx's own package of
+        that name has ``path`` (see `PackageIndex.directories`)."""
         from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415
 
         try:
-            return str(self.package_index.find(package))
+            first = self.package_index.find(package)
         except PackageNotFoundError:
             raise MissingPackageError(package) from None
+        if path and not Path(first, path).exists():
+            for directory in self.package_index.directories(package):
+                if Path(directory, path).exists():
+                    return str(directory)
+        return str(first)
 
 
 @dataclass
@@ -227,7 +235,9 @@ def _find(text: str, whole: str, args: list[str], world: World) -> str:
     # Only the first occurrence is replaced. The word that follows it (up to a space) is a path
     # inside the package, joined to the package's directory after one leading separator is
     # dropped: roslaunch looks for it in devel/install spaces first, and a source-space package
-    # has it under its own directory, which is what rosx's index holds.
+    # has it under its own directory, which is what rosx's index holds. Looking for the path
+    # is ROS 1's too; here it lets rosx's own package serve the files a same-named package on
+    # the path lacks.
     if len(args) != 1:
         raise SubstitutionError(f"$(find pkg) command only accepts one argument [{whole[2:-1]}]")
     index = text.find(whole)
@@ -237,7 +247,7 @@ def _find(text: str, whole: str, args: list[str], world: World) -> str:
     path = path.replace("\\", "/")
     if path.startswith("/"):
         path = path[1:]
-    package_dir = world.find(args[0])
+    package_dir = world.find(args[0], path)
     if path:
         package_dir = path if path.startswith("/") else f"{package_dir}/{path}"
     return before + package_dir + rest

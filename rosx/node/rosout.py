@@ -113,6 +113,8 @@ class NodeLog:
         self.levels: dict[str, int] = {ROSOUT_LOGGER: level, "rospy": INFO, "rosx": INFO}
         self.publish = publish
         self.console = console
+        #: Receives each emitted record's level and text (a log file), if set.
+        self.record: Callable[[int, str], None] | None = None
         self._environ = environ
         self._busy = threading.local()
 
@@ -131,6 +133,8 @@ class NodeLog:
         """Emit one record to the console and ``/rosout`` if its level is enabled."""
         if level < self.levels[ROSOUT_LOGGER]:
             return
+        if self.record is not None:
+            self.record(level, message)
         if self.console is not None:
             self.console(
                 level,

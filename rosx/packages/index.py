@@ -80,6 +80,13 @@ class PackageIndex:
             raise PackageNotFoundError(name)
         return directory
 
+    def directories(self, name: str) -> list[Path]:
+        """Where package ``name``'s files are looked for: the package path's directory, then
+        rosx's own of that name. A package on the path shadows rosx's only for the files it
+        has (a message-only ``turtlesim`` leaves rosx's launch files reachable)."""
+        found = [d for d in (self.path_packages.get(name), bundled_packages().get(name)) if d]
+        return list(dict.fromkeys(found))
+
     def is_known(self, name: str) -> bool:
         """Whether ``name`` is a package: with a directory, or one rosx provides."""
         if name in self.packages:

@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import io
 import os
+import re
 import subprocess
+import sys
 from collections.abc import Callable
 from pathlib import Path
 from types import ModuleType
@@ -245,3 +247,27 @@ def test_ros1s_python_keeps_ros1s_rosgraph_with_the_shim_on_its_path(tmp_path: P
     )
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "/usr/lib/python3/dist-packages/rosgraph/names.py"
+
+
+def test_a_log_argument_gets_rospys_log_file(
+    rospy: ModuleType, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    log = tmp_path / "run" / "talker-1.log"
+    monkeypatch.setattr(sys, "argv", ["script.py", f"__log:={log}", "__ns:=ns"])
+    rospy.init_node("talker", disable_signals=True)
+    rospy.loginfo("hello %d", 1)
+    rospy.logdebug("not at INFO")
+    rospy.logwarn("careful")
+    rospy.signal_shutdown("done")
+    stamp = r"\d{4}-\d\d-\d\d \d\d:\d\d:\d\d,\d{3}"
+    wait_for(lambda: "signal_shutdown" in log.read_text(), what="the shutdown line")
+    lines = log.read_text().splitlines()
+    patterns = [
+        rf"\[rospy\.client\]\[INFO\] {stamp}: init_node, name\[/ns/talker\], pid\[{os.getpid()}\]",
+        rf"\[rosout\]\[INFO\] {stamp}: hello 1",
+        rf"\[rosout\]\[WARNING\] {stamp}: careful",
+        rf"\[rospy\.core\]\[INFO\] {stamp}: signal_shutdown \[done\]",
+    ]
+    assert len(lines) == len(patterns), lines
+    for line, pattern in zip(lines, patterns, strict=True):
+        assert re.fullmatch(pattern, line), line

@@ -1,7 +1,8 @@
 """``rosx roslaunch`` end to end: the tutorials' turtlemimic file, respawn, required, Ctrl-C.
 
 Each test writes a package into a temporary ``ROS_PACKAGE_PATH`` (the turtlemimic file of the
-wiki's rqt_console/roslaunch tutorial, and small rospy scripts that exit), runs
+wiki's rqt_console/roslaunch tutorial, and small rospy scripts that exit), with CI's package
+path after it (ROS 1's message-only ``turtlesim`` shadows none of rosx's turtlesim), runs
 ``rosx roslaunch`` as a user does (its own process, no master at ``ROS_MASTER_URI``, a free
 port), watches what it prints and the graph it makes, then sends SIGINT as Ctrl-C does and
 checks that no process is left and the port is free. Where the ROS 1 reference is installed,
@@ -13,6 +14,7 @@ from __future__ import annotations
 import contextlib
 import os
 import re
+import shutil
 import signal
 import subprocess
 import sys
@@ -26,10 +28,11 @@ import pytest
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
+from rosx.packages.index import bundled_packages
 from rosx.transport.client import call as xmlrpc_call
 from tests.support.cli import clean_environ, rosx
 from tests.support.procs import free_port, port_open, running, stop, wait_for
-from tests.support.ros1 import needs_ros1, run_ros1
+from tests.support.ros1 import OVERLAY, needs_ros1, run_ros1
 
 START_X = 5.544444561004639
 
@@ -226,9 +229,24 @@ def _alive(pid: int) -> bool:
     return status.rsplit(")", 1)[1].split()[0] != "Z"
 
 
+def _overlay(tmp_path: Path) -> list[str]:
+    """CI's package path after the test's own (ROS 1's message-only ``turtlesim`` and the
+    message packages first); without the ROS 1 reference, a message-only ``turtlesim`` like
+    it: either way rosx's turtlesim programs and launch files must still be found."""
+    if (OVERLAY / "turtlesim").is_dir():
+        return [str(OVERLAY), "/usr/share"]
+    package = tmp_path / "overlay" / "turtlesim"
+    shipped = bundled_packages()["turtlesim"]
+    for folder in ("msg", "srv"):
+        shutil.copytree(shipped / folder, package / folder)
+    shutil.copy(shipped / "package.xml", package / "package.xml")
+    return [str(tmp_path / "overlay")]
+
+
 @pytest.fixture
 def world(tmp_path: Path) -> Iterator[dict[str, Any]]:
-    """A package ``labl`` (launch files, scripts), a ROS_HOME, a free port without a master."""
+    """A package ``labl`` (launch files, scripts), a ROS_HOME, a free port without a master;
+    a message-only ``turtlesim`` on the package path after it, as in CI (`_overlay`)."""
     package = tmp_path / "src" / "labl"
     (package / "launch").mkdir(parents=True)
     (package / "scripts").mkdir()
@@ -261,7 +279,7 @@ def world(tmp_path: Path) -> Iterator[dict[str, Any]]:
     port = free_port()
     env = clean_environ(
         ROS_MASTER_URI=f"http://localhost:{port}",
-        ROS_PACKAGE_PATH=str(tmp_path / "src"),
+        ROS_PACKAGE_PATH=os.pathsep.join([str(tmp_path / "src"), *_overlay(tmp_path)]),
         ROS_HOME=str(tmp_path / "ros_home"),
     )
     env["PYTHONPATH"] = os.pathsep.join(
@@ -351,6 +369,14 @@ def test_turtlemimic_starts_a_core_two_turtlesims_and_mimic_and_ctrl_c_ends_all(
         "... shutting down processing monitor complete\n"
         "done\n"
     )
+    assert launch.err == ""
+
+
+def test_turtlesims_own_multisim_file_starts_two_turtlesims(world: dict[str, Any]) -> None:
+    with launched(["turtlesim", "multisim.launch"], world["env"]) as launch:
+        _wait_registered(world["uri"], "/turtlesim1/sim", "/turtlesim2/sim")
+        assert launch.interrupt() == 0, launch.err
+    assert sorted(launch.pids()) == ["master", "rosout-1", "turtlesim1/sim-2", "turtlesim2/sim-3"]
     assert launch.err == ""
 
 

@@ -6,11 +6,11 @@ from pathlib import Path
 
 import pytest
 
-from rosx.launch import LaunchError, Node, load_launch
+from rosx.launch import LaunchError, Node, load_launch, resolve_launch_arguments
 from rosx.launch import Test as LaunchTest
 from rosx.launch.model import RosparamCommand, Source
-from rosx.packages.index import PackageIndex
-from tests.launch.conftest import Load, Write
+from rosx.packages.index import PackageIndex, bundled_packages
+from tests.launch.conftest import PACKAGE_XML, Load, Write
 
 
 def values(plan: object) -> dict[str, object]:
@@ -336,3 +336,31 @@ def test_a_file_included_twice_is_read_twice(load: Load, write: Write) -> None:
         f'<launch><include file="{inner}" ns="a" /><include file="{inner}" ns="b" /></launch>'
     )
     assert plan.param_values() == {"/a/p": 1, "/b/p": 1}
+
+
+def test_a_package_on_the_path_shadows_rosxs_only_for_the_files_it_has(
+    write: Write, tmp_path: Path
+) -> None:
+    # A message-only turtlesim on the path, as ROS 1's message overlays have one.
+    write("pkgs/turtlesim/package.xml", PACKAGE_XML.format(name="turtlesim"))
+    write("pkgs/turtlesim/msg/Pose.msg", "float32 x\n")
+    write("pkgs/turtlesim/launch/own.launch", "<launch/>")
+    index = PackageIndex([tmp_path / "pkgs"])
+    shipped = bundled_packages()["turtlesim"] / "launch" / "multisim.launch"
+    files, _ = resolve_launch_arguments(["turtlesim", "multisim.launch"], index)
+    assert files == [str(shipped)]
+    files, _ = resolve_launch_arguments(["turtlesim", "own.launch"], index)
+    assert files == [str(tmp_path / "pkgs/turtlesim/launch/own.launch")]
+    main = write(
+        "main.launch",
+        '<launch><include file="$(find turtlesim)/launch/multisim.launch" />'
+        '<param name="dir" value="$(find turtlesim)" />'
+        '<param name="own" value="$(find turtlesim)/launch/own.launch" /></launch>',
+    )
+    plan = load_launch([str(main)], {}, {}, index, with_core=False)
+    assert [n.namespace + n.name for n in plan.nodes] == ["/turtlesim1/sim", "/turtlesim2/sim"]
+    assert plan.files == [str(main), str(shipped)]
+    assert plan.param_values() == {
+        "/dir": str(tmp_path / "pkgs/turtlesim"),
+        "/own": str(tmp_path / "pkgs/turtlesim/launch/own.launch"),
+    }
