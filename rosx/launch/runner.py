@@ -32,6 +32,7 @@ from __future__ import annotations
 import contextlib
 import os
 import shlex
+import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -195,8 +196,8 @@ class LaunchRun:
         self._counter = 0
         self._master = MasterClient(self.uri, _CALLER, timeout=_CONNECT_TIMEOUT)
         #: Python nodes are forks of a process that has loaded rosx's rospy (see
-        #: `rosx.launch.zygote`); False starts each as a new Python process.
-        self.fork_python_nodes = True
+        #: `rosx.launch.zygote`); False starts each as a new Python process (Windows cannot fork).
+        self.fork_python_nodes = sys.platform != "win32"
         self.zygote: ZygoteClient | None = None
 
     # -- the run ---------------------------------------------------------------------------

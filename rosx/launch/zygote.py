@@ -107,7 +107,8 @@ def serve(fd: int) -> int:
     wake_read, wake_write = socket.socketpair()
     wake_write.setblocking(False)
     signal.set_wakeup_fd(wake_write.fileno(), warn_on_full_buffer=False)
-    signal.signal(signal.SIGCHLD, lambda *_: None)
+    if sys.platform != "win32":  # the helper forks: POSIX only
+        signal.signal(signal.SIGCHLD, lambda *_: None)
     _send(control, {"ready": os.getpid()})
     buffer = b""
     while True:
@@ -371,7 +372,7 @@ class ForkedProcess(LocalProcess):
         if not self.forked:
             super().reap()
             return
-        if self._ended()[0]:
+        if self._ended()[0] and hasattr(os, "killpg"):
             with contextlib.suppress(ProcessLookupError, PermissionError):
                 os.killpg(self.pid, signal.SIGKILL)  # children that outlived the node
 
