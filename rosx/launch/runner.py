@@ -219,8 +219,9 @@ class LaunchRun:
 
             # Started first, so that it loads Python's side of the nodes while the launcher
             # starts the core.
+            environ = self._script_environ(self.environ)
             self.zygote = ZygoteClient(
-                self._script_environ(self.environ), on_exit=self.monitor.wake
+                environ, on_exit=self.monitor.wake, crawled=self._crawled(environ)
             )
         with self.monitor.signals():
             try:
@@ -231,6 +232,16 @@ class LaunchRun:
                 self._master.close()
                 self.monitor.close()
                 self.console.close()
+
+    def _crawled(self, environ: Mapping[str, str]) -> dict[str, Path] | None:
+        """The package index's crawl, when it is of ``environ``'s package path (the nodes
+        need it anyway, so it is done here once for the launcher and the helper)."""
+        from rosx.packages.crawl import split_package_path  # noqa: PLC0415
+
+        package_path = split_package_path(environ.get("ROS_PACKAGE_PATH"))
+        if self.package_index.package_path != package_path:
+            return None
+        return self.package_index.path_packages
 
     def _run(self) -> int:
         from rosx.launch.printing import summary_text  # noqa: PLC0415
