@@ -37,7 +37,6 @@ import signal
 import socket
 import sys
 import threading
-import time
 from typing import TYPE_CHECKING, Any
 
 from rosx.launch.monitor import LocalProcess
@@ -395,9 +394,7 @@ class ForkedProcess(LocalProcess):
         ended, code = self._ended()
         if not ended:
             return True
-        if self.time_of_death is None:
-            self.exit_code = code
-            self.time_of_death = time.monotonic()
+        self._record_death(code)
         return False
 
     def running(self) -> bool:
