@@ -7,12 +7,20 @@ with rosx under this Python, and prints:
 * small messages (``geometry_msgs/Twist``, 48 bytes) sent as fast as the publisher can: msgs/s
   delivered and messages lost, with rospy's asynchronous publisher (``queue_size=100``) and with
   its synchronous one (``queue_size=None``) against rosx's equivalents;
-* latency from ``publish`` to the callback at 1 kHz: p50 and p99, the first messages ignored
-  as a warm-up, medians over several rounds with rospy and rosx alternating;
-* 1 MiB messages (``sensor_msgs/Image``): bytes/s delivered;
+* latency from ``publish`` to the callback at 1 kHz and in bursts of 10 every 10 ms: p50 and
+  p99, the first messages ignored as a warm-up, medians over several rounds with rospy and rosx
+  alternating;
+* 1 MiB messages (``sensor_msgs/Image``) and 10 MiB ``sensor_msgs/PointCloud2``: bytes/s
+  delivered, several rounds;
+* fan-out and fan-in: one publisher to 10 subscriber processes and 10 publishers to one, Twist
+  and 1 MiB images: delivered msgs/s or bytes/s summed over subscribers, and the slowest
+  subscriber's rate;
+* publisher and subscriber in one process (``inproc``: Twist flood and latency at 1 kHz): rospy
+  has one node per process, its publisher and subscriber talking over loopback TCPROS; rosx
+  has two `Node` objects linked in-process (``ROSX_INTRAPROCESS=0``: over TCPROS, shown too);
 
 and the ratios rosx/rospy. Run:
-``python bench/bench_pubsub.py [--quick] [--only CASE] [--rounds N]``.
+``python bench/bench_pubsub.py [--quick] [--only CASE] [--rounds N] [--fast-rounds N]``.
 """
 
 from __future__ import annotations
@@ -36,6 +44,8 @@ API_ROSPY = """
 import rospy
 def make_node(name):
     rospy.init_node(name, disable_signals=True)
+def second_node(name):
+    pass  # one node per process
 def publisher(topic, cls, queue_size):
     return rospy.Publisher(topic, cls, queue_size=queue_size)
 def subscriber(topic, cls, cb, queue_size):
@@ -53,47 +63,117 @@ from rosx.msg.codec.classes import get_message_class as msg_class
 _node = []
 def make_node(name):
     _node.append(Node(name, master_uri=os.environ['ROS_MASTER_URI']).start())
+second_node = make_node
 def publisher(topic, cls, queue_size):
     return _node[0].advertise(topic, cls, queue_size=queue_size)
 def subscriber(topic, cls, cb, queue_size):
-    return _node[0].subscribe(topic, cls, cb, queue_size=queue_size)
+    return _node[-1].subscribe(topic, cls, cb, queue_size=queue_size)
 """
 
-PUBLISHER = """
+# Publisher and subscriber in one process: rospy's one node, or two rosx nodes.
+INPROC = """
+import sys, time, json, threading
+count, pub_queue, sub_queue = int(sys.argv[1]), json.loads(sys.argv[2]), json.loads(sys.argv[3])
+period, warmup = float(sys.argv[4]), int(sys.argv[5])
+make_node('bench_inproc_pub')
+second_node('bench_inproc_sub')
+cls = msg_class('geometry_msgs/Twist')
+state = {'n': 0, 'first': 0.0, 'last': 0.0}
+lat = []
+done = threading.Event()
+clock = time.time
+def cb(msg):
+    now = clock()
+    if state['n'] == 0:
+        state['first'] = now
+    state['n'] += 1
+    state['last'] = now
+    if msg.linear.y >= warmup:
+        lat.append(now - msg.linear.x)
+    if msg.linear.y == count - 1:
+        done.set()
+sub = subscriber('/bench_inproc', cls, cb, sub_queue)
+pub = publisher('/bench_inproc', cls, pub_queue)
+while pub.get_num_connections() == 0:
+    time.sleep(0.01)
+time.sleep(0.5)
+msg = cls()
+start = clock()
+for i in range(count):
+    msg.linear.x = clock()
+    msg.linear.y = i
+    pub.publish(msg)
+    if period:
+        time.sleep(period)
+pub_rate = count / (clock() - start)
+deadline = time.monotonic() + 120
+while not done.is_set() and time.monotonic() < deadline:
+    before = state['n']
+    done.wait(3.0)
+    if state['n'] == before:
+        break
+span = max(state['last'] - state['first'], 1e-9)
+lat.sort()
+result = {'received': state['n'], 'rate': state['n'] / span, 'pub_rate': pub_rate}
+if lat:
+    result['p50'] = lat[len(lat) // 2] * 1e6
+    result['p99'] = lat[min(len(lat) - 1, int(len(lat) * 0.99))] * 1e6
+print(json.dumps(result), flush=True)
+import os
+os._exit(0)
+"""
+
+KINDS = """
+CLASSES = {'twist': 'geometry_msgs/Twist', 'image': 'sensor_msgs/Image',
+           'cloud': 'sensor_msgs/PointCloud2'}
+"""
+
+PUBLISHER = (
+    KINDS
+    + """
 import sys, time, json
 count, queue_size = int(sys.argv[1]), json.loads(sys.argv[2])
 period, kind = float(sys.argv[3]), sys.argv[4]
-make_node('bench_pub')
-cls = msg_class('sensor_msgs/Image' if kind == 'image' else 'geometry_msgs/Twist')
+subscribers, name = int(sys.argv[5]), sys.argv[6]
+make_node(name)
+cls = msg_class(CLASSES[kind])
 pub = publisher('/bench', cls, queue_size)
-while pub.get_num_connections() == 0:
+while pub.get_num_connections() < subscribers:
     time.sleep(0.01)
 time.sleep(0.5)
 msg = cls()
 if kind == 'image':
     msg.height, msg.width, msg.encoding, msg.step = 512, 512, 'rgba8', 2048
     msg.data = bytes(1 << 20)
+elif kind == 'cloud':
+    msg.height, msg.width, msg.point_step, msg.row_step = 1, 655360, 16, 10485760
+    msg.data = bytes(10 << 20)
 clock = time.time
 start = clock()
 for i in range(count):
-    if kind == 'image':
+    if kind != 'twist':
         msg.header.frame_id = str(i)
     else:
         msg.linear.x = clock()
         msg.linear.y = i
     pub.publish(msg)
-    if period:
+    if period > 0:
         time.sleep(period)
+    elif period < 0 and i % 10 == 9:  # bursts of 10
+        time.sleep(-period)
 print(json.dumps({'pub_rate': count / (clock() - start)}), flush=True)
 time.sleep(1.0)
 """
+)
 
-SUBSCRIBER = """
+SUBSCRIBER = (
+    KINDS
+    + """
 import sys, time, json, threading
 count, queue_size, kind = int(sys.argv[1]), json.loads(sys.argv[2]), sys.argv[3]
-warmup = int(sys.argv[4])
-make_node('bench_sub')
-cls = msg_class('sensor_msgs/Image' if kind == 'image' else 'geometry_msgs/Twist')
+warmup, publishers, name = int(sys.argv[4]), int(sys.argv[5]), sys.argv[6]
+make_node(name)
+cls = msg_class(CLASSES[kind])
 state = {'n': 0, 'first': 0.0, 'last': 0.0, 'bytes': 0}
 lat = []
 done = threading.Event()
@@ -104,14 +184,14 @@ def cb(msg):
         state['first'] = now
     state['n'] += 1
     state['last'] = now
-    if kind == 'image':
+    if kind != 'twist':
         state['bytes'] += len(msg.data)
-        last = int(msg.header.frame_id) == count - 1
+        last = int(msg.header.frame_id) == count - 1 and publishers == 1
     else:
         if msg.linear.y >= warmup:
             lat.append(now - msg.linear.x)
-        last = msg.linear.y == count - 1
-    if last:
+        last = msg.linear.y == count - 1 and publishers == 1
+    if last or state['n'] == count * publishers:
         done.set()
 sub = subscriber('/bench', cls, cb, queue_size)
 print('ready', flush=True)
@@ -130,6 +210,7 @@ if lat:
     result['samples'] = len(lat)
 print(json.dumps(result), flush=True)
 """
+)
 
 
 def free_port() -> int:
@@ -166,43 +247,153 @@ def run_case(
     sub_queue: int | None,
     period: float,
     warmup: int = 0,
+    *,
+    publishers: int = 1,
+    subscribers: int = 1,
 ) -> dict[str, float]:
+    """Run publisher and subscriber processes; with several subscribers, ``rate`` and
+    ``bytes_rate`` are their sum and ``slowest`` the lowest subscriber's ``rate``."""
     python = ROS1_PYTHON if lib == "rospy" else sys.executable
     api = API_ROSPY if lib == "rospy" else API_ROSX
     env = dict(os.environ, ROS_MASTER_URI=master, PYTHONPATH=str(ROOT))
     if lib == "rospy":
         env["ROS_PACKAGE_PATH"] = "/usr/share"
-    sub = subprocess.Popen(
-        [python, "-c", api + SUBSCRIBER, str(count), json.dumps(sub_queue), kind, str(warmup)],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.DEVNULL,
-        env=env,
-        cwd=ROOT,
-        text=True,
-    )
-    assert sub.stdout is not None
-    sub.stdout.readline()  # "ready"
-    pub = subprocess.Popen(
-        [python, "-c", api + PUBLISHER, str(count), json.dumps(pub_queue), str(period), kind],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.DEVNULL,
-        env=env,
-        cwd=ROOT,
-        text=True,
-    )
+
+    def spawn(script: str, *argv: object) -> subprocess.Popen[str]:
+        return subprocess.Popen(
+            [python, "-c", api + script, *map(str, argv)],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL,
+            env=env,
+            cwd=ROOT,
+            text=True,
+        )
+
+    subs = [
+        spawn(SUBSCRIBER, count, json.dumps(sub_queue), kind, warmup, publishers, f"bench_sub{i}")
+        for i in range(subscribers)
+    ]
+    for sub in subs:
+        assert sub.stdout is not None
+        sub.stdout.readline()  # "ready"
+    pubs = [
+        spawn(PUBLISHER, count, json.dumps(pub_queue), period, kind, subscribers, f"bench_pub{i}")
+        for i in range(publishers)
+    ]
     try:
-        out, _ = sub.communicate(timeout=180)
-        pub_out, _ = pub.communicate(timeout=30)
+        outs = [sub.communicate(timeout=240)[0] for sub in subs]
+        pub_outs = [pub.communicate(timeout=60)[0] for pub in pubs]
     finally:
-        for proc in (sub, pub):
+        for proc in subs + pubs:
             if proc.poll() is None:
                 proc.kill()
                 proc.wait()
-    result: dict[str, float] = json.loads(out.strip().splitlines()[-1])
-    if pub_out.strip():
-        result.update(json.loads(pub_out.strip().splitlines()[-1]))
+    each = [json.loads(out.strip().splitlines()[-1]) for out in outs]
+    result: dict[str, float] = dict(each[0])
+    for field in ("received", "rate", "bytes_rate"):
+        result[field] = sum(r[field] for r in each)
+    result["slowest"] = min(r["rate"] for r in each)
+    if pub_outs[0].strip():
+        result.update(json.loads(pub_outs[0].strip().splitlines()[-1]))
+    result["lost"] = count * publishers * subscribers - result["received"]
+    return result
+
+
+def run_inproc(
+    lib: str,
+    master: str,
+    count: int,
+    pub_queue: int | None,
+    sub_queue: int | None,
+    period: float,
+    warmup: int = 0,
+) -> dict[str, float]:
+    """One process publishing to itself; ``lib`` ``rosx-tcp`` is rosx without in-process links."""
+    python = ROS1_PYTHON if lib == "rospy" else sys.executable
+    api = API_ROSPY if lib == "rospy" else API_ROSX
+    env = dict(os.environ, ROS_MASTER_URI=master, PYTHONPATH=str(ROOT))
+    if lib == "rospy":
+        env["ROS_PACKAGE_PATH"] = "/usr/share"
+    if lib == "rosx-tcp":
+        env["ROSX_INTRAPROCESS"] = "0"
+    argv = [str(count), json.dumps(pub_queue), json.dumps(sub_queue), str(period), str(warmup)]
+    done = subprocess.run(
+        [python, "-c", api + INPROC, *argv],
+        capture_output=True,
+        env=env,
+        cwd=ROOT,
+        text=True,
+        timeout=240,
+        check=False,
+    )
+    result: dict[str, float] = json.loads(done.stdout.strip().splitlines()[-1])
     result["lost"] = count - result["received"]
     return result
+
+
+InprocRow = tuple[str, dict[str, dict[str, float]], str]
+
+
+def inproc_cases(
+    master: str, small: int, latency: int, rounds: int, warmup: int
+) -> list[InprocRow]:
+    """The one-process cases, rospy, rosx over TCPROS and rosx in-process alternating."""
+    rows: list[InprocRow] = []
+    cases = [
+        (
+            "Twist flood, one process, async publisher (queue_size=100)",
+            small,
+            100,
+            None,
+            0.0,
+            "rate",
+        ),
+        (
+            "Twist flood, one process, sync publisher (queue_size=None)",
+            small,
+            None,
+            None,
+            0.0,
+            "rate",
+        ),
+        ("Twist at 1 kHz, one process, latency", latency, 100, None, 0.001, "p50"),
+    ]
+    for title, count, pq, sq, period, key in cases:
+        libs: dict[str, list[dict[str, float]]] = {"rospy": [], "rosx-tcp": [], "rosx": []}
+        for _ in range(rounds):
+            for lib, results in libs.items():
+                results.append(run_inproc(lib, master, count, pq, sq, period, warmup))
+        merged: dict[str, dict[str, float]] = {}
+        for lib, results in libs.items():
+            res = dict(results[-1])
+            for field in ("p50", "p99", "rate", "received", "lost"):
+                if field in res:
+                    res[field] = median([r[field] for r in results])
+            res["rounds"] = [round(r[key]) for r in results]  # type: ignore[assignment]
+            merged[lib] = res
+        rows.append((title, merged, key))
+    return rows
+
+
+def print_inproc(rows: list[InprocRow], rounds: int) -> None:
+    """Print the one-process cases."""
+    for title, by_lib, key in rows:
+        print(title)
+        for lib, res in by_lib.items():
+            parts = [f"received {int(res['received'])}", f"lost {int(res['lost'])}"]
+            parts.append(f"{res['rate']:,.0f} msgs/s")
+            if key == "p50":
+                parts.append(f"latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us")
+            parts.append(f"(median of {rounds} rounds: {res['rounds']})")
+            print(f"  {lib:8}: " + ", ".join(parts))
+        base, mine = by_lib["rospy"], by_lib["rosx"]
+        if key == "p50":
+            print(
+                f"  ratio rosx/rospy latency p50: {mine['p50'] / base['p50']:.2f}, "
+                f"p99: {mine['p99'] / base['p99']:.2f}"
+            )
+        else:
+            print(f"  ratio rosx/rospy: {mine['rate'] / base['rate']:.1f}x (target >= 20)")
 
 
 def median(values: list[float]) -> float:
@@ -211,86 +402,10 @@ def median(values: list[float]) -> float:
     return ordered[mid] if len(ordered) % 2 else (ordered[mid - 1] + ordered[mid]) / 2
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="fewer messages")
-    parser.add_argument(
-        "--only", choices=("async", "sync", "latency", "image"), help="run only this case"
-    )
-    parser.add_argument(
-        "--rounds", type=int, default=5, help="latency rounds, rospy and rosx alternating"
-    )
-    args = parser.parse_args()
-    scale = 0.2 if args.quick else 1.0
-    small, latency, images = int(200_000 * scale), int(3000 * scale), int(1000 * scale)
-    warmup = latency // 6
-    rounds = max(1, args.rounds if not args.quick else min(args.rounds, 2))
-    proc, master = start_master()
-    rows: list[tuple[str, dict[str, float], dict[str, float], str]] = []
-    try:
-        cases = [
-            (
-                "async",
-                "Twist flood, async publisher (queue_size=100 both)",
-                "twist",
-                small,
-                100,
-                0.0,
-                "rate",
-            ),
-            (
-                "sync",
-                "Twist flood, sync publisher (queue_size=None both)",
-                "twist",
-                small,
-                None,
-                0.0,
-                "rate",
-            ),
-            (
-                "latency",
-                "Twist at 1 kHz, latency (queue_size=100)",
-                "twist",
-                latency,
-                100,
-                0.001,
-                "p50",
-            ),
-            (
-                "image",
-                "1 MiB Image flood (queue_size=None)",
-                "image",
-                images // 5,
-                None,
-                0.0,
-                "bytes_rate",
-            ),
-        ]
-        for name, title, kind, count, pq, period, key in cases:
-            if args.only and name != args.only:
-                continue
-            if key != "p50":
-                ros = run_case("rospy", master, kind, count, pq, None, period)
-                rx = run_case("rosx", master, kind, count, pq, None, period)
-                rows.append((title, ros, rx, key))
-                continue
-            # Latency: several rounds, alternating, the first `warmup` messages of each
-            # ignored; each library's figures are the medians over its rounds.
-            runs: dict[str, list[dict[str, float]]] = {"rospy": [], "rosx": []}
-            for _ in range(rounds):
-                for lib, results in runs.items():
-                    results.append(run_case(lib, master, kind, count, pq, None, period, warmup))
-            merged = []
-            for lib in ("rospy", "rosx"):
-                res = dict(runs[lib][-1])
-                for field in ("p50", "p99", "rate", "received", "lost"):
-                    res[field] = median([r[field] for r in runs[lib]])
-                res["rounds_p50"] = [round(r["p50"]) for r in runs[lib]]  # type: ignore[assignment]
-                merged.append(res)
-            rows.append((title, merged[0], merged[1], key))
-    finally:
-        proc.terminate()
-        proc.wait()
+def print_rows(
+    rows: list[tuple[str, dict[str, float], dict[str, float], str]], rounds: int
+) -> None:
+    """Print the two-process cases."""
     for title, ros, rx, key in rows:
         print(title)
         for lib, res in (("rospy", ros), ("rosx ", rx)):
@@ -301,14 +416,204 @@ def main() -> None:
                 parts.append(f"{res['rate']:,.0f} msgs/s")
             if key == "p50":
                 parts.append(f"latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us")
-            if "rounds_p50" in res:
-                parts.append(f"(median of {rounds} rounds, p50s {res['rounds_p50']})")
+            if res["slowest"] != res["rate"]:
+                parts.append(f"slowest subscriber {res['slowest']:,.0f} msgs/s")
+            rounds_done = len(res["rounds"])  # type: ignore[arg-type]
+            parts.append(f"(median of {rounds_done}: {res['rounds']})")
             print(f"  {lib}: " + ", ".join(parts))
         base, mine = ros[key], rx[key]
         if key == "p50":
-            print(f"  ratio rosx/rospy latency p50: {mine / base:.2f} (target <= 0.5)")
+            print(
+                f"  ratio rosx/rospy latency p50: {mine / base:.2f} (target <= 0.4), "
+                f"p99: {rx['p99'] / ros['p99']:.2f} (target <= 0.5)"
+            )
         else:
             print(f"  ratio rosx/rospy: {mine / base:.1f}x")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="fewer messages")
+    parser.add_argument(
+        "--only",
+        choices=("async", "sync", "latency", "image", "inproc", "fanout"),
+        help="run only this case",
+    )
+    parser.add_argument(
+        "--rounds",
+        type=int,
+        default=5,
+        help="rounds of the latency, one-process and large-message cases, libraries alternating",
+    )
+    parser.add_argument(
+        "--fast-rounds", type=int, default=1, help="rounds of the floods and fan-out cases"
+    )
+    args = parser.parse_args()
+    scale = 0.2 if args.quick else 1.0
+    small, latency, images = int(200_000 * scale), int(3000 * scale), int(1000 * scale)
+    warmup = latency // 6
+    rounds = max(1, args.rounds if not args.quick else min(args.rounds, 2))
+    fast_rounds = max(1, args.fast_rounds if not args.quick else 1)
+    proc, master = start_master()
+    rows: list[tuple[str, dict[str, float], dict[str, float], str]] = []
+    inproc_rows: list[InprocRow] = []
+    try:
+        # name, title, kind, messages per publisher, publisher queue, period, key,
+        # publishers, subscribers
+        cases: list[tuple[str, str, str, int, int | None, float, str, int, int]] = [
+            (
+                "async",
+                "Twist flood, async publisher (queue_size=100)",
+                "twist",
+                small,
+                100,
+                0.0,
+                "rate",
+                1,
+                1,
+            ),
+            (
+                "sync",
+                "Twist flood, sync publisher (queue_size=None)",
+                "twist",
+                small,
+                None,
+                0.0,
+                "rate",
+                1,
+                1,
+            ),
+            (
+                "latency",
+                "Twist at 1 kHz, latency (queue_size=100)",
+                "twist",
+                latency,
+                100,
+                0.001,
+                "p50",
+                1,
+                1,
+            ),
+            (
+                "latency",
+                "Twist in bursts of 10 every 10 ms, latency (queue_size=100)",
+                "twist",
+                latency,
+                100,
+                -0.01,
+                "p50",
+                1,
+                1,
+            ),
+            (
+                "image",
+                "1 MiB Image flood (queue_size=None)",
+                "image",
+                images // 5,
+                None,
+                0.0,
+                "bytes_rate",
+                1,
+                1,
+            ),
+            (
+                "image",
+                "10 MiB PointCloud2 flood (queue_size=None)",
+                "cloud",
+                images // 50,
+                None,
+                0.0,
+                "bytes_rate",
+                1,
+                1,
+            ),
+            (
+                "fanout",
+                "Twist, 1 publisher -> 10 subscribers (queue_size=100)",
+                "twist",
+                small // 10,
+                100,
+                0.0,
+                "rate",
+                1,
+                10,
+            ),
+            (
+                "fanout",
+                "Twist, 10 publishers -> 1 subscriber (queue_size=100)",
+                "twist",
+                small // 10,
+                100,
+                0.0,
+                "rate",
+                10,
+                1,
+            ),
+            (
+                "fanout",
+                "1 MiB Image, 1 publisher -> 10 subscribers (queue_size=None)",
+                "image",
+                images // 20,
+                None,
+                0.0,
+                "bytes_rate",
+                1,
+                10,
+            ),
+            (
+                "fanout",
+                "1 MiB Image, 10 publishers -> 1 subscriber (queue_size=None)",
+                "image",
+                images // 20,
+                None,
+                0.0,
+                "bytes_rate",
+                10,
+                1,
+            ),
+        ]
+        if not args.only or args.only == "inproc":
+            inproc_rows = inproc_cases(master, small, latency, rounds, warmup)
+        for name, title, kind, count, pq, period, key, npubs, nsubs in cases:
+            if args.only and name != args.only:
+                continue
+            # Rounds alternating rospy and rosx; for latency the first `warmup` messages of
+            # each are ignored. Each library's figures are the medians over its rounds.
+            runs: dict[str, list[dict[str, float]]] = {"rospy": [], "rosx": []}
+            for _ in range(rounds if name in ("latency", "image") else fast_rounds):
+                for lib, results in runs.items():
+                    results.append(
+                        run_case(
+                            lib,
+                            master,
+                            kind,
+                            count,
+                            pq,
+                            None,
+                            period,
+                            warmup if key == "p50" else 0,
+                            publishers=npubs,
+                            subscribers=nsubs,
+                        )
+                    )
+            merged = []
+            for lib in ("rospy", "rosx"):
+                res = dict(runs[lib][-1])
+                for field in ("p50", "p99", "rate", "bytes_rate", "received", "lost", "slowest"):
+                    if field in res:
+                        res[field] = median([r[field] for r in runs[lib]])
+                scale_key = 2**30 if key == "bytes_rate" else 1
+                res["rounds"] = [  # type: ignore[assignment]
+                    round(r[key] / scale_key, 2) if key == "bytes_rate" else round(r[key])
+                    for r in runs[lib]
+                ]
+                merged.append(res)
+            rows.append((title, merged[0], merged[1], key))
+    finally:
+        proc.terminate()
+        proc.wait()
+    print_inproc(inproc_rows, rounds)
+    print_rows(rows, rounds)
 
 
 if __name__ == "__main__":

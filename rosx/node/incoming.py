@@ -4,8 +4,11 @@
 channel (``requestTopic``), connect to the host and port it names, send the subscriber's header
 and check the publisher's. Then ``on_connected`` hands the stream to its subscription's
 `Receiver` thread, which calls `IncomingStream.read` whenever the socket is readable: large
-reads parsed by a `FrameReader`. ``on_close`` is called once, on the loop, when the stream ends.
-The byte and frame counts (``getBusStats``) are written by that one thread only.
+reads parsed by a `FrameReader`. A frame of 64 KiB or more is read by ``recv_into`` straight
+into a buffer of its own once its length is known, and handed over as a ``memoryview`` of it:
+the kernel's copy is then the only one before the decoder's (``bytes`` fields copy once;
+``numpy`` arrays read the buffer in place). ``on_close`` is called once, on the loop, when
+the stream ends. The byte and frame counts (``getBusStats``) are written by that one thread only.
 
 Retries follow rospy: a publisher whose XML-RPC server refuses the connection, or that refuses
 the topic, is given up at once; other failures to reach it (timeouts, unreachable hosts, a
@@ -30,7 +33,7 @@ from rosx.wire.header import Refused, decode_header, encode_header
 from rosx.wire.tcpros import check_publisher_reply
 
 if TYPE_CHECKING:
-    from collections.abc import Awaitable, Callable
+    from collections.abc import Awaitable, Callable, Sequence
 
     from rosx.transport.loop_thread import LoopThread
 
@@ -47,6 +50,8 @@ _CONNECT_TIMEOUT = 30.0
 _RECV_SIZE = 256 * 1024
 # Bytes read from one socket before the callbacks run: enough to drain a backlog.
 _READ_BOUND = 8 * 1024 * 1024
+# A frame at least this large is read straight into a buffer of its own (`_read_large`).
+_DIRECT = 64 * 1024
 _DONTWAIT = getattr(socket, "MSG_DONTWAIT", 0)
 
 
@@ -96,7 +101,7 @@ class IncomingStream:
         self._on_error = on_error
         self.header: dict[str, str] = {}
         self.latching = False
-        self.latched: bytes | None = None
+        self.latched: bytes | memoryview | None = None
         self.sock: socket.socket | None = None
         self.local: tuple[str, int] = ("", 0)
         self.remote: tuple[str, int] = ("", 0)
@@ -217,7 +222,7 @@ class IncomingStream:
 
     # -- the data path (on the receiver's thread) --------------------------------------------
 
-    def read(self) -> list[bytes] | None:
+    def read(self) -> Sequence[bytes | memoryview] | None:
         """Wait for data, read what the socket holds (up to a bound), return complete frames.
 
         The socket is blocking: the first read waits; later ones (after a full buffer) take
@@ -229,6 +234,9 @@ class IncomingStream:
             return None
         scratch = self._scratch
         reader = self._reader
+        pending = reader.pending()
+        if pending >= _DIRECT:
+            return self._read_large(sock, pending)
         total = 0
         flags = 0
         with memoryview(scratch) as view:
@@ -247,11 +255,34 @@ class IncomingStream:
                 reader.feed(view[:size])
                 if size < len(scratch) or not _DONTWAIT or total >= _READ_BOUND:
                     break
+                if reader.pending() >= _DIRECT:
+                    break  # the rest of that frame goes straight into its own buffer
                 flags = _DONTWAIT
         self.bytes_received += total
         return self.take_frames()
 
-    def take_frames(self) -> list[bytes] | None:
+    def _read_large(self, sock: socket.socket, size: int) -> Sequence[bytes | memoryview] | None:
+        buff = bytearray(size)
+        got = head = self._reader.take_pending(buff)
+        with memoryview(buff) as view:
+            while got < size:
+                try:
+                    count = sock.recv_into(view[got:])
+                except InterruptedError:
+                    continue
+                except OSError:
+                    return None
+                if count == 0:
+                    return None
+                got += count
+        self.bytes_received += size - head
+        self.frames_received += 1
+        frame = memoryview(buff)
+        if self.latching:
+            self.latched = frame
+        return [frame]
+
+    def take_frames(self) -> Sequence[bytes | memoryview] | None:
         """The complete frames buffered so far (``None``: the stream is out of sync)."""
         try:
             frames = self._reader.frames()

@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, Any, cast
 from rosx.master.client import MasterClient, reply_value
 from rosx.master.client import master_uri as find_master_uri
 from rosx.names import make_global_ns, ns_join, resolve, resolve_remappings
-from rosx.node import rosout
+from rosx.node import local, rosout
 from rosx.node.errors import NodeShutdownError, ServiceError
 from rosx.node.handles import Publisher, ServiceHandle, Subscriber
 from rosx.node.log_services import RosoutPublisher, advertise_logger_services
@@ -171,6 +171,7 @@ class Node:
         self._xmlrpc = server
         self.uri = server.uri
         self._tcpros.start(self._bind, self._ports[1])
+        local.register(self.uri, self.name, self.publications.get)
 
     def is_shutdown(self) -> bool:
         """Whether the node has been shut down."""
@@ -238,6 +239,7 @@ class Node:
         self.params.unsubscribe_all()
 
     async def _close_all(self) -> None:
+        local.unregister(self.uri)
         self._tcpros.close()
         for pub in list(self.publications.values()):
             pub.close()

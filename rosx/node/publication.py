@@ -6,6 +6,10 @@ publication keeps the last frame and sends it to each new subscriber right after
 (ROS wiki ROS/TCPROS). Messages with a ``std_msgs/Header`` get the publication's sequence
 number in ``header.seq``, as rospy does.
 
+Subscribers of the same process are `rosx.node.local.LocalLink` objects: each gets a copy of
+the message object (never serialized), queued on its subscription's receiver from the
+publishing thread; the frame is built only when a socket subscriber or a latch needs it.
+
 `Publication.accept` runs on the I/O loop when the node's TCPROS server has accepted a
 subscriber's header (`rosx.wire.tcpros.accept_subscriber`); ``publish`` runs on any thread, so
 the sequence number and the byte count (``getBusStats``) change only under the publication's
@@ -20,8 +24,10 @@ import struct
 import threading
 from typing import TYPE_CHECKING
 
+from rosx.msg.codec.clone import clone
 from rosx.node.incoming import connection_ids
 from rosx.node.outgoing import OutgoingStream, configure_nodelay
+from rosx.node.receiver import LocalMessage
 from rosx.wire.header import encode_header
 from rosx.wire.tcpros import Publication as PublicationInfo
 
@@ -29,8 +35,12 @@ if TYPE_CHECKING:
     import socket
 
     from rosx.msg.codec.message import Message
+    from rosx.node.local import LocalLink
     from rosx.transport.loop_thread import LoopThread
     from rosx.wire.tcpros import SubscriberAccepted
+
+#: The transport name ``getBusInfo`` reports for a subscriber of this process (roscpp's).
+INTRAPROCESS = "INTRAPROCESS"
 
 _U32 = struct.Struct("<I")
 _PREFIX = b"\0\0\0\0"
@@ -87,7 +97,11 @@ class Publication:
         self._has_header = has_header
         self._lock = threading.Lock()
         self.links: tuple[SubscriberLink, ...] = ()
+        #: Subscribers in this process (`rosx.node.local`).
+        self.local_links: tuple[LocalLink, ...] = ()
         self.latched: bytes | None = None
+        #: The latched message as published in this process (None: only `latched` holds it).
+        self.latched_local: LocalMessage | None = None
         #: The last ``header.seq`` given (messages with a header only).
         self.seq = 0
         self.bytes_published = 0
@@ -109,15 +123,41 @@ class Publication:
     # -- any thread --------------------------------------------------------------------------
 
     def publish(self, msg: Message) -> None:
-        """Serialize ``msg`` once and queue it for every subscriber."""
+        """Queue ``msg`` for every subscriber: a copy for each one in this process, and one
+        frame, serialized once, for all the others."""
         if self._has_header:
             with self._lock:
                 self.seq += 1
                 msg.header.seq = self.seq
-        self.publish_frame(serialize_frame(msg))
+        if self.local_links and not self.closed:
+            if self.info.latching:
+                # One copy kept as the latch; every callback gets a copy of it. As for frames,
+                # a subscriber attached meanwhile gets either this message or the latch.
+                kept = LocalMessage(clone(msg), kept=True)
+                with self._lock:
+                    self.latched_local = kept
+                    local = self.local_links
+                for link in local:
+                    link.deliver(kept)
+            else:
+                for link in self.local_links:
+                    link.deliver(LocalMessage(clone(msg)))
+            if not self.links and not self.info.latching:
+                return
+        self._send_frame(serialize_frame(msg))
 
     def publish_frame(self, frame: bytes) -> None:
         """Queue an already serialized frame (length prefix included) for every subscriber."""
+        if self.local_links and not self.closed:
+            payload = frame[4:]
+            with self._lock:
+                self.latched_local = None
+                local = self.local_links
+            for link in local:
+                link.deliver(payload)
+        self._send_frame(frame)
+
+    def _send_frame(self, frame: bytes) -> None:
         if self.closed:
             return
         size = len(frame)
@@ -130,8 +170,8 @@ class Publication:
             link.stream.send(frame)
 
     def connection_count(self) -> int:
-        """Subscribers currently connected."""
-        return len(self.links)
+        """Subscribers currently connected (in this process or not)."""
+        return len(self.links) + len(self.local_links)
 
     # -- the loop ----------------------------------------------------------------------------
 
@@ -149,6 +189,20 @@ class Publication:
             self.links = (*self.links, link)
         return link
 
+    def attach_local(self, link: LocalLink) -> None:
+        """Serve a subscriber of this process: the latched message first, then every message."""
+        with self._lock:
+            if self.latched_local is not None:
+                link.deliver(self.latched_local)
+            elif self.latched is not None:
+                link.deliver(self.latched[4:])
+            self.local_links = (*self.local_links, link)
+
+    def detach_local(self, link: LocalLink) -> None:
+        """Stop serving a subscriber of this process."""
+        with self._lock:
+            self.local_links = tuple(other for other in self.local_links if other is not link)
+
     def _closed_stream(self, stream: OutgoingStream) -> None:
         with self._lock:
             self.links = tuple(link for link in self.links if link.stream is not stream)
@@ -158,8 +212,11 @@ class Publication:
         self.closed = True
         with self._lock:
             links, self.links = self.links, ()
+            local = self.local_links
         for link in links:
             link.stream.close()
+        for local_link in local:
+            local_link.close()
 
     # -- statistics --------------------------------------------------------------------------
 
@@ -171,12 +228,22 @@ class Publication:
             [
                 [link.id, link.stream.bytes_sent, link.stream.frames_sent, not link.stream.closed]
                 for link in self.links
+            ]
+            + [
+                [link.publisher_id, link.bytes_received, link.frames_received, not link.closed]
+                for link in self.local_links
             ],
         ]
 
     def bus_info(self) -> list[list[object]]:
-        """``getBusInfo`` rows: ``[connId, destId, 'o', 'TCPROS', topic, connected, info]``."""
-        return [
+        """``getBusInfo`` rows: ``[connId, destId, 'o', transport, topic, connected, info]``
+        (transport ``TCPROS``, or ``INTRAPROCESS`` for a subscriber of this process)."""
+        rows: list[list[object]] = [
             [link.id, link.callerid, "o", "TCPROS", self.topic, True, link.transport_info()]
             for link in self.links
         ]
+        rows += [
+            [link.publisher_id, link.callerid, "o", INTRAPROCESS, self.topic, True, INTRAPROCESS]
+            for link in self.local_links
+        ]
+        return rows

@@ -24,6 +24,11 @@ The contract:
   exceptions go to ``on_error`` (rospy logs ``bad callback``) and reading goes on.
 * A stream that ends (peer closed, error, `Receiver.detach` shutting its socket down) has its
   socket closed by its thread, which then tells the loop (``IncomingStream.close``).
+* Publishers in the same process (`rosx.node.local`) queue `LocalMessage` objects instead of
+  frames, with `Receiver.put_local` on the publishing thread; the subscription's own local
+  thread runs their callbacks. A bounded queue drops the oldest, as for frames; an unbounded
+  one makes a synchronous publisher (``queue_size=None``) wait while more than `LOCAL_HIGH_WATER`
+  messages are queued, as a full socket would.
 """
 
 from __future__ import annotations
@@ -34,18 +39,66 @@ import threading
 from collections import deque
 from typing import TYPE_CHECKING, Any
 
+from rosx.msg.codec.clone import clone
+
 if TYPE_CHECKING:
     from collections.abc import Callable
     from concurrent.futures import Executor
 
     from rosx.node.incoming import IncomingStream
+    from rosx.node.local import LocalLink
     from rosx.transport.loop_thread import LoopThread
 
-    Decode = Callable[[bytes, dict[str, str]], Any]
+    Decode = Callable[[bytes | memoryview, dict[str, str]], Any]
     #: A callback and the decoder of what it receives.
     Entry = tuple[Callable[[Any], object], Decode]
-    #: A frame, the header of its connection, and the only entry to run it for (or None: all).
-    Item = tuple[bytes, dict[str, str], Entry | None]
+    #: A frame (or a message from this process), the header of its connection, and the only
+    #: entry to run it for (or None: all).
+    Item = tuple["bytes | memoryview | LocalMessage", dict[str, str], Entry | None]
+
+#: With an unbounded queue, a synchronous in-process publisher waits while more wait than this.
+LOCAL_HIGH_WATER = 10_000
+
+
+class LocalMessage:
+    """A message published in this process: a private copy taken when it was published.
+
+    Each callback gets a copy of its own (`rosx.msg.codec.clone`), as each would get its own
+    decoded message from a socket: the first callback takes the publish-time copy itself unless
+    it is kept (a latched message), later ones a copy made before any callback runs. A callback
+    whose class is not the message's (a raw ``AnyMsg`` subscriber) gets it serialized.
+    """
+
+    __slots__ = ("kept", "msg")
+
+    def __init__(self, msg: Any, *, kept: bool = False) -> None:
+        self.msg = msg
+        self.kept = kept
+
+    def messages(self, decoders: list[Decode], header: dict[str, str]) -> list[Any]:
+        """What each of ``decoders``' callbacks receives, in order."""
+        msg = self.msg
+        cls = msg.__class__
+        if len(decoders) == 1 and not self.kept and getattr(decoders[0], "msg_class", None) is cls:
+            self.kept = True  # the usual case: one callback takes the copy made at publish
+            msg._connection_header = header
+            return [msg]
+        out: list[Any] = []
+        frame: bytes | None = None
+        for decode in decoders:
+            if getattr(decode, "msg_class", None) is cls:
+                copy = clone(msg) if self.kept or out else msg
+                copy._connection_header = header
+                out.append(copy)
+            else:
+                if frame is None:
+                    from rosx.node.publication import serialize_frame  # noqa: PLC0415
+
+                    frame = serialize_frame(msg)[4:]
+                out.append(decode(frame, header))
+        if not self.kept:
+            self.kept = True  # handed out: a latched replay copies it
+        return out
 
 
 class Receiver:
@@ -69,6 +122,10 @@ class Receiver:
         self.entries: tuple[Entry, ...] = ()
         self._streams: set[IncomingStream] = set()
         self._stopped = False
+        self._local: threading.Thread | None = None
+        self._wake = threading.Condition(threading.Lock())
+        self._sleeping = False
+        self._waiting_publishers = 0
         self._counting = threading.Lock()
         #: Frames queued, and frames whose callbacks have run (how far the callbacks are
         #: behind). Several reader threads queue at once, so `received` grows under a lock of
@@ -88,7 +145,12 @@ class Receiver:
         """Remove a callback (it may still be running)."""
         self.entries = tuple(e for e in self.entries if e is not entry)
 
-    def put(self, frame: bytes, header: dict[str, str], only: Entry | None = None) -> None:
+    def put(
+        self,
+        frame: bytes | memoryview | LocalMessage,
+        header: dict[str, str],
+        only: Entry | None = None,
+    ) -> None:
         """Queue one frame for every callback, or only for ``only`` (a latched message).
 
         A worker thread runs the callbacks, unless a reader thread already is running them.
@@ -99,6 +161,77 @@ class Receiver:
         self._queue.append((frame, header, only))
         with contextlib.suppress(RuntimeError):  # the node has shut its workers down
             self._workers.submit(self._dispatch_all)
+
+    def put_local(
+        self,
+        payload: bytes | LocalMessage,
+        header: dict[str, str],
+        *,
+        publisher_queue: int | None = 0,
+    ) -> None:
+        """Queue a message published in this process (on the publishing thread); the local
+        thread runs its callbacks.
+
+        The subscription's ``queue_size`` bounds the queue (drop-oldest). When it is unbounded,
+        the publisher's ``queue_size`` decides what happens past `LOCAL_HIGH_WATER` messages,
+        as it decides what happens when a socket is full: ``None`` waits, a positive size
+        drops the oldest, ``0`` keeps everything.
+        """
+        if self._stopped:
+            return
+        queue = self._queue
+        if queue.maxlen is None and publisher_queue != 0 and len(queue) >= LOCAL_HIGH_WATER:
+            if publisher_queue is None:
+                self._wait_for_room()
+            else:
+                with contextlib.suppress(IndexError):
+                    queue.popleft()
+        self._count(1)
+        queue.append((payload, header, None))
+        if self._local is None:
+            self._start_local()
+        # The local thread sets `_sleeping` under the lock before its last look at the queue,
+        # so a message appended before that look is seen, and one after it finds the flag set.
+        if self._sleeping:
+            with self._wake:
+                self._wake.notify_all()
+
+    def _wait_for_room(self) -> None:
+        queue = self._queue
+        with self._wake:
+            self._waiting_publishers += 1
+            try:
+                while len(queue) >= LOCAL_HIGH_WATER and not self._stopped:
+                    self._wake.wait(1.0)
+            finally:
+                self._waiting_publishers -= 1
+
+    def _start_local(self) -> None:
+        with self._wake:
+            if self._local is not None:
+                return
+            self._local = threading.Thread(
+                target=self._local_loop, name=f"{self._name}-local", daemon=True
+            )
+            self._local.start()
+
+    def _local_loop(self) -> None:
+        queue = self._queue
+        wake = self._wake
+        while not self._stopped:
+            if queue:
+                self._dispatch_all()
+                if self._waiting_publishers:
+                    with wake:
+                        wake.notify_all()
+                continue
+            with wake:
+                self._sleeping = True
+                try:
+                    if not queue and not self._stopped:
+                        wake.wait()
+                finally:
+                    self._sleeping = False
 
     # -- connections -------------------------------------------------------------------------
 
@@ -114,7 +247,7 @@ class Receiver:
             target=self._read_loop, args=(stream,), name=self._name, daemon=True
         ).start()
 
-    def detach(self, stream: IncomingStream) -> None:
+    def detach(self, stream: IncomingStream | LocalLink) -> None:
         """End a stream's reading: its thread wakes, closes the socket and exits."""
         sock = stream.sock
         if sock is not None:
@@ -127,6 +260,8 @@ class Receiver:
         self._queue.clear()
         for stream in list(self._streams):
             self.detach(stream)
+        with self._wake:
+            self._wake.notify_all()
 
     # -- the threads -------------------------------------------------------------------------
 
@@ -181,13 +316,34 @@ class Receiver:
 
     def _dispatch(self, item: Item) -> None:
         frame, header, only = item
+        entries = (only,) if only is not None else self.entries
+        if isinstance(frame, LocalMessage):
+            self._dispatch_local(frame, header, entries)
+            return
         decoded: dict[Any, Any] = {}
-        for entry in (only,) if only is not None else self.entries:
+        for entry in entries:
             callback, decode = entry
             try:
                 msg = decoded.get(decode)
                 if msg is None:
                     msg = decoded[decode] = decode(frame, header)
+                callback(msg)
+            except Exception as exc:  # a user's callback must not end the thread
+                if self._on_error is not None and not self._stopped:
+                    self._on_error(exc, callback)
+        self.handled += 1
+
+    def _dispatch_local(
+        self, local: LocalMessage, header: dict[str, str], entries: tuple[Entry, ...]
+    ) -> None:
+        try:
+            messages = local.messages([decode for _, decode in entries], header)
+        except Exception as exc:  # a message that cannot be serialized for a raw subscriber
+            if self._on_error is not None and entries and not self._stopped:
+                self._on_error(exc, entries[0][0])
+            messages = []
+        for (callback, _), msg in zip(entries, messages, strict=False):
+            try:
                 callback(msg)
             except Exception as exc:  # a user's callback must not end the thread
                 if self._on_error is not None and not self._stopped:

@@ -11,6 +11,8 @@ The contract (ROS wiki ROS/Slave_API ``publisherUpdate``, ROS/TCPROS):
   drop-oldest queue sized by the first subscriber's ``queue_size``.
 * The last frame of each latching publisher is kept; a callback added later gets it first,
   as rospy's subscribers do.
+* A publisher URI that belongs to a node of this process gets a `rosx.node.local.LocalLink`
+  instead of a stream: no socket, no serialization (see `rosx.node.local`).
 * A typed subscription decodes frames with its message class; a raw one (AnyMsg: type and
   md5sum ``*``) hands over `RawMessage` objects holding the bytes and what the publisher's
   header says about their type.
@@ -20,9 +22,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from rosx.node import local
 from rosx.node.incoming import IncomingStream
+from rosx.node.publication import INTRAPROCESS
 from rosx.node.receiver import Receiver
-from rosx.wire.tcpros import WILDCARD, subscriber_header
+from rosx.wire.tcpros import WILDCARD, publisher_header, subscriber_header
 
 if TYPE_CHECKING:
     from collections.abc import Awaitable, Callable
@@ -72,22 +76,26 @@ class RawMessage:
         return len(self._buff)
 
 
-def _raw(frame: bytes, header: dict[str, str]) -> RawMessage:
-    return RawMessage(frame, header)
+def _raw(frame: bytes | memoryview, header: dict[str, str]) -> RawMessage:
+    return RawMessage(frame if isinstance(frame, bytes) else bytes(frame), header)
 
 
-def message_decoder(cls: type[Message]) -> Callable[[bytes, dict[str, str]], Message]:
+def message_decoder(
+    cls: type[Message],
+) -> Callable[[bytes | memoryview, dict[str, str]], Message]:
     """Decode frames of ``cls``: a fresh instance per frame, ``_connection_header`` set."""
     from rosx.msg.codec.codegen import variant  # noqa: PLC0415 - generated on first use
 
     fresh = variant(cls, "deserialize_fresh")
     new = object.__new__
 
-    def decode(frame: bytes, header: dict[str, str]) -> Message:
+    def decode(frame: bytes | memoryview, header: dict[str, str]) -> Message:
         msg: Message = fresh(new(cls), frame)
         msg._connection_header = header
         return msg
 
+    # What it makes: an in-process message of this class is handed over as a copy instead.
+    setattr(decode, "msg_class", cls)  # noqa: B010 - an attribute on a function
     return decode
 
 
@@ -123,7 +131,7 @@ class Subscription:
             message_definition=msg_class._full_text if msg_class is not None else "",
             tcp_nodelay=tcp_nodelay,
         )
-        self.streams: dict[str, IncomingStream] = {}
+        self.streams: dict[str, IncomingStream | local.LocalLink] = {}
         self.receiver = Receiver(
             io,
             workers,
@@ -138,7 +146,9 @@ class Subscription:
         self.closed = False
 
     @staticmethod
-    def decoder(msg_class: type[Message] | None) -> Callable[[bytes, dict[str, str]], Any]:
+    def decoder(
+        msg_class: type[Message] | None,
+    ) -> Callable[[bytes | memoryview, dict[str, str]], Any]:
         """How frames become what a callback receives: ``msg_class`` messages, or (``None``)
         `RawMessage` objects."""
         return _raw if msg_class is None else message_decoder(msg_class)
@@ -181,7 +191,7 @@ class Subscription:
                 if uri not in wanted:
                     self.streams[uri].close()
         for uri in wanted:
-            if uri not in self.streams:
+            if uri not in self.streams and not self._connect_locally(uri):
                 stream = IncomingStream(
                     io=self.io,
                     topic=self.topic,
@@ -197,7 +207,27 @@ class Subscription:
                 self.streams[uri] = stream
                 stream.start()
 
-    def _on_stream_closed(self, stream: IncomingStream) -> None:
+    def _connect_locally(self, uri: str) -> bool:
+        found = local.publication_at(uri, self.topic)
+        if found is None:
+            return False
+        publication, callerid = found
+        info = publication.info
+        if WILDCARD not in (self.md5sum, info.md5sum) and self.md5sum != info.md5sum:
+            return False  # the TCPROS handshake reports the mismatch, as between processes
+        link = local.LocalLink(
+            publication=publication,
+            receiver=self.receiver,
+            callerid=self._caller_id,
+            publisher_uri=uri,
+            header=publisher_header(info, callerid=callerid),
+            on_close=self._on_stream_closed,
+        )
+        self.streams[uri] = link
+        link.start()
+        return True
+
+    def _on_stream_closed(self, stream: IncomingStream | local.LocalLink) -> None:
         if self.streams.get(stream.publisher_uri) is stream:
             del self.streams[stream.publisher_uri]
 
@@ -225,9 +255,18 @@ class Subscription:
         ]
 
     def bus_info(self) -> list[list[object]]:
-        """``getBusInfo`` rows: ``[connId, publisherUri, 'i', 'TCPROS', topic, True, info]``."""
+        """``getBusInfo`` rows: ``[connId, publisherUri, 'i', transport, topic, True, info]``
+        (transport ``TCPROS``, or ``INTRAPROCESS`` for a publisher of this process)."""
         return [
-            [s.id, s.publisher_uri, "i", "TCPROS", self.topic, True, s.transport_info()]
+            [
+                s.id,
+                s.publisher_uri,
+                "i",
+                INTRAPROCESS if isinstance(s, local.LocalLink) else "TCPROS",
+                self.topic,
+                True,
+                s.transport_info(),
+            ]
             for s in self.streams.values()
             if s.connected
         ]

@@ -108,6 +108,31 @@ class FrameReader:
         with memoryview(buf) as view:
             return view[start:end].tobytes()
 
+    def pending(self) -> int:
+        """The size of the frame whose length prefix is buffered but whose payload is not yet
+        complete; 0 when there is none (or when it is oversized: `frames` raises for it)."""
+        buf = self._buf
+        pos = self._pos
+        if len(buf) - pos < 4:
+            return 0
+        (size,) = _U32.unpack_from(buf, pos)
+        if size > self.max_frame_size or pos + 4 + size <= len(buf):
+            return 0
+        return int(size)
+
+    def take_pending(self, into: bytearray) -> int:
+        """Move what is buffered of the `pending` frame's payload to the start of ``into``
+        (which holds the whole payload); returns how many bytes that was. The reader is then
+        empty: the caller reads the rest of the frame itself, e.g. with ``recv_into``."""
+        with memoryview(self._buf) as view:
+            head = view[self._pos + 4 :]
+            count = len(head)
+            into[:count] = head
+            head.release()
+        self._buf = b""
+        self._pos = 0
+        return count
+
     def frames(self) -> list[bytes]:
         """Return every complete frame buffered so far (possibly none), in order.
 

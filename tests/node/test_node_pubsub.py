@@ -1,5 +1,8 @@
 """Topics between rosx nodes in one process: delivery, latching, queues, raw subscriptions,
-publisher updates, unregistration and the Slave API's view of the connections."""
+publisher updates, unregistration and the Slave API's view of the connections.
+
+Every test runs twice: over the in-process links nodes of one process use by default, and over
+TCPROS (``rosx.node.local.ENABLED`` off), the path between processes."""
 
 from __future__ import annotations
 
@@ -13,7 +16,7 @@ from xmlrpc.server import SimpleXMLRPCServer
 import pytest
 
 from rosx.msg.codec.classes import get_message_class
-from rosx.node import Node, RawMessage
+from rosx.node import Node, RawMessage, local
 from rosx.node.node import WORKERS
 from rosx.transport.client import call
 from tests.support.procs import wait_for
@@ -24,6 +27,13 @@ String = get_message_class("std_msgs/String")
 
 # rosnode's pattern for the connection text of getBusInfo (tools/rosnode).
 CONNECTION_PATTERN = re.compile(r"\w+ connection on port (\d+) to \[(.*) on socket (\d+)\]")
+
+
+@pytest.fixture(autouse=True, params=["INTRAPROCESS", "TCPROS"])
+def transport(request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch) -> str:
+    """The transport nodes of this process use among themselves in the test."""
+    monkeypatch.setattr(local, "ENABLED", request.param == "INTRAPROCESS")
+    return str(request.param)
 
 
 def twist(x: float) -> Any:
@@ -246,7 +256,7 @@ def test_unregister_and_shutdown_leave_the_master(
     assert node.is_shutdown()
 
 
-def test_bus_info_describes_connections(make_node: Callable[..., Node]) -> None:
+def test_bus_info_describes_connections(make_node: Callable[..., Node], transport: str) -> None:
     a, b = make_node("info_pub"), make_node("info_sub")
     sub = b.subscribe("/info", Twist, lambda m: None)
     pub = a.advertise("/info", Twist)
@@ -254,14 +264,20 @@ def test_bus_info_describes_connections(make_node: Callable[..., Node]) -> None:
     code, status, rows = call(a.uri, "getBusInfo", "/test")
     assert (code, status) == (1, "bus info")
     (row,) = [r for r in rows if r[4] == "/info"]
-    assert row[1:6] == ["/info_sub", "o", "TCPROS", "/info", True]
-    assert CONNECTION_PATTERN.match(row[6])
+    assert row[1:6] == ["/info_sub", "o", transport, "/info", True]
+    if transport == "INTRAPROCESS":  # as roscpp reports its intra-process links
+        assert row[6] == "INTRAPROCESS"
+    else:
+        assert CONNECTION_PATTERN.match(row[6])
     code, _, rows = call(b.uri, "getBusInfo", "/test")
     (row,) = [r for r in rows if r[4] == "/info"]
-    assert row[1:6] == [a.uri, "i", "TCPROS", "/info", True]
-    match = CONNECTION_PATTERN.match(row[6])
-    assert match is not None
-    assert match.group(2).endswith(f":{a.tcpros_address()[1]}")
+    assert row[1:6] == [a.uri, "i", transport, "/info", True]
+    if transport == "INTRAPROCESS":
+        assert row[6] == "INTRAPROCESS"
+    else:
+        match = CONNECTION_PATTERN.match(row[6])
+        assert match is not None
+        assert match.group(2).endswith(f":{a.tcpros_address()[1]}")
     code, _, stats = call(a.uri, "getBusStats", "/test")
     assert code == 1
     assert any(entry[0] == "/info" for entry in stats[0])
@@ -340,3 +356,20 @@ def _srv(name: str) -> Any:
     from rosx.msg.codec.classes import get_service_class
 
     return get_service_class(name)
+
+
+def test_large_and_small_messages_arrive_whole_and_in_order(
+    make_node: Callable[..., Node],
+) -> None:
+    a, b = make_node("big_pub"), make_node("big_sub")
+    got: list[Any] = []
+    sub = b.subscribe("/big", String, got.append)
+    pub = a.advertise("/big", String, queue_size=None)
+    wait_for(connected(pub, sub))
+    sizes = [10, 3 << 20, 70_000, 5, 1 << 20, 64 * 1024, 64 * 1024 - 5, 200]
+    texts = [chr(ord("a") + i) * size for i, size in enumerate(sizes)]
+    for text in texts:
+        pub.publish(String(data=text))
+    wait_for(lambda: len(got) == len(texts))
+    assert [m.data for m in got] == texts
+    assert all(type(m.data) is str for m in got)

@@ -68,6 +68,11 @@ def test_up_arrow_drives_turtle1_two_metres_forward(
     host: SimHost, make_node: Callable[[str], Node]
 ) -> None:
     twists = spy(make_node("/twist_spy"), host)
+    # teleop → turtlesim (and the spy, in this process too) without a socket or serializing
+    assert host.cmd_vel is not None
+    publication = host.cmd_vel.publication
+    assert {link.callerid for link in publication.local_links} == {"/turtlesim", "/twist_spy"}
+    assert publication.links == ()
     sent: list[Message] = []
     app = make_sim_app(host)
 

@@ -134,3 +134,20 @@ def test_many_tiny_frames_from_large_reads() -> None:
         reader.feed(stream[pos : pos + 65536])
         got.extend(reader.frames())
     assert got == twists
+
+
+def test_a_pending_large_frame_is_handed_over_for_direct_reading() -> None:
+    reader = FrameReader()
+    payload = bytes(range(256)) * 40
+    data = frame(b"small") + frame(payload)
+    reader.feed(data[:100])
+    assert reader.frames() == [b"small"]
+    assert reader.pending() == len(payload)
+    into = bytearray(len(payload))
+    head = reader.take_pending(into)
+    assert head == 100 - 9 - 4
+    assert into[:head] == payload[:head]
+    assert reader.buffered == 0
+    assert reader.pending() == 0
+    reader.feed(frame(b"next"))
+    assert reader.frames() == [b"next"]
