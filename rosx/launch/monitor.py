@@ -163,8 +163,7 @@ class LocalProcess:
             )
         except OSError as exc:
             self.popen = None
-            self.exit_code = 1
-            self.time_of_death = time.monotonic()
+            self._record_death(1)
             raise FatalLaunchError(_launch_failure(self.name, argv, exc)) from None
         finally:
             if stdout is not None:
@@ -178,10 +177,14 @@ class LocalProcess:
         code = self.popen.poll()
         if code is None:
             return True
+        self._record_death(code)
+        return False
+
+    def _record_death(self, code: int | None) -> None:
+        """Note the exit ``code`` (None: unknown) and the time of death, once a death."""
         if self.time_of_death is None:
             self.exit_code = code
             self.time_of_death = time.monotonic()
-        return False
 
     def running(self) -> bool:
         """Whether the process has been started and has not ended (records nothing)."""
