@@ -24,6 +24,7 @@ import pytest
 from rosx.workspace.environment import ROS_ETC_DIR, ROS_ROOT, SHARE
 from rosx_commands.main import TOOLS
 from tests.support.cli import clean_environ
+from tests.support.launchfiles import TURTLEMIMIC
 from tests.support.procs import free_port, port_open, stop, wait_for
 from tests.support.ros1 import ROS1
 
@@ -119,25 +120,6 @@ if __name__ == "__main__":
         sys.exit(1)
     print("Requesting %s+%s"%(x, y))
     print("%s + %s = %s"%(x, y, add_two_ints_client(x, y)))
-"""
-
-TURTLEMIMIC = """\
-<launch>
-
-  <group ns="turtlesim1">
-    <node pkg="turtlesim" name="sim" type="turtlesim_node"/>
-  </group>
-
-  <group ns="turtlesim2">
-    <node pkg="turtlesim" name="sim" type="turtlesim_node"/>
-  </group>
-
-  <node pkg="turtlesim" name="mimic" type="mimic">
-    <remap from="input" to="turtlesim1/turtle1"/>
-    <remap from="output" to="turtlesim2/turtle1"/>
-  </node>
-
-</launch>
 """
 
 

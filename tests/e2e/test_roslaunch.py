@@ -32,29 +32,11 @@ from rosx.packages.index import bundled_packages
 from rosx.transport.client import call as xmlrpc_call
 from rosx.workspace.environment import ROS_ETC_DIR
 from tests.support.cli import clean_environ, rosx
+from tests.support.launchfiles import TURTLEMIMIC
 from tests.support.procs import free_port, port_open, running, stop, wait_for
 from tests.support.ros1 import OVERLAY, needs_ros1, run_ros1
 
 START_X = 5.544444561004639
-
-TURTLEMIMIC = """\
-<launch>
-
-  <group ns="turtlesim1">
-    <node pkg="turtlesim" name="sim" type="turtlesim_node"/>
-  </group>
-
-  <group ns="turtlesim2">
-    <node pkg="turtlesim" name="sim" type="turtlesim_node"/>
-  </group>
-
-  <node pkg="turtlesim" name="mimic" type="mimic">
-    <remap from="input" to="turtlesim1/turtle1"/>
-    <remap from="output" to="turtlesim2/turtle1"/>
-  </node>
-
-</launch>
-"""
 
 #: A node that says it is up, then exits with ``~code`` (after ``~delay`` seconds).
 QUITTER = """\
