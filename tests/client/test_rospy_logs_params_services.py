@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 import re
 from collections.abc import Callable
 from types import ModuleType
@@ -105,6 +106,28 @@ def test_parameters(rospy: ModuleType) -> None:
     rospy.delete_param("~gain")
     with pytest.raises(KeyError):
         rospy.delete_param("~gain")
+
+
+def test_parameters_as_another_caller(rospy: ModuleType) -> None:
+    rospy.init_node("asker", disable_signals=True)
+    names = importlib.import_module(f"{rospy.__name__}.names")  # rospy.names
+    rospy.set_param("/depth", 0)
+    names._set_caller_id("/deep/er/visitor")
+    try:
+        assert rospy.get_name() == "/deep/er/visitor"
+        assert rospy.get_namespace() == "/deep/er/"
+        assert rospy.search_param("depth") == "/depth"
+        rospy.set_param("/deep/depth", 1)
+        assert rospy.search_param("depth") == "/deep/depth"
+        rospy.set_param("~depth", 2)  # private to the caller, found before the rest
+        assert rospy.get_param("/deep/er/visitor/depth") == 2
+        assert rospy.search_param("depth") == "/deep/er/visitor/depth"
+        assert rospy.resolve_name("depth") == "/deep/er/depth"
+    finally:
+        names._set_caller_id("/asker")
+    assert rospy.get_name() == "/asker"
+    assert rospy.search_param("depth") == "/depth"
+    assert rospy.resolve_name("~depth") == "/asker/depth"
 
 
 def test_services_answer_proxies(rospy: ModuleType) -> None:
