@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import importlib
+import io
+import logging
 import re
 from collections.abc import Callable
 from types import ModuleType
@@ -10,6 +12,7 @@ from typing import Any
 
 import pytest
 
+from rosx.client.roslogging import RosStreamHandler
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node
 from tests.support.procs import wait_for
@@ -53,6 +56,30 @@ def test_once_and_throttle_log_from_each_call_site_once(
         "throttled",
         "same",
         "once",
+    ]
+
+
+def test_ros_stream_handler_writes_rospys_console_lines() -> None:
+    out, err = io.StringIO(), io.StringIO()
+    logger = logging.getLogger("rosx-test-stream")
+    logger.propagate = False
+    logger.setLevel(logging.DEBUG)
+    handler = RosStreamHandler(colorize=False, stdout=out, stderr=err)
+    logger.addHandler(handler)
+    try:
+        logger.info("fine %d", 1)
+        logger.warning("careful")
+        logger.error("broken")
+        logger.critical("gone")
+    finally:
+        logger.removeHandler(handler)
+    outs = [LINE.match(line) for line in out.getvalue().splitlines()]
+    errs = [LINE.match(line) for line in err.getvalue().splitlines()]
+    assert [m.groups() if m else None for m in outs] == [("INFO", "fine 1")]
+    assert [m.groups() if m else None for m in errs] == [
+        ("WARN", "careful"),
+        ("ERROR", "broken"),
+        ("FATAL", "gone"),
     ]
 
 
