@@ -17,10 +17,13 @@ import os
 import tempfile
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rosx_commands.cli import ToolParser, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
+
+if TYPE_CHECKING:
+    from rosx.packages.index import PackageIndex
 
 USAGE = (
     "usage: %prog [options] [package] <filename> [arg_name:=value...]\n"
@@ -281,13 +284,12 @@ def _print_option(
     cli_args: dict[str, str],
     argv: list[str],
     env: Environment,
+    index: PackageIndex,
 ) -> int:
     """The printing options: load the files as roslaunch loads them for it, and print."""
     from rosx.launch import errors, loader, printing  # noqa: PLC0415
     from rosx.launch.runner import provided_program  # noqa: PLC0415
-    from rosx.packages.index import PackageIndex  # noqa: PLC0415
 
-    index = PackageIndex.from_environ(env.environ)
     try:
         plan = loader.load_launch(
             files,
@@ -350,16 +352,15 @@ def _launch(
     argv: list[str],
     env: Environment,
     port: int | None,
+    index: PackageIndex,
 ) -> int:
     from rosx.launch.console import LaunchConsole  # noqa: PLC0415
     from rosx.launch.errors import LaunchError  # noqa: PLC0415
     from rosx.launch.loader import load_launch  # noqa: PLC0415
     from rosx.launch.runner import LaunchFailedError, LaunchRun, LaunchSettings  # noqa: PLC0415
-    from rosx.packages.index import PackageIndex  # noqa: PLC0415
     from rosx_commands.invocation import script_command  # noqa: PLC0415
     from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
 
-    index = PackageIndex.from_environ(env.environ)
     try:
         plan = load_launch(files, cli_args, env.environ, index, argv=argv)
     except LaunchError as error:
@@ -406,10 +407,15 @@ def _roslaunch(argv: list[str], env: Environment) -> int:
 
     from rosx.launch.errors import LaunchError  # noqa: PLC0415
     from rosx.launch.loader import resolve_launch_arguments  # noqa: PLC0415
+    from rosx.msg.store import share_package_index  # noqa: PLC0415
     from rosx.packages.index import PackageIndex  # noqa: PLC0415
 
+    # One crawl of the package path for the whole launch: the files, the nodes' programs, and
+    # the types of the core it may start.
+    index = PackageIndex.from_environ(env.environ)
+    share_package_index(index)
     try:
-        files, cli_args = resolve_launch_arguments(args, PackageIndex.from_environ(env.environ))
+        files, cli_args = resolve_launch_arguments(args, index)
     except LaunchError as error:
         raise _rlexception(str(error)) from None
     _validate(parser, opts, files)
@@ -423,7 +429,7 @@ def _roslaunch(argv: list[str], env: Environment) -> int:
     if any(opts[name] for name in printing):
         if opts["node_args"] and not files:
             parser.error("please specify a launch file")
-        return _print_option(opts, files, cli_args, args, env)
+        return _print_option(opts, files, cli_args, args, env, index)
     if opts["wait_for_master"] and opts["core"]:
         parser.error("--wait cannot be used with roscore")
     pid_file = _write_pid(opts, env, port)
@@ -432,7 +438,7 @@ def _roslaunch(argv: list[str], env: Environment) -> int:
         if opts["core"]:
             return _run_core(env, port)
         files = _stdin_file(env, files, temporary)
-        return _launch(opts, files, cli_args, args, env, port)
+        return _launch(opts, files, cli_args, args, env, port, index)
     finally:
         for path in [*temporary, *([pid_file] if pid_file else [])]:
             path.unlink(missing_ok=True)

@@ -23,6 +23,10 @@ ParamValue = Any
 MasterAuto = Literal["no", "start", "restart"]
 
 
+#: The `Source` file of what roscore's part of a launch adds (its parameters).
+CORE_SOURCE = "roscore.xml"
+
+
 @dataclass(frozen=True)
 class Source:
     """Where a tag is: its launch file (absolute path) and 1-based line (0 if unknown)."""
@@ -204,6 +208,7 @@ class LaunchPlan:
 
 
 __all__ = [
+    "CORE_SOURCE",
     "LaunchPlan",
     "Machine",
     "MasterAuto",

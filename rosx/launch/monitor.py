@@ -38,6 +38,7 @@ import select
 import signal
 import socket
 import subprocess
+import sys
 import time
 from typing import TYPE_CHECKING
 
@@ -52,7 +53,11 @@ if TYPE_CHECKING:
 DEFAULT_SIGINT_TIMEOUT = 15.0
 DEFAULT_SIGTERM_TIMEOUT = 2.0
 
-_STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+_STOP_SIGNALS = tuple(
+    getattr(signal, name) for name in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, name)
+)
+#: What ends a process that ignored SIGTERM (Windows has no SIGKILL; its SIGTERM cannot be caught).
+_KILL = signal.SIGTERM if sys.platform == "win32" else signal.SIGKILL
 #: Longest sleep between two looks at the processes when no signal wakes the monitor.
 _IDLE = 0.5
 
@@ -158,8 +163,7 @@ class LocalProcess:
             )
         except OSError as exc:
             self.popen = None
-            self.exit_code = 1
-            self.time_of_death = time.monotonic()
+            self._record_death(1)
             raise FatalLaunchError(_launch_failure(self.name, argv, exc)) from None
         finally:
             if stdout is not None:
@@ -173,10 +177,14 @@ class LocalProcess:
         code = self.popen.poll()
         if code is None:
             return True
+        self._record_death(code)
+        return False
+
+    def _record_death(self, code: int | None) -> None:
+        """Note the exit ``code`` (None: unknown) and the time of death, once a death."""
         if self.time_of_death is None:
             self.exit_code = code
             self.time_of_death = time.monotonic()
-        return False
 
     def running(self) -> bool:
         """Whether the process has been started and has not ended (records nothing)."""
@@ -212,7 +220,7 @@ class LocalProcess:
         if self.popen is None:
             return
         self.popen.poll()
-        if self.popen.returncode is not None:
+        if self.popen.returncode is not None and hasattr(os, "killpg"):
             with contextlib.suppress(ProcessLookupError, PermissionError):
                 os.killpg(self.popen.pid, signal.SIGKILL)  # children that outlived the node
 
@@ -429,7 +437,7 @@ class ProcessMonitor:
                 f"process[{process.name}, pid {process.pid}]: required SIGKILL. "
                 "May still be running."
             )
-            process.signal(signal.SIGKILL)
+            process.signal(_KILL)
         self._wait(running, self.sigterm_timeout)
         for process in remaining:
             process.reap()

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 from rosx.launch import substitution
 from rosx.launch.context import LoadContext
 from rosx.launch.errors import LaunchError
-from rosx.launch.model import LaunchPlan, Machine, Param, Source
+from rosx.launch.model import CORE_SOURCE, LaunchPlan, Machine, Param, Source
 from rosx.launch.tags import ATTRS
 from rosx.launch.tags.machine import add_machine, machine_tag
 from rosx.launch.tags.node import node_tag
@@ -140,7 +140,7 @@ class Reader:
     # -- files ----------------------------------------------------------------------------
 
     def add_core(self, params: Mapping[str, Any]) -> None:
-        source = Source("roscore.xml")
+        source = Source(CORE_SOURCE)
         for name, value in params.items():
             self.plan.params[name] = Param(name, value, source)
         self.node_names.append("/rosout")

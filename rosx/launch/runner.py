@@ -25,6 +25,18 @@ which ``--args`` prints), except that a Python script runs with rosx's Python an
 
 Errors that stop a launch before it starts anything are `LaunchFailedError`; ``str()`` is the text
 after ``RLException: ``.
+
+``-v`` prints what ROS 1's prints while it reads the files: roscore.xml first (``... loading XML
+file``, ``... executing command param [rosversion roslaunch]``, ``Added parameter``, ``Added core
+node of type [rosout/rosout]``), then each file's parameters and nodes. What still differs from
+Debian's ``roslaunch -v`` (compared on one file, a master started by each): roscore.xml is
+rosx's own (``ROS_ETC_DIR``, else the one rosx ships, where Debian reads ``/etc/ros``) and its
+``rosversion`` commands are not run (rosx's core sets the values itself: ``noetic``,
+``1.16.0``, where Debian's packaging says ``Debian``, ``1.15.15``); the lines are rebuilt from
+the loaded plan, so a parameter a file sets twice is listed once, where the file has it; URIs
+name ``localhost`` unless ``ROS_HOSTNAME``/``ROS_IP`` say otherwise (ROS 1: the host name);
+bold text and terminal titles are written only to a terminal (ROS 1 writes their escapes to
+pipes and files too).
 """
 
 from __future__ import annotations
@@ -32,10 +44,12 @@ from __future__ import annotations
 import contextlib
 import os
 import shlex
+import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rosx.launch.errors import LaunchError
+from rosx.launch.model import CORE_SOURCE
 from rosx.launch.monitor import (
     DEFAULT_SIGINT_TIMEOUT,
     DEFAULT_SIGTERM_TIMEOUT,
@@ -60,6 +74,8 @@ DEFAULT_MASTER_URI = "http://localhost:11311"
 #: The environment variable every launched node gets (see the module docstring).
 HEADLESS = "ROSX_HEADLESS"
 _CALLER = "/roslaunch"
+#: The commands of roscore.xml's ``<param command=…>`` tags, by parameter.
+_CORE_COMMANDS = {"/rosversion": "rosversion roslaunch", "/rosdistro": "rosversion -d"}
 _CONNECT_TIMEOUT = 2.0
 
 
@@ -195,8 +211,8 @@ class LaunchRun:
         self._counter = 0
         self._master = MasterClient(self.uri, _CALLER, timeout=_CONNECT_TIMEOUT)
         #: Python nodes are forks of a process that has loaded rosx's rospy (see
-        #: `rosx.launch.zygote`); False starts each as a new Python process.
-        self.fork_python_nodes = True
+        #: `rosx.launch.zygote`); False starts each as a new Python process (Windows cannot fork).
+        self.fork_python_nodes = sys.platform != "win32"
         self.zygote: ZygoteClient | None = None
 
     # -- the run ---------------------------------------------------------------------------
@@ -219,8 +235,9 @@ class LaunchRun:
 
             # Started first, so that it loads Python's side of the nodes while the launcher
             # starts the core.
+            environ = self._script_environ(self.environ)
             self.zygote = ZygoteClient(
-                self._script_environ(self.environ), on_exit=self.monitor.wake
+                environ, on_exit=self.monitor.wake, crawled=self._crawled(environ)
             )
         with self.monitor.signals():
             try:
@@ -231,6 +248,16 @@ class LaunchRun:
                 self._master.close()
                 self.monitor.close()
                 self.console.close()
+
+    def _crawled(self, environ: Mapping[str, str]) -> dict[str, Path] | None:
+        """The package index's crawl, when it is of ``environ``'s package path (the nodes
+        need it anyway, so it is done here once for the launcher and the helper)."""
+        from rosx.packages.crawl import split_package_path  # noqa: PLC0415
+
+        package_path = split_package_path(environ.get("ROS_PACKAGE_PATH"))
+        if self.package_index.package_path != package_path:
+            return None
+        return self.package_index.path_packages
 
     def _run(self) -> int:
         from rosx.launch.printing import summary_text  # noqa: PLC0415
@@ -391,6 +418,7 @@ class LaunchRun:
     def _print_loading(self) -> None:
         """``-v``: what roslaunch says as it reads each file (rebuilt from the plan: each
         file's parameters and nodes in the order of their tags, a node after its own)."""
+        self._print_core_loading()
         for file in dict.fromkeys(self.plan.files):
             self.console.plain(f"... loading XML file [{file}]")
             params = [p for p in self.plan.params.values() if p.source.file == file]
@@ -402,6 +430,23 @@ class LaunchRun:
                 tags.append((max([node.source.line, *own]) + 0.5, text))
             for _, text in sorted(tags, key=lambda tag: tag[0]):
                 self.console.plain(text)
+
+    def _print_core_loading(self) -> None:
+        """``-v``: roslaunch reads roscore.xml first (from ``ROS_ETC_DIR``, rosx's own by
+        default); rosx's core sets the same parameters without running ``rosversion``."""
+        core = [p for p in self.plan.params.values() if p.source.file == CORE_SOURCE]
+        if not core:
+            return
+        from rosx.workspace.environment import ROS_ETC_DIR  # noqa: PLC0415
+
+        etc = self.environ.get("ROS_ETC_DIR") or str(ROS_ETC_DIR)
+        self.console.plain(f"... loading XML file [{Path(etc, 'roscore.xml')}]")
+        for param in core:
+            command = _CORE_COMMANDS.get(param.name)
+            if command:
+                self.console.plain(f"... executing command param [{command}]")
+            self.console.plain(f"Added parameter [{param.name}]")
+        self.console.plain("Added core node of type [rosout/rosout] in namespace [/]")
 
     # -- the master ------------------------------------------------------------------------
 

@@ -12,6 +12,9 @@ paid once.
 The helper is single-threaded (nothing it imports starts a thread), so forking it is safe. It
 talks with the launcher over a socket (`ZygoteClient`), one JSON document a line:
 
+* the launcher first says ``{"packages": {NAME: DIR, …} or null}``: its crawl of the package
+  path (the helper's too), which the helper's type store then uses instead of crawling it
+  again (hundreds of milliseconds on Debian's ``/usr/share``); the helper loads after that;
 * the launcher asks ``{"id": N, "script": PATH, "args": [...], "env": {...}, "cwd": DIR,
   "stdout": FILE or null, "append": BOOL}``; the helper answers ``{"id": N, "pid": PID}`` (or
   ``{"id": N, "error": TEXT}``);
@@ -34,20 +37,32 @@ import signal
 import socket
 import sys
 import threading
-import time
 from typing import TYPE_CHECKING, Any
 
 from rosx.launch.monitor import LocalProcess
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping, Sequence
+    from pathlib import Path
 
 #: Variables that decide what the helper has loaded: a node must have the helper's values.
 LOADED_FROM = ("ROS_PACKAGE_PATH", "PYTHONPATH")
 
 
-def _preload() -> None:
-    """Import what a rospy node imports, and the types every node uses."""
+def _preload(crawled: Mapping[str, str] | None) -> None:
+    """Import what a rospy node imports, and the types every node uses; ``crawled`` is the
+    launcher's crawl of the package path (the helper's own), which it then need not redo."""
+    if crawled is not None:
+        from pathlib import Path  # noqa: PLC0415
+
+        from rosx.msg.store import share_package_index  # noqa: PLC0415
+        from rosx.packages.crawl import split_package_path  # noqa: PLC0415
+        from rosx.packages.index import PackageIndex  # noqa: PLC0415
+
+        package_path = split_package_path(os.environ.get("ROS_PACKAGE_PATH"))
+        found = {name: Path(directory) for name, directory in crawled.items()}
+        share_package_index(PackageIndex(package_path, crawled=found))
+
     from rosx.client.script import prepare_imports  # noqa: PLC0415
 
     prepare_imports()
@@ -103,28 +118,19 @@ def serve(fd: int) -> int:
     """The helper's loop on the control socket ``fd``; returns when the launcher is gone."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     control = socket.socket(fileno=fd)
-    _preload()
+    lines = _Lines(control)
+    first = lines.next()
+    if first is None:
+        return 0
+    _preload(first.get("packages"))
     wake_read, wake_write = socket.socketpair()
     wake_write.setblocking(False)
     signal.set_wakeup_fd(wake_write.fileno(), warn_on_full_buffer=False)
-    signal.signal(signal.SIGCHLD, lambda *_: None)
+    if sys.platform != "win32":  # the helper forks: POSIX only
+        signal.signal(signal.SIGCHLD, lambda *_: None)
     _send(control, {"ready": os.getpid()})
-    buffer = b""
     while True:
-        ready, _, _ = select.select([control, wake_read], [], [])
-        if wake_read in ready:
-            with contextlib.suppress(BlockingIOError):
-                wake_read.recv(4096)
-            _reap(control)
-        if control not in ready:
-            continue
-        data = control.recv(1 << 16)
-        if not data:
-            return 0
-        buffer += data
-        while b"\n" in buffer:
-            line, buffer = buffer.split(b"\n", 1)
-            request = json.loads(line)
+        for request in lines.buffered():
             try:
                 pid = os.fork()
             except OSError as error:
@@ -133,6 +139,40 @@ def serve(fd: int) -> int:
             if pid == 0:
                 _child(request, (control, wake_read, wake_write))
             _send(control, {"id": request["id"], "pid": pid})
+        ready, _, _ = select.select([control, wake_read], [], [])
+        if wake_read in ready:
+            with contextlib.suppress(BlockingIOError):
+                wake_read.recv(4096)
+            _reap(control)
+        if control in ready and not lines.receive():
+            return 0
+
+
+class _Lines:
+    """The launcher's messages, one JSON document a line."""
+
+    def __init__(self, control: socket.socket) -> None:
+        self.control = control
+        self.buffer = b""
+
+    def receive(self) -> bool:
+        """Read what has come; False when the launcher has gone."""
+        data = self.control.recv(1 << 16)
+        self.buffer += data
+        return bool(data)
+
+    def buffered(self) -> list[dict[str, Any]]:
+        """The complete messages read so far (taken)."""
+        *lines, self.buffer = self.buffer.split(b"\n")
+        return [json.loads(line) for line in lines]
+
+    def next(self) -> dict[str, Any] | None:
+        """The next message, waiting for it; None when the launcher has gone first."""
+        while b"\n" not in self.buffer:
+            if not self.receive():
+                return None
+        line, self.buffer = self.buffer.split(b"\n", 1)
+        return dict(json.loads(line))
 
 
 def _reap(control: socket.socket) -> None:
@@ -155,10 +195,17 @@ class ZygoteError(Exception):
 class ZygoteClient:
     """The launcher's side: start the helper, ask it for nodes, learn how they end.
 
-    ``on_exit()`` is called (from a reader thread) after a node's exit is recorded.
+    ``on_exit()`` is called (from a reader thread) after a node's exit is recorded;
+    ``crawled`` is the launcher's crawl of the package path of ``environ`` (None: the helper
+    crawls it).
     """
 
-    def __init__(self, environ: Mapping[str, str], on_exit: Callable[[], object]) -> None:
+    def __init__(
+        self,
+        environ: Mapping[str, str],
+        on_exit: Callable[[], object],
+        crawled: Mapping[str, Path] | None = None,
+    ) -> None:
         import subprocess  # noqa: PLC0415
 
         self.environ = dict(environ)
@@ -172,6 +219,9 @@ class ZygoteClient:
             start_new_session=True,
         )
         theirs.close()
+        hello = {"packages": None if crawled is None else {k: str(v) for k, v in crawled.items()}}
+        with contextlib.suppress(OSError):  # a helper gone at once is seen by the reader
+            ours.sendall((json.dumps(hello) + "\n").encode())
         self._lock = threading.Lock()
         self._replies: dict[int, dict[str, Any]] = {}
         self._answered = threading.Condition(self._lock)
@@ -345,9 +395,7 @@ class ForkedProcess(LocalProcess):
         ended, code = self._ended()
         if not ended:
             return True
-        if self.time_of_death is None:
-            self.exit_code = code
-            self.time_of_death = time.monotonic()
+        self._record_death(code)
         return False
 
     def running(self) -> bool:
@@ -371,7 +419,7 @@ class ForkedProcess(LocalProcess):
         if not self.forked:
             super().reap()
             return
-        if self._ended()[0]:
+        if self._ended()[0] and hasattr(os, "killpg"):
             with contextlib.suppress(ProcessLookupError, PermissionError):
                 os.killpg(self.pid, signal.SIGKILL)  # children that outlived the node
 

@@ -46,8 +46,11 @@ class UnknownTypeError(LookupError):
 class TypeStore:
     """Message and service specs by ``pkg/Type`` name, with their md5 sums and full texts."""
 
-    def __init__(self, package_path: list[Path] | None = None) -> None:
-        self._index = PackageIndex(package_path or [])
+    def __init__(
+        self, package_path: list[Path] | None = None, *, index: PackageIndex | None = None
+    ) -> None:
+        """A store over ``package_path``, or over ``index`` (whose crawl it then shares)."""
+        self._index = PackageIndex(package_path or []) if index is None else index
         self._msgs: dict[str, MsgSpec] = {}
         self._srvs: dict[str, SrvSpec] = {}
         self._md5: dict[str, str] = {}
@@ -102,7 +105,7 @@ class TypeStore:
         if spec is not None:
             return spec
         text = self._msg_text(full_name)
-        spec = parse_msg(full_name, text) if text is not None else self._service_half(full_name)
+        spec = parse_msg(full_name, text) if text is not None else self._msg_without_file(full_name)
         self._msgs[full_name] = spec
         return spec
 
@@ -131,10 +134,10 @@ class TypeStore:
         return True
 
     def _msg_text(self, full_name: str) -> str | None:
+        """The text of ``full_name``'s ``.msg`` file, if one defines it."""
         if not is_valid_type_name(full_name):
             return None
-        text = self._file_text(full_name, "msg")
-        return standard_text(full_name) if text is None else text
+        return self._file_text(full_name, "msg")
 
     def _file_text(self, full_name: str, kind: str) -> str | None:
         package, _, short = full_name.partition("/")
@@ -147,7 +150,10 @@ class TypeStore:
                 return None
         return None
 
-    def _service_half(self, full_name: str) -> MsgSpec:
+    def _msg_without_file(self, full_name: str) -> MsgSpec:
+        """A half of a service, else a standard type (no standard name ends with ``Request``
+        or ``Response``, so the order changes no answer; it spares every node's logger
+        services the standard types' loading)."""
         for suffix in ("Request", "Response"):
             if full_name.endswith(suffix) and len(full_name) > len(suffix):
                 try:
@@ -155,6 +161,9 @@ class TypeStore:
                 except UnknownTypeError:
                     break
                 return service.request if suffix == "Request" else service.response
+        text = standard_text(full_name) if is_valid_type_name(full_name) else None
+        if text is not None:
+            return parse_msg(full_name, text)
         package = full_name.partition("/")[0]
         raise UnknownTypeError(full_name, "message", self._has_package(package))
 
@@ -219,4 +228,21 @@ def default_store() -> TypeStore:
     return _default
 
 
-__all__ = ["InvalidMsgSpecError", "TypeStore", "UnknownTypeError", "default_store"]
+def share_package_index(index: PackageIndex) -> None:
+    """Let the process-wide store find packages through ``index`` (one crawl of the package path
+    a process, not one for the program and one for its types): done when the store is not built
+    yet and ``index`` covers the package path it would cover; nothing otherwise."""
+    global _default  # noqa: PLW0603 - see default_store
+    if _default is None and index.package_path == split_package_path(
+        os.environ.get("ROS_PACKAGE_PATH")
+    ):
+        _default = TypeStore(index=index)
+
+
+__all__ = [
+    "InvalidMsgSpecError",
+    "TypeStore",
+    "UnknownTypeError",
+    "default_store",
+    "share_package_index",
+]

@@ -39,7 +39,7 @@ from rosx.node.subscription import RawMessage, Subscription
 from rosx.node.tcpros_server import TcprosServer
 from rosx.node.watchdog import master_watch
 from rosx.transport.aclient import AsyncXmlRpcClient
-from rosx.transport.address import advertised_host, bind_host
+from rosx.transport.address import advertised_host, bind_host, foreign_address_warning
 from rosx.transport.client import XmlRpcClient
 from rosx.transport.loop_thread import process_loop
 from rosx.transport.server import XmlRpcServer
@@ -98,6 +98,7 @@ class Node:
         self.remappings = resolve_remappings(
             remappings or {}, self.namespace, self.name, strict=False
         )
+        self._host_remap = host
         self.host = advertised_host(env, host)
         self._bind = bind_host(env, host)
         self._ports = (xmlrpc_port, tcpros_port)
@@ -145,6 +146,9 @@ class Node:
         return self
 
     def _start(self) -> None:
+        warning = foreign_address_warning(self.environ, self._host_remap)
+        if warning is not None:
+            self.log_sink.log(rosout.WARN, warning)
         if self.private_params:
             set_private_params(
                 self.master,

@@ -48,28 +48,30 @@ def find_packages(roots: list[Path]) -> dict[str, Path]:
     """Map each package name found under ``roots`` to its directory."""
     found: dict[str, Path] = {}
     for root in roots:
-        _crawl(root, found)
+        _crawl(str(root), found)
     return found
 
 
-def _crawl(directory: Path, found: dict[str, Path]) -> None:
-    manifest = directory / "package.xml"
-    if manifest.is_file():
-        name = package_name(manifest)
-        if name and name not in found:
-            found[name] = directory
-        return
+def _crawl(directory: str, found: dict[str, Path]) -> None:
+    # Strings and one scandir a directory, no Path objects: a package path such as Debian's
+    # /usr/share holds thousands of directories, and every launch and node start crawls it.
     try:
-        entries = sorted(os.scandir(directory), key=lambda e: e.name)
+        with os.scandir(directory) as listing:
+            entries = {entry.name: entry for entry in listing}
     except OSError:
         return
-    names = {e.name for e in entries}
-    if "CATKIN_IGNORE" in names or "rospack_nosubdirs" in names:
+    manifest = entries.get("package.xml")
+    if manifest is not None and manifest.is_file():
+        name = package_name(Path(manifest.path))
+        if name and name not in found:
+            found[name] = Path(directory)
         return
-    for entry in entries:
-        if entry.name.startswith(".") or not entry.is_dir():
-            continue
-        _crawl(Path(entry.path), found)
+    if "CATKIN_IGNORE" in entries or "rospack_nosubdirs" in entries:
+        return
+    for name in sorted(entries):
+        entry = entries[name]
+        if not name.startswith(".") and entry.is_dir():
+            _crawl(entry.path, found)
 
 
 @cache

@@ -41,7 +41,11 @@ class PackageIndex:
     """The packages visible from one package path."""
 
     def __init__(
-        self, package_path: list[Path], provides: Callable[[str], bool] | None = None
+        self,
+        package_path: list[Path],
+        provides: Callable[[str], bool] | None = None,
+        *,
+        crawled: Mapping[str, Path] | None = None,
     ) -> None:
         """Index the packages on ``package_path``.
 
@@ -49,10 +53,14 @@ class PackageIndex:
             package_path: the entries of ``ROS_PACKAGE_PATH``, searched in order.
             provides: tells whether a package without a directory is provided anyway (by the
                 message layer's standard types); none by default.
+            crawled: what a crawl of ``package_path`` just found (`path_packages`), when another
+                process has done it for this one; crawled on first use otherwise.
         """
         self.package_path = package_path
         self._provides = provides
         self._manifests: dict[str, Manifest] = {}
+        if crawled is not None:
+            self.__dict__["path_packages"] = dict(crawled)  # the cached_property's value
 
     @classmethod
     def from_environ(

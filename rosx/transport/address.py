@@ -139,3 +139,35 @@ def is_local_host(host: str) -> bool:
     except OSError:
         return False
     return bool(addresses & own)
+
+
+def foreign_address_warning(environ: Mapping[str, str], remap: str | None = None) -> str | None:
+    """A warning when the address this process would advertise is not one of this machine's.
+
+    ROS 1 advertises such an address without a word, and peers then fail to connect with
+    nothing to say why. Only a literal IPv4 or IPv6 address is checked (by binding a socket to
+    it: no traffic, no name look-up); a host name is left to the resolver.
+    """
+    import ipaddress  # noqa: PLC0415 -- the other helpers are string work; keep them import-cheap
+    import socket  # noqa: PLC0415
+
+    override = address_override(environ, remap)
+    if override is None:
+        return None
+    try:
+        address = ipaddress.ip_address(override.strip("[]"))
+    except ValueError:
+        return None
+    family = socket.AF_INET6 if address.version == 6 else socket.AF_INET
+    try:
+        with socket.socket(family, socket.SOCK_STREAM) as probe:
+            probe.bind((str(address), 0))
+    except OSError:
+        source = (
+            "__ip/__hostname" if remap else (ROS_HOSTNAME if environ.get(ROS_HOSTNAME) else ROS_IP)
+        )
+        return (
+            f"{source} is {override}, which is not an address of this machine: other nodes "
+            f"cannot connect to this one (set {source} to one of this machine's addresses)"
+        )
+    return None

@@ -18,6 +18,7 @@ chunking. The texts of refusals are rospy's, word for word.
 
 from __future__ import annotations
 
+import ipaddress
 import struct
 
 from rosx.record import Record
@@ -127,22 +128,42 @@ class ServiceResponse(Record):
 
 
 def format_rosrpc_uri(host: str, port: int) -> str:
-    """``rosrpc://host:port``, the URI a service is registered under."""
+    """``rosrpc://host:port``, the URI a service is registered under (``[host]`` for IPv6)."""
+    if ":" in host and not host.startswith("["):
+        host = f"[{host}]"
     return f"{_ROSRPC}{host}:{port}"
+
+
+def _is_ipv6(host: str) -> bool:
+    try:
+        ipaddress.IPv6Address(host)
+    except ValueError:
+        return False
+    return True
 
 
 def parse_rosrpc_uri(uri: str) -> tuple[str, int]:
     """Split a ``rosrpc://host:port`` URI (a trailing path is ignored) into host and port.
+
+    An IPv6 host comes in brackets, or bare as ROS 1's nodes write it (``rosrpc://::1:4000``:
+    the port follows the last colon); the host is returned without brackets.
 
     Raises:
         ProtocolError: with rospy's texts, if the scheme is not rosrpc or host:port is invalid.
     """
     if not uri.startswith(_ROSRPC):
         raise ProtocolError(f"Invalid protocol for ROS service URL: {uri}")
-    parts = uri[len(_ROSRPC) :].partition("/")[0].split(":")
-    if len(parts) != 2 or not parts[0] or not is_ascii_number(parts[1]):
+    hostport = uri[len(_ROSRPC) :].partition("/")[0]
+    if hostport.startswith("["):
+        host, closed, rest = hostport[1:].partition("]")
+        port = rest[1:] if closed and rest.startswith(":") else ""
+        valid = _is_ipv6(host)
+    else:
+        host, _, port = hostport.rpartition(":")
+        valid = ":" not in host or _is_ipv6(host)
+    if not (valid and host and is_ascii_number(port)):
         raise ProtocolError(f"ROS service URL is invalid: {uri}")
-    return parts[0], int(parts[1])
+    return host, int(port)
 
 
 def client_header(

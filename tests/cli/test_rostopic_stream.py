@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import contextlib
+import io
 import re
 import signal
 import subprocess
@@ -17,6 +19,8 @@ import pytest
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx.transport.client import XmlRpcClient
+from rosx_commands.context import Environment
+from rosx_commands.main import run_tool
 from tests.support.cli import Result, clean_environ, rosx
 from tests.support.procs import free_port, wait_for
 
@@ -64,9 +68,18 @@ def tool_nodes(master: str) -> set[str]:
     return {n for n in names if n.rpartition("/")[2].startswith("rostopic_")}
 
 
-def run_for(master: str, seconds: float, *argv: str, environ: dict[str, str]) -> Result:
-    """Run a tool that never ends by itself; shut its node down (``rosnode kill``) later."""
+def run_for(
+    master: str,
+    seconds: float,
+    *argv: str,
+    environ: dict[str, str],
+    until: Callable[[str, str], bool] | None = None,
+) -> Result:
+    """Run a tool that never ends by itself; shut its node down (``rosnode kill``) once it has
+    run ``seconds`` and, on a loaded machine maybe later, its output (stdout, stderr) holds
+    what ``until`` looks for."""
     before = tool_nodes(master)
+    out, err = io.StringIO(), io.StringIO()
 
     def kill() -> None:
         client = XmlRpcClient(timeout=2)
@@ -74,13 +87,23 @@ def run_for(master: str, seconds: float, *argv: str, environ: dict[str, str]) ->
         (name,) = tool_nodes(master) - before
         uri = client.call(master, "lookupNode", "/test", name)[2]
         time.sleep(seconds)
+        if until is not None:
+            # Past the deadline the tool is stopped all the same and the test's asserts fail.
+            with contextlib.suppress(TimeoutError):
+                wait_for(lambda: until(out.getvalue(), err.getvalue()), timeout=60)
         client.call(uri, "shutdown", "/test", "test over")
 
     killer = threading.Thread(target=kill, daemon=True)
     killer.start()
-    result = rosx(*argv, environ=environ)
+    env = Environment(stdout=out, stderr=err, stdin=io.StringIO(""), environ=environ)
+    status = run_tool(list(argv), env)
     killer.join()
-    return result
+    return Result(int(status), out.getvalue(), err.getvalue())
+
+
+def _lines(count: int, text: str = "") -> Callable[[str, str], bool]:
+    """``until`` for `run_for`: ``count`` whole lines on stdout (stderr, with ``text="err"``)."""
+    return lambda out, err: (err if text == "err" else out).count("\n") >= count
 
 
 def in_thread(*argv: str, environ: dict[str, str]) -> Callable[[], Result]:
@@ -205,7 +228,15 @@ def test_echo_filter_that_fails_is_reported_once(
 ) -> None:
     stream("/e/filtered", String("x"))
     result = run_for(
-        master, 0.5, "rostopic", "echo", "--filter", "m.nope", "/e/filtered", environ=env
+        master,
+        0.5,
+        "rostopic",
+        "echo",
+        "--filter",
+        "m.nope",
+        "/e/filtered",
+        environ=env,
+        until=_lines(1, "err"),
     )
     assert (result.status, result.out) == (0, "")
     assert result.err == (
@@ -218,7 +249,9 @@ def test_echo_bad_index_is_reported_per_message(
     stream: Callable[..., None], env: dict[str, str], master: str
 ) -> None:
     stream("/e/short", FloatArray(data=[1.0]))
-    result = run_for(master, 0.5, "rostopic", "echo", "/e/short/data[3]", environ=env)
+    result = run_for(
+        master, 0.5, "rostopic", "echo", "/e/short/data[3]", environ=env, until=_lines(1, "err")
+    )
     assert (result.status, result.out) == (0, "")
     lines = result.err.splitlines()
     assert lines and set(lines) == {"tuple index out of range: /data[3]"}
@@ -392,7 +425,7 @@ def test_hz_reports_every_second(
     stream: Callable[..., None], env: dict[str, str], master: str
 ) -> None:
     stream("/r/hz", Int32(1), hz=20)
-    result = run_for(master, 2.3, "rostopic", "hz", "/r/hz", environ=env)
+    result = run_for(master, 2.3, "rostopic", "hz", "/r/hz", environ=env, until=_lines(5))
     assert result.status == 0, result.err
     lines = result.out.splitlines()
     assert lines[0] == "subscribed to [/r/hz]"
@@ -411,7 +444,7 @@ def test_hz_of_several_topics_prints_a_table(
 ) -> None:
     stream("/r/a", Int32(1), hz=20)
     stream("/r/bb", String("x"), hz=10)
-    result = run_for(master, 2.3, "rostopic", "hz", "/r/a", "/r/bb", environ=env)
+    result = run_for(master, 2.3, "rostopic", "hz", "/r/a", "/r/bb", environ=env, until=_lines(7))
     assert result.status == 0, result.err
     lines = result.out.splitlines()
     assert lines[:2] == ["subscribed to [/r/a]", "subscribed to [/r/bb]"]
@@ -429,7 +462,15 @@ def test_hz_with_a_filter_counts_matching_messages(
     stream("/r/matching", Int32(8), hz=20)
     for topic, matching in (("/r/filtered", False), ("/r/matching", True)):
         result = run_for(
-            master, 2.3, "rostopic", "hz", "--filter", "m.data == 8", topic, environ=env
+            master,
+            2.3,
+            "rostopic",
+            "hz",
+            "--filter",
+            "m.data == 8",
+            topic,
+            environ=env,
+            until=_lines(2),
         )
         lines = result.out.splitlines()
         assert (result.status, lines[0]) == (0, f"subscribed to [{topic}]")
@@ -442,7 +483,7 @@ def test_hz_with_a_filter_counts_matching_messages(
 
 def test_bw_reports_sizes(stream: Callable[..., None], env: dict[str, str], master: str) -> None:
     stream("/r/bw", stamped(), hz=20)
-    result = run_for(master, 2.3, "rostopic", "bw", "/r/bw", environ=env)
+    result = run_for(master, 2.3, "rostopic", "bw", "/r/bw", environ=env, until=_lines(3))
     lines = result.out.splitlines()
     assert result.status == 0 and lines[0] == "subscribed to [/r/bw]"
     assert len(lines) >= 3
@@ -468,7 +509,7 @@ def test_delay_reports_header_delays(
     thread = threading.Thread(target=run, daemon=True)
     thread.start()
     try:
-        result = run_for(master, 2.3, "rostopic", "delay", "/r/delay", environ=env)
+        result = run_for(master, 2.3, "rostopic", "delay", "/r/delay", environ=env, until=_lines(3))
     finally:
         stop.set()
         thread.join()

@@ -24,6 +24,7 @@ import pytest
 from rosx.workspace.environment import ROS_ETC_DIR, ROS_ROOT, SHARE
 from rosx_commands.main import TOOLS
 from tests.support.cli import clean_environ
+from tests.support.launchfiles import TURTLEMIMIC
 from tests.support.procs import free_port, port_open, stop, wait_for
 from tests.support.ros1 import ROS1
 
@@ -121,25 +122,6 @@ if __name__ == "__main__":
     print("%s + %s = %s"%(x, y, add_two_ints_client(x, y)))
 """
 
-TURTLEMIMIC = """\
-<launch>
-
-  <group ns="turtlesim1">
-    <node pkg="turtlesim" name="sim" type="turtlesim_node"/>
-  </group>
-
-  <group ns="turtlesim2">
-    <node pkg="turtlesim" name="sim" type="turtlesim_node"/>
-  </group>
-
-  <node pkg="turtlesim" name="mimic" type="mimic">
-    <remap from="input" to="turtlesim1/turtle1"/>
-    <remap from="output" to="turtlesim2/turtle1"/>
-  </node>
-
-</launch>
-"""
-
 
 class Terminal:
     """bash as the tutorials' user has it: rosx's shell integration, the workspace sourced once
@@ -149,8 +131,11 @@ class Terminal:
         self.home = home
         self.port = free_port()
         self.env = clean_environ(HOME=str(home), ROS_MASTER_URI=f"http://localhost:{self.port}")
+        # The test run's own variables (CI's ROS 1 reference, ROS1_*) are no user's either.
         for name in ("CMAKE_PREFIX_PATH", "PYTHONPATH", "ROSLISP_PACKAGE_DIRECTORIES"):
             self.env.pop(name, None)
+        for name in [k for k in self.env if k.startswith("ROS1_")]:
+            self.env.pop(name)
         self.background: list[subprocess.Popen[str]] = []
 
     def script(self, commands: str) -> str:

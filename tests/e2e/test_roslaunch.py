@@ -30,30 +30,13 @@ from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx.packages.index import bundled_packages
 from rosx.transport.client import call as xmlrpc_call
+from rosx.workspace.environment import ROS_ETC_DIR
 from tests.support.cli import clean_environ, rosx
+from tests.support.launchfiles import TURTLEMIMIC
 from tests.support.procs import free_port, port_open, running, stop, wait_for
 from tests.support.ros1 import OVERLAY, needs_ros1, run_ros1
 
 START_X = 5.544444561004639
-
-TURTLEMIMIC = """\
-<launch>
-
-  <group ns="turtlesim1">
-    <node pkg="turtlesim" name="sim" type="turtlesim_node"/>
-  </group>
-
-  <group ns="turtlesim2">
-    <node pkg="turtlesim" name="sim" type="turtlesim_node"/>
-  </group>
-
-  <node pkg="turtlesim" name="mimic" type="mimic">
-    <remap from="input" to="turtlesim1/turtle1"/>
-    <remap from="output" to="turtlesim2/turtle1"/>
-  </node>
-
-</launch>
-"""
 
 #: A node that says it is up, then exits with ``~code`` (after ``~delay`` seconds).
 QUITTER = """\
@@ -507,7 +490,14 @@ def test_with_a_master_running_the_launch_ends_when_its_nodes_end(
     assert f"logging to {world['home'] / 'ros_home' / 'log' / run_id}/" in launch.out
     assert "auto-starting new master" not in launch.out
     where = world["home"] / "src" / "labl" / "launch" / "clean.launch"
+    etc = env.get("ROS_ETC_DIR") or str(ROS_ETC_DIR)
     assert (
+        f"... loading XML file [{Path(etc, 'roscore.xml')}]\n"
+        "... executing command param [rosversion roslaunch]\n"
+        "Added parameter [/rosversion]\n"
+        "... executing command param [rosversion -d]\n"
+        "Added parameter [/rosdistro]\n"
+        "Added core node of type [rosout/rosout] in namespace [/]\n"
         f"... loading XML file [{where}]\n"
         "Added parameter [/answer]\n"
         "Added parameter [/once/code]\n"

@@ -18,12 +18,12 @@ def test_no_new_connection_after_the_shutdown_reply(make_node: Callable[..., Nod
     for attempt in range(20):  # the race the reply must not leave open, tried a few times
         node = make_node(f"/doomed{attempt}")
         node.advertise("/chatter", String, queue_size=1)
-        client = XmlRpcClient(timeout=5.0)
+        client = XmlRpcClient(timeout=30.0)  # a generous deadline: the reply must come
         try:
             assert client.call(node.uri, "shutdown", "/test", "test over") == [1, "shutdown", 0]
         finally:
             client.close()
-        fresh = XmlRpcClient(timeout=5.0)  # a new connection, as `rosnode ping` opens one
+        fresh = XmlRpcClient(timeout=30.0)  # a new connection, as `rosnode ping` opens one
         try:
             with pytest.raises(ConnectError):
                 fresh.call(node.uri, "getPid", "/test")

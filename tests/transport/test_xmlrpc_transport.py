@@ -36,6 +36,7 @@ from rosx.transport.errors import (
 )
 from rosx.transport.loop_thread import LoopThread, ServerThread
 from rosx.transport.server import EncodedResponse
+from tests.support.procs import wait_for
 
 VALUES: list[Any] = [
     0,
@@ -55,6 +56,18 @@ async def _slow(seconds: float) -> str:
     return "slow done"
 
 
+#: Set by "hold" when it is called; "hold" answers once `_RELEASE` is set.
+_HOLDING = threading.Event()
+_RELEASE = threading.Event()
+
+
+async def _hold() -> str:
+    _HOLDING.set()
+    while not _RELEASE.is_set():
+        await asyncio.sleep(0.01)
+    return "released"
+
+
 def _boom() -> None:
     raise ValueError("handler bug")
 
@@ -66,6 +79,7 @@ def _fault() -> None:
 HANDLERS = {
     "echo": lambda *args: list(args),
     "slow": _slow,
+    "hold": _hold,
     "boom": _boom,
     "fault": _fault,
     "cached": lambda: EncodedResponse.of([1, "cached", 2]),
@@ -161,16 +175,20 @@ def test_bad_requests_are_refused_and_the_server_carries_on(server: ServerThread
 
 def test_a_slow_handler_does_not_hold_up_other_connections(server: ServerThread) -> None:
     result: list[str] = []
-    slow = threading.Thread(
-        target=lambda: result.append(XmlRpcClient().call(server.uri, "slow", 1.0))
+    _HOLDING.clear()
+    _RELEASE.clear()
+    held = threading.Thread(
+        target=lambda: result.append(XmlRpcClient(timeout=30).call(server.uri, "hold"))
     )
-    slow.start()
-    time.sleep(0.1)
-    started = time.monotonic()
-    assert XmlRpcClient().call(server.uri, "echo", 1) == [1]
-    assert time.monotonic() - started < 0.5
-    slow.join()
-    assert result == ["slow done"]
+    held.start()
+    try:
+        wait_for(_HOLDING.is_set, what="the held call")
+        assert XmlRpcClient(timeout=30).call(server.uri, "echo", 1) == [1]
+        assert result == []  # answered while the other call is still waiting
+    finally:
+        _RELEASE.set()
+        held.join(30)
+    assert result == ["released"]
 
 
 def test_port_in_use_is_an_oserror(server: ServerThread) -> None:

@@ -231,8 +231,11 @@ def test_timer_refreshes_do_not_pile_up_behind_a_slow_one() -> None:
 
     async def drive() -> None:
         async with app.run_test(size=WIDE) as pilot:
+            started = time.monotonic()
             await asyncio.sleep(1.2)  # 24 periods
-            assert 2 <= source.reads <= 3
+            # Piled up, each period would start a read; one at a time, each read takes 0.5 s
+            # (a loaded machine only makes them fewer).
+            assert 1 <= source.reads <= (time.monotonic() - started) / source.delay + 1
             await settle(pilot)
             assert "t:/turtle1/cmd_vel" in app.drawing.boxes
 

@@ -1,7 +1,9 @@
 """``rosx sim``'s screen driven with the keyboard over the live world (textual's pilot).
 
-Distances are asserted loosely: a command lasts one second of wall time, and a busy machine
-runs fewer 16 ms ticks in it (as turtlesim does), so the turtle goes a little less far.
+A command lasts one second of wall time and each 16 ms tick moves the turtle by its speed times
+16 ms (as turtlesim does), so a busy machine, running fewer ticks in that second, moves it less
+far: distances are asserted as a whole number of ticks at the commanded speed, up to one second's
+worth, after waiting for the motion to start and to stop.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ from textual.widgets import Static, TabbedContent
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
+from rosx_turtle.engine.constants import DT
 from rosx_turtle.sim.host import SimHost
 from rosx_turtle.tui.details import DetailsScreen
 from rosx_turtle.tui.factory import make_sim_app
@@ -42,16 +45,44 @@ def turtle1(host: SimHost) -> TurtlePose:
     return next(t for t in scene.turtles if t.name == "turtle1")
 
 
-async def settle(pilot: Pilot[Any], host: SimHost, timeout: float = 5.0) -> TurtlePose:
-    """Wait (letting the app run) until turtle1 has stopped moving; its pose."""
+def _still(pose: TurtlePose) -> bool:
+    return pose.linear_velocity == 0.0 and pose.angular_velocity == 0.0
+
+
+async def settle(
+    pilot: Pilot[Any], host: SimHost, since: TurtlePose | None = None, timeout: float = 20.0
+) -> TurtlePose:
+    """Wait (letting the app run) until turtle1 rests; its pose.
+
+    With ``since``, the pose before a key press, first wait for the motion that key starts (the
+    turtle moving or moved): on a loaded machine the command may reach the pond late.
+    """
     deadline = time.monotonic() + timeout
-    await pilot.pause(0.2)
+    started = since is None
     while time.monotonic() < deadline:
         pose = turtle1(host)
-        if pose.linear_velocity == 0.0 and pose.angular_velocity == 0.0:
+        if not started and since is not None:
+            started = not _still(pose) or (pose.x, pose.y, pose.theta) != (
+                since.x,
+                since.y,
+                since.theta,
+            )
+        if started and _still(pose):
             return pose
         await pilot.pause(0.05)
-    raise AssertionError("turtle1 kept moving")
+    raise AssertionError("turtle1 kept moving" if started else "turtle1 never moved")
+
+
+def ticks(change: float, speed: float) -> int:
+    """How many 16 ms ticks at ``speed`` make ``change``: a whole number, from a quarter of a
+    second's worth to a second's."""
+    count = change / (speed * DT)
+    assert math.isclose(count, round(count), abs_tol=1e-3), change  # float32 poses
+    # A tick less than a period late is made up for at once: a second can hold a few more. A
+    # loaded machine runs fewer (46 of 62 seen at a load of 9 on two cores), but a quarter of a
+    # second's worth is far more than a command cut short would give.
+    assert 0.25 / DT <= round(count) <= 1 / DT + 3, change
+    return round(count)
 
 
 def spy(node: Node, host: SimHost) -> list[Any]:
@@ -79,13 +110,13 @@ def test_up_arrow_drives_turtle1_two_metres_forward(
     async def drive() -> tuple[TurtlePose, TurtlePose, str]:
         async with app.run_test(size=SIZE, message_hook=sent.append) as pilot:
             before = await settle(pilot, host)
-            await pilot.press("up")  # the pilot waits for the screen: about the 1 s of motion
-            after = await settle(pilot, host)
+            await pilot.press("up")
+            after = await settle(pilot, host, since=before)
             await pilot.pause(0.1)
             return before, after, app.query_one(PosePanel).text
 
     before, after, panel = run(drive())
-    assert 1.5 < after.x - before.x < 2.1  # one Twist lasts 1 s: about 2 m (less if ticks lag)
+    ticks(after.x - before.x, 2.0)  # one Twist lasts 1 s: about 2 m (less if ticks lag)
     assert after.y == before.y and after.theta == before.theta == 0.0
     assert f"x: {after.x}" in panel.splitlines()
     wait_for(lambda: len(twists) >= 1, what="the Twist")
@@ -105,14 +136,14 @@ def test_left_and_right_turn_in_place(host: SimHost, make_node: Callable[[str], 
         async with app.run_test(size=SIZE) as pilot:
             start = await settle(pilot, host)
             await pilot.press("left")
-            left = await settle(pilot, host)
+            left = await settle(pilot, host, since=start)
             await pilot.press("right")
-            right = await settle(pilot, host)
+            right = await settle(pilot, host, since=left)
             return start, left, right
 
     start, left, right = run(turn())
-    assert 1.5 < left.theta - start.theta < 2.1  # about 2 rad counter-clockwise
-    assert 1.5 < left.theta - right.theta < 2.1  # and about as much back
+    ticks(left.theta - start.theta, 2.0)  # about 2 rad counter-clockwise
+    ticks(left.theta - right.theta, 2.0)  # and about as much back
     assert (left.x, left.y) == (start.x, start.y) == (right.x, right.y)
     wait_for(lambda: len(twists) >= 2, what="two Twists")
     assert [(t.linear.x, t.angular.z) for t in twists] == [(0.0, 2.0), (0.0, -2.0)]
@@ -125,10 +156,10 @@ def test_down_arrow_backs_up(host: SimHost) -> None:
         async with app.run_test(size=SIZE) as pilot:
             start = await settle(pilot, host)
             await pilot.press("down")
-            return start, await settle(pilot, host)
+            return start, await settle(pilot, host, since=start)
 
     start, end = run(back())
-    assert 1.5 < start.x - end.x < 2.1
+    ticks(start.x - end.x, 2.0)
     assert math.isclose(end.y, start.y)
 
 

@@ -203,3 +203,12 @@ def test_rosrpc_uris() -> None:
     ):
         with pytest.raises(ProtocolError, match=f"ROS service URL is invalid: {bad}"):
             parse_rosrpc_uri(bad)
+
+
+def test_ipv6_rosrpc_uris() -> None:
+    assert format_rosrpc_uri("::1", 4000) == "rosrpc://[::1]:4000"
+    assert parse_rosrpc_uri("rosrpc://[::1]:4000/") == ("::1", 4000)
+    # As ROS 1's nodes write it, without brackets: the port follows the last colon.
+    assert parse_rosrpc_uri("rosrpc://fd00::2:4000") == ("fd00::2", 4000)
+    with pytest.raises(ProtocolError, match="ROS service URL is invalid"):
+        parse_rosrpc_uri("rosrpc://[::1]")

@@ -23,6 +23,8 @@ def shell(name: str, script: str, cwd: Path, **extra: str) -> subprocess.Complet
     env = clean_environ(HOME=str(cwd), **extra)
     env.pop("CMAKE_PREFIX_PATH", None)
     env.pop("ROSLISP_PACKAGE_DIRECTORIES", None)
+    for key in [k for k in env if k.startswith("ROS1_")]:  # the test run's ROS 1 reference
+        env.pop(key)
     return subprocess.run(
         [name, "-c", script],
         cwd=cwd,

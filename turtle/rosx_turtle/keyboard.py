@@ -3,14 +3,18 @@
 `RawKeys` puts a terminal in non-canonical mode with echo off (``ICANON`` and ``ECHO`` cleared,
 ``VEOL`` = 1 and ``VEOF`` = 2, ``ISIG`` left on so that Ctrl-C still raises SIGINT), exactly as
 the teleop does, and puts the saved settings back when the block ends, however it ends. On a
-file descriptor that is not a terminal it changes nothing and just reads.
+file descriptor that is not a terminal it changes nothing and just reads. Windows has no termios:
+there the terminal is left as it is (keys arrive when Enter is pressed), as for a non-terminal.
 """
 
 from __future__ import annotations
 
 import os
-import termios
+import sys
 from typing import TYPE_CHECKING, Any
+
+if sys.platform != "win32":
+    import termios
 
 if TYPE_CHECKING:
     from types import TracebackType
@@ -24,6 +28,8 @@ class RawKeys:
         self.saved: list[Any] | None = None
 
     def __enter__(self) -> RawKeys:
+        if sys.platform == "win32":
+            return self
         try:
             self.saved = termios.tcgetattr(self.fd)
         except termios.error:  # not a terminal: nothing to set or restore
@@ -45,7 +51,7 @@ class RawKeys:
 
     def restore(self) -> None:
         """Put the terminal back as it was (idempotent)."""
-        if self.saved is not None:
+        if self.saved is not None and sys.platform != "win32":
             termios.tcsetattr(self.fd, termios.TCSANOW, self.saved)
             self.saved = None
 

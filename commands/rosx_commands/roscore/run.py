@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any, TextIO
 from rosx.core import Core, PortInUseError
 from rosx.core.params import ROSDISTRO, ROSVERSION
 from rosx.master.client import master_uri
-from rosx.transport.address import address_warnings, is_local_host
+from rosx.transport.address import address_warnings, foreign_address_warning, is_local_host
 from rosx.wire.xmlrpc_http import parse_http_uri
 from rosx.workspace.logdir import announce_run_log
 
@@ -192,6 +192,9 @@ def run_roscore(
     )
     for warning in address_warnings(environ):
         out.error(warning)
+    foreign = foreign_address_warning(environ)
+    if foreign is not None:
+        out.error(foreign)
     core = Core(port, environ)
     announce_run_log(environ, core.run_id, out=out.line, err=out.error)
     out.title("roscore")

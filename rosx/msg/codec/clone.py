@@ -15,6 +15,7 @@ import copy
 from typing import TYPE_CHECKING, Any
 
 from rosx.msg.codec.rostime import TVal
+from rosx.msg.spec import PRIMITIVE_TYPES
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -101,24 +102,8 @@ def _write(
             )
 
 
-_SCALARS = frozenset(
-    [
-        "bool",
-        "byte",
-        "char",
-        "int8",
-        "uint8",
-        "int16",
-        "uint16",
-        "int32",
-        "uint32",
-        "int64",
-        "uint64",
-        "float32",
-        "float64",
-        "string",
-    ]
-)
+#: The field types whose values are immutable Python objects: shared, never copied.
+_SCALARS = PRIMITIVE_TYPES - {"time", "duration"}
 _INLINE_DEPTH = 4
 
 
