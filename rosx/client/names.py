@@ -47,6 +47,15 @@ def get_caller_id() -> str:
 get_name = get_caller_id
 
 
+def _set_caller_id(caller_id: str) -> None:
+    """Resolve names and ask the Parameter Server as ``caller_id`` from now on (rospy's
+    private hook; the node's own name and registrations do not change). The node's own name
+    again puts things back."""
+    client = state.CLIENT
+    own = client.node.name if client.node is not None else None
+    client.caller_override = None if caller_id == own else caller_id
+
+
 def get_namespace() -> str:
     """The node's namespace, with a trailing ``/``."""
     return state.CLIENT.namespace()

@@ -20,12 +20,18 @@ _unspecified: Any = object()
 
 
 def _params() -> ParamClient:
-    node = state.CLIENT.node
-    if node is not None:
+    client = state.CLIENT
+    node = client.node
+    if node is not None and client.caller_override is None:
         return node.params
     from rosx.node.params import ParamCache, ParamClient  # noqa: PLC0415
 
-    return ParamClient(state.CLIENT.master(), state.CLIENT.resolve_name, lambda: "", ParamCache())
+    master = client.master()
+    if client.caller_override is not None:
+        from rosx.master.client import MasterClient  # noqa: PLC0415
+
+        master = MasterClient(client.master_uri(), client.caller_override)
+    return ParamClient(master, client.resolve_name, lambda: "", ParamCache())
 
 
 def get_param(param_name: str, default: Any = _unspecified) -> Any:

@@ -66,6 +66,9 @@ class Client:
         self._master: MasterClient | None = None
         #: What ``rospy.get_master()`` hands out (`rosx.client.masterproxy`), made once.
         self.script_master: Any = None
+        #: The caller id set by ``rospy.names._set_caller_id`` (names resolve and parameters
+        #: are asked as that caller, the node's registrations stay), or None.
+        self.caller_override: str | None = None
 
     # -- the command line --------------------------------------------------------------------
 
@@ -90,6 +93,8 @@ class Client:
 
     def namespace(self) -> str:
         """The node's namespace (``/`` …), known before the node starts."""
+        if self.caller_override is not None:
+            return namespace_of(self.caller_override)
         if self.node is not None:
             return self.node.namespace
         if self.args.ns:
@@ -98,13 +103,15 @@ class Client:
 
     def caller_id(self) -> str:
         """The node's global name; ``<namespace>unnamed`` before `init_node`."""
+        if self.caller_override is not None:
+            return self.caller_override
         return self.node.name if self.node is not None else self.namespace() + "unnamed"
 
     def resolve_name(self, name: str, caller_id: str | None = None) -> str:
         """rospy's ``resolve_name``: ``~x`` under the node, relative names in its namespace,
         then the command line's remappings once the node runs."""
         node = self.node
-        if caller_id is None and node is not None:
+        if caller_id is None and node is not None and self.caller_override is None:
             return node.resolve(name)
         caller = caller_id or self.caller_id()
         remappings = node.remappings if node is not None else None

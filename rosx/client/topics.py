@@ -5,7 +5,8 @@ As in rospy, both may be created before `init_node` (they register when the node
 topic's own thread, so a program's main loop keeps running while messages arrive. A callback
 that raises is reported as rospy reports it (``bad callback: …`` and the traceback, at ERROR)
 and the subscription carries on. ``publish`` accepts a message, the fields of a new one, or
-keyword fields.
+keyword fields. With ``/enable_statistics`` set, subscriptions report on ``/statistics``
+(`rosx.client.statistics`).
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ import traceback
 import warnings
 from typing import TYPE_CHECKING, Any
 
-from rosx.client import state
+from rosx.client import state, statistics
 from rosx.client.anymsg import AnyMsg
 from rosx.client.exceptions import ROSException, ROSInterruptException, ROSSerializationException
 from rosx.client.logs import logerr
@@ -222,6 +223,8 @@ class Subscriber(_Topic):
             queue_size=self.queue_size,
             tcp_nodelay=self.tcp_nodelay,
         )
+        if impl.subscription.callback_count == 1:  # the node's first subscriber of the topic
+            statistics.watch(impl.subscription, node.name)
         with self._lock:
             if not self._closed:
                 self.impl = impl

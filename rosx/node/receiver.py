@@ -135,10 +135,13 @@ class Receiver:
 
     # -- callbacks (any thread) --------------------------------------------------------------
 
-    def add(self, callback: Callable[[Any], object], decode: Decode) -> Entry:
-        """Add a callback; returns its entry (to remove it, or to queue frames for it alone)."""
+    def add(
+        self, callback: Callable[[Any], object], decode: Decode, *, first: bool = False
+    ) -> Entry:
+        """Add a callback (after the others, or before them with ``first``); returns its entry
+        (to remove it, or to queue frames for it alone)."""
         entry = (callback, decode)
-        self.entries = (*self.entries, entry)
+        self.entries = (entry, *self.entries) if first else (*self.entries, entry)
         return entry
 
     def remove(self, entry: Entry) -> None:

@@ -17,6 +17,13 @@ the caller passes the current time in. The rules are ROS 1's:
 * **delay** keeps the differences between arrival time and ``header.stamp`` (again the first
   message only starts the clock) and reports them like hz; nothing is printed before the
   first difference.
+* **topic statistics** (what a subscriber publishes on ``/statistics`` when
+  ``/enable_statistics`` is set, rosgraph_msgs/TopicStatistics) keep, per publisher connection,
+  a window of arrival times, stamp ages, sequence gaps and bytes. A message arriving more than
+  one report period after the last report closes the window (the very first message does);
+  the period starts at 1 s and doubles while a window holds fewer than the minimum number of
+  messages (up to the maximum window length), halves while it holds more than the maximum
+  (down to the minimum length). Times are integer nanoseconds here.
 """
 
 from __future__ import annotations
@@ -24,6 +31,7 @@ from __future__ import annotations
 import math
 import threading
 from collections import deque
+from dataclasses import dataclass, field
 
 #: hz's and delay's cap on the window (``-w -1`` means "everything" up to this many).
 MAX_WINDOW = 50000
@@ -217,3 +225,96 @@ class DelayTracker:
             f"average delay: {mean:.3f}\n"
             f"\tmin: {low:.3f}s max: {high:.3f}s std dev: {std_dev:.5f}s window: {window}"
         )
+
+
+@dataclass(frozen=True)
+class WindowSettings:
+    """The ``/statistics_window_*`` parameters: messages per window, window length (s)."""
+
+    min_elements: int = 10
+    max_elements: int = 100
+    min_window: float = 4.0
+    max_window: float = 64.0
+
+
+@dataclass
+class WindowReport:
+    """One window of one connection; times and durations in nanoseconds."""
+
+    window_start: int
+    window_stop: int
+    delivered_msgs: int
+    dropped_msgs: int
+    traffic: int
+    period_mean: int = 0
+    period_stddev: int = 0
+    period_max: int = 0
+    stamp_age_mean: int = 0
+    stamp_age_stddev: int = 0
+    stamp_age_max: int = 0
+
+
+def _mean_std_max(values: list[int]) -> tuple[int, int, int]:
+    mean = sum(values) / len(values)
+    std = math.sqrt(sum((v - mean) ** 2 for v in values) / len(values))
+    return round(mean), round(std), max(values)
+
+
+@dataclass
+class StatisticsWindow:
+    """The statistics of one publisher connection of a subscription (see the module)."""
+
+    settings: WindowSettings
+    window_start: int
+    frequency: float = 1.0
+    last_report: int = 0
+    last_seq: int = 0
+    dropped: int = 0
+    bytes_reported: int = 0
+    bytes_seen: int = 0
+    arrivals: list[int] = field(default_factory=list)
+    ages: list[int] = field(default_factory=list)
+
+    def arrived(
+        self, now: int, total_bytes: int, stamp: int | None = None, seq: int | None = None
+    ) -> WindowReport | None:
+        """A message arrived at ``now``; ``total_bytes`` is what the connection has carried so
+        far, ``stamp`` and ``seq`` its header's (None without a header). Returns the closed
+        window's report when this message closes it."""
+        self.arrivals.append(now)
+        self.bytes_seen = total_bytes
+        if stamp is not None:
+            self.ages.append(now - stamp)
+        if seq is not None:
+            if seq != self.last_seq + 1:
+                self.dropped += 1
+            self.last_seq = seq
+        if now > self.last_report + round(1e9 / self.frequency):
+            self.last_report = now
+            return self._close(now)
+        return None
+
+    def _close(self, now: int) -> WindowReport:
+        report = WindowReport(
+            window_start=self.window_start,
+            window_stop=now,
+            delivered_msgs=len(self.arrivals),
+            dropped_msgs=self.dropped,
+            traffic=self.bytes_seen - self.bytes_reported,
+        )
+        if self.ages:
+            mean, std, high = _mean_std_max(self.ages)
+            report.stamp_age_mean, report.stamp_age_stddev, report.stamp_age_max = mean, std, high
+        if len(self.arrivals) > 1:
+            periods = [b - a for a, b in zip(self.arrivals, self.arrivals[1:], strict=False)]
+            mean, std, high = _mean_std_max(periods)
+            report.period_mean, report.period_stddev, report.period_max = mean, std, high
+        settings, count, period = self.settings, len(self.arrivals), 1.0 / self.frequency
+        if count > settings.max_elements and period / 2 >= settings.min_window:
+            self.frequency *= 2
+        if count < settings.min_elements and period * 2 <= settings.max_window:
+            self.frequency /= 2
+        self.arrivals, self.ages, self.dropped = [], [], 0
+        self.window_start = now
+        self.bytes_reported = self.bytes_seen
+        return report

@@ -140,6 +140,7 @@ class Subscription:
             on_error=self._callback_failed,
         )
         self.updates = 0
+        self._monitors = 0
         #: Until this `time.monotonic` instant a ``publisherUpdate`` adds publishers and drops
         #: none (set while the nodes register again with a restarted master).
         self.keep_until = 0.0
@@ -170,10 +171,25 @@ class Subscription:
         """Remove a callback."""
         self.receiver.remove(entry)
 
+    def add_monitor(self, callback: Callable[[Any], object]) -> None:
+        """Have ``callback`` see every message before the subscribers' callbacks do (decoded
+        as a subscriber's are). A monitor does not keep the subscription alive: it
+        goes with the last subscriber."""
+        entries = self.receiver.entries
+        decode = entries[-1][1] if entries else self.decoder(self.msg_class)
+        self.receiver.add(callback, decode, first=True)
+        self._monitors += 1
+
     @property
     def callback_count(self) -> int:
-        """Callbacks still subscribed."""
-        return len(self.receiver.entries)
+        """Subscribers' callbacks still subscribed (monitors not counted)."""
+        return len(self.receiver.entries) - self._monitors
+
+    def bytes_from(self, callerid: str) -> int:
+        """Bytes received so far from the publisher node ``callerid``'s connection."""
+        return sum(
+            s.bytes_received for s in self.streams.values() if s.header.get("callerid") == callerid
+        )
 
     def _callback_failed(self, exc: BaseException, callback: Callable[[Any], object]) -> None:
         if self._on_error is not None:

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import importlib
+import io
+import logging
 import re
 from collections.abc import Callable
 from types import ModuleType
@@ -9,6 +12,7 @@ from typing import Any
 
 import pytest
 
+from rosx.client.roslogging import RosStreamHandler
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node
 from tests.support.procs import wait_for
@@ -52,6 +56,30 @@ def test_once_and_throttle_log_from_each_call_site_once(
         "throttled",
         "same",
         "once",
+    ]
+
+
+def test_ros_stream_handler_writes_rospys_console_lines() -> None:
+    out, err = io.StringIO(), io.StringIO()
+    logger = logging.getLogger("rosx-test-stream")
+    logger.propagate = False
+    logger.setLevel(logging.DEBUG)
+    handler = RosStreamHandler(colorize=False, stdout=out, stderr=err)
+    logger.addHandler(handler)
+    try:
+        logger.info("fine %d", 1)
+        logger.warning("careful")
+        logger.error("broken")
+        logger.critical("gone")
+    finally:
+        logger.removeHandler(handler)
+    outs = [LINE.match(line) for line in out.getvalue().splitlines()]
+    errs = [LINE.match(line) for line in err.getvalue().splitlines()]
+    assert [m.groups() if m else None for m in outs] == [("INFO", "fine 1")]
+    assert [m.groups() if m else None for m in errs] == [
+        ("WARN", "careful"),
+        ("ERROR", "broken"),
+        ("FATAL", "gone"),
     ]
 
 
@@ -105,6 +133,28 @@ def test_parameters(rospy: ModuleType) -> None:
     rospy.delete_param("~gain")
     with pytest.raises(KeyError):
         rospy.delete_param("~gain")
+
+
+def test_parameters_as_another_caller(rospy: ModuleType) -> None:
+    rospy.init_node("asker", disable_signals=True)
+    names = importlib.import_module(f"{rospy.__name__}.names")  # rospy.names
+    rospy.set_param("/depth", 0)
+    names._set_caller_id("/deep/er/visitor")
+    try:
+        assert rospy.get_name() == "/deep/er/visitor"
+        assert rospy.get_namespace() == "/deep/er/"
+        assert rospy.search_param("depth") == "/depth"
+        rospy.set_param("/deep/depth", 1)
+        assert rospy.search_param("depth") == "/deep/depth"
+        rospy.set_param("~depth", 2)  # private to the caller, found before the rest
+        assert rospy.get_param("/deep/er/visitor/depth") == 2
+        assert rospy.search_param("depth") == "/deep/er/visitor/depth"
+        assert rospy.resolve_name("depth") == "/deep/er/depth"
+    finally:
+        names._set_caller_id("/asker")
+    assert rospy.get_name() == "/asker"
+    assert rospy.search_param("depth") == "/depth"
+    assert rospy.resolve_name("~depth") == "/asker/depth"
 
 
 def test_services_answer_proxies(rospy: ModuleType) -> None:

@@ -1,4 +1,4 @@
-"""``rosgraph`` for scripts that rosx runs: ``Master``, its errors, ``names``.
+"""``rosgraph`` for scripts that rosx runs: ``Master``, its errors, ``names``, ``roslogging``.
 
 Served by `rosx.client.rosgraph`. A Python that cannot import rosx gets the next ``rosgraph``
 on its path instead (see ``rospy``).
@@ -13,8 +13,8 @@ except ImportError:
 
     load_next("rosgraph")
 else:
-    from . import masterapi, names
+    from . import masterapi, names, roslogging
 
     globals().update({name: getattr(_rosgraph, name) for name in _rosgraph.__all__})
     __all__ = list(_rosgraph.__all__)
-    __all__ += ["masterapi", "names"]
+    __all__ += ["masterapi", "names", "roslogging"]
