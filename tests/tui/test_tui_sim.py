@@ -60,6 +60,9 @@ async def settle(
     deadline = time.monotonic() + timeout
     started = since is None
     while time.monotonic() < deadline:
+        if host.scenes.value is None:  # the pond has not drawn its first scene yet
+            await pilot.pause(0.05)
+            continue
         pose = turtle1(host)
         if not started and since is not None:
             started = not _still(pose) or (pose.x, pose.y, pose.theta) != (
