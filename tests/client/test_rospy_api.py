@@ -11,7 +11,6 @@ from __future__ import annotations
 import io
 import os
 import re
-import subprocess
 import sys
 from collections.abc import Callable
 from pathlib import Path
@@ -25,7 +24,7 @@ from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node
 from tests.client.test_rospy_imports import json_of, run_script
 from tests.support.procs import wait_for
-from tests.support.ros1 import ROS1_PYTHON, needs_ros1
+from tests.support.ros1 import needs_ros1, ros1_python_with_path
 
 Log = get_message_class("rosgraph_msgs/Log")
 String = get_message_class("std_msgs/String")
@@ -235,16 +234,8 @@ def test_scripts_import_rospy_names_and_rosgraph(tmp_path: Path, master: str) ->
 
 @needs_ros1
 def test_ros1s_python_keeps_ros1s_rosgraph_with_the_shim_on_its_path(tmp_path: Path) -> None:
-    env = {k: v for k, v in os.environ.items() if not k.startswith("ROS_")}
-    env["PYTHONPATH"] = str(SHIM_DIR)
-    done = subprocess.run(
-        [ROS1_PYTHON, "-c", "import rospy, rosgraph.names; print(rosgraph.names.__file__)"],
-        env=env,
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    code = "import rospy, rosgraph.names; print(rosgraph.names.__file__)"
+    done = ros1_python_with_path(code, [SHIM_DIR], tmp_path)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "/usr/lib/python3/dist-packages/rosgraph/names.py"
 

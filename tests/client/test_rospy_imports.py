@@ -7,7 +7,6 @@ Each script runs in a child process, as ``rosx rosrun`` runs it, so that the imp
 from __future__ import annotations
 
 import json
-import os
 import signal
 import subprocess
 import sys
@@ -20,7 +19,7 @@ import pytest
 from rosx.bag import SHIM_DIR as BAG_SHIM_DIR
 from rosx.client.script import SHIM_DIR
 from tests.support.cli import clean_environ
-from tests.support.ros1 import ROS1_PYTHON, needs_ros1
+from tests.support.ros1 import needs_ros1, ros1_python_with_path
 
 NUM_PACKAGE = """\
 <?xml version="1.0"?>
@@ -220,26 +219,12 @@ def test_a_python_without_rosx_is_told_what_to_do(tmp_path: Path) -> None:
 
 @needs_ros1
 def test_ros1s_python_keeps_ros1s_rospy_with_the_shim_on_its_path(tmp_path: Path) -> None:
-    env = {k: v for k, v in os.environ.items() if not k.startswith("ROS_")}
-    env["PYTHONPATH"] = os.pathsep.join([str(SHIM_DIR), str(BAG_SHIM_DIR)])
-    done = subprocess.run(
-        [ROS1_PYTHON, "-c", "import rospy, rospy.exceptions, rosbag; print(rospy.__file__)"],
-        env=env,
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    shims = [SHIM_DIR, BAG_SHIM_DIR]
+    code = "import rospy, rospy.exceptions, rosbag; print(rospy.__file__)"
+    done = ros1_python_with_path(code, shims, tmp_path)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "/usr/lib/python3/dist-packages/rospy/__init__.py"
-    rosbag = subprocess.run(
-        [ROS1_PYTHON, "-c", "import rosbag; print(rosbag.__file__)"],
-        env=env,
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    rosbag = ros1_python_with_path("import rosbag; print(rosbag.__file__)", shims, tmp_path)
     assert rosbag.stdout.strip() == "/usr/lib/python3/dist-packages/rosbag/__init__.py"
 
 

@@ -93,6 +93,17 @@ def ros1_python(script: str, **extra: str) -> Any:
 ROSCORES = ["ros1-roscore", "rosx-roscore"]
 
 
+def ros1_python_with_path(
+    code: str, pythonpath: list[Path], cwd: Path
+) -> subprocess.CompletedProcess[str]:
+    """Run ``code`` in ROS 1's Python with ``pythonpath`` and no ``ROS_*`` variables."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith("ROS_")}
+    env["PYTHONPATH"] = os.pathsep.join(str(p) for p in pythonpath)
+    return subprocess.run(
+        [ROS1_PYTHON, "-c", code], env=env, cwd=cwd, capture_output=True, text=True, check=False
+    )
+
+
 @contextlib.contextmanager
 def roscore(kind: str) -> Iterator[str]:
     """ROS 1's roscore (``ros1-roscore``) or rosx's (``rosx-roscore``) on a free port; its URI."""
