@@ -26,6 +26,7 @@ import socket
 from typing import TYPE_CHECKING, Any, Protocol
 
 from rosx.master.client import MasterError
+from rosx.node import unixros
 from rosx.transport.errors import ConnectError, TransportError
 from rosx.wire.errors import ProtocolError
 from rosx.wire.framing import DEFAULT_MAX_FRAME_SIZE, DEFAULT_MAX_HEADER_SIZE, FrameReader
@@ -103,8 +104,12 @@ class IncomingStream:
         self.latching = False
         self.latched: bytes | memoryview | None = None
         self.sock: socket.socket | None = None
-        self.local: tuple[str, int] = ("", 0)
+        #: ``TCPROS`` or ``UNIXROS`` (`rosx.node.unixros`), the publisher's address (a Unix
+        #: socket's with port 0), and the connection's description, once connected.
+        self.transport = "TCPROS"
         self.remote: tuple[str, int] = ("", 0)
+        self.info = ""
+        self._unix_failed = False
         self.fileno = -1
         self.connected = False
         self.closed = False
@@ -176,14 +181,62 @@ class IncomingStream:
 
     async def _connect(self) -> None:
         loop = self._io.loop
+        protocols: list[list[str]] = [["TCPROS"]]
+        offer = None if self._unix_failed else unixros.offer()
+        if offer is not None:
+            protocols.insert(0, offer)
         try:
             params = await self._xmlrpc(
-                self.publisher_uri, "requestTopic", self._caller_id, self.topic, [["TCPROS"]]
+                self.publisher_uri, "requestTopic", self._caller_id, self.topic, protocols
             )
         except ConnectError as exc:
             raise GiveUp(f"publisher [{self.publisher_uri}] cannot be reached: {exc}") from None
         except MasterError as exc:
             raise GiveUp(f"requestTopic to [{self.publisher_uri}] failed: {exc}") from None
+        unix = unixros.parse_reply(params) if offer is not None else None
+        sock = await (self._open_unix(unix) if unix is not None else self._open_tcp(params))
+        if sock is None:
+            # Not reachable from here after all (another network namespace): use TCPROS.
+            self._unix_failed = True
+            await self._connect()
+            return
+        await loop.sock_sendall(sock, self._request)
+        reply = await asyncio.wait_for(self._read_header(sock), _CONNECT_TIMEOUT)
+        verdict = check_publisher_reply(reply, topic=self.topic, md5sum=self._md5sum)
+        if isinstance(verdict, Refused):
+            raise GiveUp(verdict.reason)
+        self.header = verdict.header
+        self.latching = verdict.latching
+        self.fileno = sock.fileno()
+        if sock.family == socket.AF_UNIX:
+            self.info = unixros.transport_info(self.remote[0], sock, self.fileno)
+        else:
+            self.info = (
+                f"TCPROS connection on port {sock.getsockname()[1]} to "
+                f"[{self.remote[0]}:{self.remote[1]} on socket {self.fileno}]"
+            )
+        self.connected = True
+        self._reader.max_frame_size = DEFAULT_MAX_FRAME_SIZE
+        self._on_connected(self)
+
+    async def _open_unix(self, address: str) -> socket.socket | None:
+        """Connect to a publisher's UNIXROS socket; None if that cannot be done."""
+        sock = self.sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        sock.setblocking(False)
+        try:
+            await asyncio.wait_for(
+                self._io.loop.sock_connect(sock, unixros.socket_address(address)),
+                _CONNECT_TIMEOUT,
+            )
+        except (OSError, TimeoutError):
+            self._drop_socket()
+            return None
+        self.transport = unixros.PROTOCOL
+        self.remote = (address, 0)
+        return sock
+
+    async def _open_tcp(self, params: object) -> socket.socket:
+        """Connect to the TCPROS address of a ``requestTopic`` answer."""
         address = _tcpros_address(params)
         if address is None:
             raise GiveUp(f"publisher returned invalid protocol choice: {params}")
@@ -192,22 +245,12 @@ class IncomingStream:
         sock = self.sock = socket.socket(family, socket.SOCK_STREAM)
         sock.setblocking(False)
         try:
-            await asyncio.wait_for(loop.sock_connect(sock, (host, port)), _CONNECT_TIMEOUT)
+            await asyncio.wait_for(self._io.loop.sock_connect(sock, (host, port)), _CONNECT_TIMEOUT)
         except ConnectionRefusedError as exc:
             raise GiveUp(f"unable to connect to publisher at {host}:{port}: {exc}") from None
-        await loop.sock_sendall(sock, self._request)
-        reply = await asyncio.wait_for(self._read_header(sock), _CONNECT_TIMEOUT)
-        verdict = check_publisher_reply(reply, topic=self.topic, md5sum=self._md5sum)
-        if isinstance(verdict, Refused):
-            raise GiveUp(verdict.reason)
-        self.header = verdict.header
-        self.latching = verdict.latching
-        self.local = sock.getsockname()[:2]
+        self.transport = "TCPROS"
         self.remote = (host, port)
-        self.fileno = sock.fileno()
-        self.connected = True
-        self._reader.max_frame_size = DEFAULT_MAX_FRAME_SIZE
-        self._on_connected(self)
+        return sock
 
     async def _read_header(self, sock: socket.socket) -> dict[str, str]:
         reader = self._reader
@@ -299,7 +342,4 @@ class IncomingStream:
 
     def transport_info(self) -> str:
         """rospy's description of the connection (``rosnode info`` parses it)."""
-        return (
-            f"TCPROS connection on port {self.local[1]} to "
-            f"[{self.remote[0]}:{self.remote[1]} on socket {self.fileno}]"
-        )
+        return self.info

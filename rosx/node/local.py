@@ -99,6 +99,8 @@ class LocalLink:
         self.bytes_received = 0
         #: No socket (what code that handles streams and links alike may look at).
         self.sock: None = None
+        #: The transport's name in ``getBusInfo`` (as for streams).
+        self.transport = INTRAPROCESS
 
     # -- the loop ----------------------------------------------------------------------------
 

@@ -15,6 +15,7 @@ master watch (`rosx.node.watchdog`) registers it again with a master that restar
 
 from __future__ import annotations
 
+import contextlib
 import os
 import sys
 import threading
@@ -25,7 +26,7 @@ from typing import TYPE_CHECKING, Any, cast
 from rosx.master.client import MasterClient, reply_value
 from rosx.master.client import master_uri as find_master_uri
 from rosx.names import make_global_ns, ns_join, resolve, resolve_remappings
-from rosx.node import local, rosout
+from rosx.node import local, rosout, unixros
 from rosx.node.errors import NodeShutdownError, ServiceError
 from rosx.node.handles import Publisher, ServiceHandle, Subscriber
 from rosx.node.log_services import RosoutPublisher, advertise_logger_services
@@ -175,6 +176,9 @@ class Node:
         self._xmlrpc = server
         self.uri = server.uri
         self._tcpros.start(self._bind, self._ports[1])
+        if unixros.ENABLED:
+            with contextlib.suppress(OSError):  # TCPROS alone, then
+                self._tcpros.start_unix(unixros.new_address())
         local.register(self.uri, self.name, self.publications.get)
 
     def is_shutdown(self) -> bool:
@@ -280,6 +284,10 @@ class Node:
         """The host and port of this node's TCPROS server, as advertised."""
         return self.host, self._tcpros.port
 
+    def unixros_address(self) -> str | None:
+        """The Unix socket this node's publications accept subscribers on (`rosx.node.unixros`)."""
+        return self._tcpros.unix_address
+
     # -- publishing --------------------------------------------------------------------------
 
     def advertise(
@@ -332,6 +340,7 @@ class Node:
                     queue_size=queue_size,
                     has_header=has_header,
                 )
+                publication.unix_address = self._tcpros.unix_address
                 self.publications[name] = publication
             elif publication.info.type != info.type:
                 raise ValueError(

@@ -20,11 +20,13 @@ lose a concurrent publisher's update.
 from __future__ import annotations
 
 import io
+import socket
 import struct
 import threading
 from typing import TYPE_CHECKING
 
 from rosx.msg.codec.clone import clone
+from rosx.node import unixros
 from rosx.node.incoming import connection_ids
 from rosx.node.outgoing import OutgoingStream, configure_nodelay
 from rosx.node.receiver import LocalMessage
@@ -32,8 +34,6 @@ from rosx.wire.header import encode_header
 from rosx.wire.tcpros import Publication as PublicationInfo
 
 if TYPE_CHECKING:
-    import socket
-
     from rosx.msg.codec.message import Message
     from rosx.node.local import LocalLink
     from rosx.transport.loop_thread import LoopThread
@@ -60,23 +60,36 @@ def serialize_frame(msg: Message) -> bytes:
 class SubscriberLink:
     """One subscriber connected to a publication (what ``getBusInfo`` reports)."""
 
-    __slots__ = ("callerid", "id", "local", "remote", "stream")
+    __slots__ = ("callerid", "id", "info", "stream", "transport")
 
-    def __init__(
-        self, stream: OutgoingStream, callerid: str, local: tuple[str, int], remote: tuple[str, int]
-    ) -> None:
+    def __init__(self, stream: OutgoingStream, callerid: str, transport: str, info: str) -> None:
         self.id = next(connection_ids)
         self.stream = stream
         self.callerid = callerid
-        self.local = local
-        self.remote = remote
+        #: ``TCPROS`` or ``UNIXROS`` (`rosx.node.unixros`), and the connection's description.
+        self.transport = transport
+        self.info = info
+
+    @classmethod
+    def connected(
+        cls, stream: OutgoingStream, callerid: str, unix_address: str | None
+    ) -> SubscriberLink:
+        """The link of a connected socket, described as rospy describes its connections."""
+        sock = stream.sock
+        if sock.family == socket.AF_UNIX:
+            info = unixros.transport_info(unix_address or "", sock, stream.fileno)
+            return cls(stream, callerid, unixros.PROTOCOL, info)
+        local = sock.getsockname()[:2]
+        remote = sock.getpeername()[:2]
+        info = (
+            f"TCPROS connection on port {local[1]} to "
+            f"[{remote[0]}:{remote[1]} on socket {stream.fileno}]"
+        )
+        return cls(stream, callerid, "TCPROS", info)
 
     def transport_info(self) -> str:
         """rospy's description of the connection (``rosnode info`` parses it)."""
-        return (
-            f"TCPROS connection on port {self.local[1]} to "
-            f"[{self.remote[0]}:{self.remote[1]} on socket {self.stream.fileno}]"
-        )
+        return self.info
 
 
 class Publication:
@@ -106,6 +119,8 @@ class Publication:
         self.seq = 0
         self.bytes_published = 0
         self.closed = False
+        #: The node's UNIXROS address, for describing connections (`rosx.node.unixros`).
+        self.unix_address: str | None = None
 
     @property
     def latching(self) -> bool:
@@ -177,11 +192,10 @@ class Publication:
 
     def accept(self, sock: socket.socket, accepted: SubscriberAccepted) -> SubscriberLink:
         """Serve a subscriber whose header was accepted: reply, send the latch, then stream."""
-        configure_nodelay(sock, bool(accepted.tcp_nodelay))
-        local = sock.getsockname()[:2]
-        remote = sock.getpeername()[:2]
+        if sock.family != socket.AF_UNIX:
+            configure_nodelay(sock, bool(accepted.tcp_nodelay))
         stream = OutgoingStream(sock, self.io, self.queue_size, self._closed_stream)
-        link = SubscriberLink(stream, accepted.callerid, local, remote)
+        link = SubscriberLink.connected(stream, accepted.callerid, self.unix_address)
         with self._lock:
             stream.send(encode_header(accepted.reply))
             if self.latched is not None:
@@ -239,7 +253,7 @@ class Publication:
         """``getBusInfo`` rows: ``[connId, destId, 'o', transport, topic, connected, info]``
         (transport ``TCPROS``, or ``INTRAPROCESS`` for a subscriber of this process)."""
         rows: list[list[object]] = [
-            [link.id, link.callerid, "o", "TCPROS", self.topic, True, link.transport_info()]
+            [link.id, link.callerid, "o", link.transport, self.topic, True, link.info]
             for link in self.links
         ]
         rows += [

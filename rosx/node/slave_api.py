@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 from urllib.parse import urlparse
 
 from rosx.names import is_global, namespace_of, resolve
+from rosx.node import unixros
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
@@ -51,6 +52,9 @@ class SlaveNode(Protocol):
 
     def tcpros_address(self) -> tuple[str, int]:
         """The host and port subscribers connect to (the node's TCPROS server)."""
+
+    def unixros_address(self) -> str | None:
+        """The Unix socket subscribers of this machine may connect to (`rosx.node.unixros`)."""
 
 
 class _Invalid(Exception):  # noqa: N818 - rospy's ParameterInvalid, used only here
@@ -174,6 +178,10 @@ class SlaveApi:
             if protocol[0] == "TCPROS":
                 host, port = self.node.tcpros_address()
                 return [1, f"ready on {host}:{port}", ["TCPROS", host, port]]
+            if protocol[0] == unixros.PROTOCOL and unixros.accepts(protocol):
+                address = self.node.unixros_address()
+                if address is not None:
+                    return [1, f"ready on {address}", [unixros.PROTOCOL, address]]
         return [0, "no supported protocol implementations", []]
 
 

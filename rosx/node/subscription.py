@@ -24,7 +24,6 @@ from typing import TYPE_CHECKING, Any
 
 from rosx.node import local
 from rosx.node.incoming import IncomingStream
-from rosx.node.publication import INTRAPROCESS
 from rosx.node.receiver import Receiver
 from rosx.wire.tcpros import WILDCARD, publisher_header, subscriber_header
 
@@ -272,13 +271,14 @@ class Subscription:
 
     def bus_info(self) -> list[list[object]]:
         """``getBusInfo`` rows: ``[connId, publisherUri, 'i', transport, topic, True, info]``
-        (transport ``TCPROS``, or ``INTRAPROCESS`` for a publisher of this process)."""
+        (transport ``TCPROS``, ``UNIXROS`` for a rosx publisher of this machine, or
+        ``INTRAPROCESS`` for a publisher of this process)."""
         return [
             [
                 s.id,
                 s.publisher_uri,
                 "i",
-                INTRAPROCESS if isinstance(s, local.LocalLink) else "TCPROS",
+                s.transport,
                 self.topic,
                 True,
                 s.transport_info(),

@@ -6,6 +6,9 @@ The server reads the header (bounded in size and time), then hands the socket, t
 header and the `FrameReader` holding any bytes that followed it to the node's handler. A header
 that does not parse, names neither a topic nor a service, or that the handler refuses gets an
 ``error=`` header and a closed socket; the server goes on serving everyone else.
+
+The same server can also listen on a Unix socket (`start_unix`, for `rosx.node.unixros`):
+connections there go through the same handshake and the same handler.
 """
 
 from __future__ import annotations
@@ -15,6 +18,7 @@ import contextlib
 import socket
 from typing import TYPE_CHECKING
 
+from rosx.node import unixros
 from rosx.wire.errors import ProtocolError
 from rosx.wire.framing import DEFAULT_MAX_HEADER_SIZE, FrameReader
 from rosx.wire.header import decode_header, encode_header
@@ -40,6 +44,9 @@ class TcprosServer:
         self._io = io
         self._handler = handler
         self._sock: socket.socket | None = None
+        self._unix: socket.socket | None = None
+        #: The Unix socket's address (``@name``), once listening there.
+        self.unix_address: str | None = None
         self._tasks: set[asyncio.Task[None]] = set()
         self.port = 0
 
@@ -56,6 +63,13 @@ class TcprosServer:
         self._spawn(self._accept_loop(sock))
         return self.port
 
+    def start_unix(self, address: str) -> None:
+        """Listen on the abstract Unix socket ``address`` too (`rosx.node.unixros`). On the loop."""
+        sock = unixros.listen(address)
+        self._unix = sock
+        self.unix_address = address
+        self._spawn(self._accept_loop(sock))
+
     def _spawn(self, coro: Awaitable[None]) -> None:
         task: asyncio.Task[None] = self._io.loop.create_task(coro)  # type: ignore[arg-type]
         self._tasks.add(task)
@@ -69,7 +83,7 @@ class TcprosServer:
             except asyncio.CancelledError:
                 return
             except OSError:
-                if self._sock is None:
+                if listener.fileno() < 0:
                     return
                 await asyncio.sleep(0.05)  # out of file descriptors, say: do not spin
                 continue
@@ -123,5 +137,8 @@ class TcprosServer:
         if self._sock is not None:
             sock, self._sock = self._sock, None
             sock.close()
+        if self._unix is not None:
+            unix, self._unix = self._unix, None
+            unix.close()
         for task in list(self._tasks):
             task.cancel()

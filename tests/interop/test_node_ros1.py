@@ -349,3 +349,24 @@ def test_rosnode_info_describes_the_rosx_node(session: Session) -> None:
     assert " * topic: /rospy_twist\n    * to: /rospy_node (http://" in out
     assert "    * direction: inbound (" in out
     assert "    * transport: TCPROS" in out
+
+
+def test_ros1_publishers_answer_the_unixros_offer_with_tcpros(
+    session: Session, roscore: tuple[str, dict[str, str]]
+) -> None:
+    # rosx subscribers offer ["UNIXROS", machine] before ["TCPROS"]; rospy and roscpp (the
+    # rosout node publishes /rosout_agg) skip the protocol they do not know.
+    from rosx.node import unixros
+    from rosx.transport.client import call
+
+    master, _ = roscore
+    offer = [[unixros.PROTOCOL, unixros.machine()], ["TCPROS"]]
+    for node_name, topic in (("/rospy_node", "/rospy_twist"), ("/rosout", "/rosout_agg")):
+        code, _, uri = call(master, "lookupNode", "/test", node_name)
+        assert code == 1
+        code, _, params = call(uri, "requestTopic", "/test", topic, offer)
+        assert code == 1, (node_name, params)
+        assert params[0] == "TCPROS"
+    _wait(lambda: session.twists)
+    rows = session.node.subscriptions["/rospy_twist"].bus_info()
+    assert [row[3] for row in rows] == ["TCPROS"]

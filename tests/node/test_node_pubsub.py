@@ -1,12 +1,14 @@
 """Topics between rosx nodes in one process: delivery, latching, queues, raw subscriptions,
 publisher updates, unregistration and the Slave API's view of the connections.
 
-Every test runs twice: over the in-process links nodes of one process use by default, and over
-TCPROS (``rosx.node.local.ENABLED`` off), the path between processes."""
+Every test runs three times: over the in-process links nodes of one process use by default, over
+the Unix sockets rosx nodes of one machine use (``rosx.node.local.ENABLED`` off), and over TCPROS
+(``rosx.node.unixros.ENABLED`` off too), the path to ROS 1 nodes and other machines."""
 
 from __future__ import annotations
 
 import contextlib
+import os
 import re
 import threading
 from collections.abc import Callable, Iterator
@@ -16,7 +18,7 @@ from xmlrpc.server import SimpleXMLRPCServer
 import pytest
 
 from rosx.msg.codec.classes import get_message_class
-from rosx.node import Node, RawMessage, local
+from rosx.node import Node, RawMessage, local, unixros
 from rosx.node.node import WORKERS
 from rosx.transport.client import call
 from tests.support.procs import wait_for
@@ -29,10 +31,11 @@ String = get_message_class("std_msgs/String")
 CONNECTION_PATTERN = re.compile(r"\w+ connection on port (\d+) to \[(.*) on socket (\d+)\]")
 
 
-@pytest.fixture(autouse=True, params=["INTRAPROCESS", "TCPROS"])
+@pytest.fixture(autouse=True, params=["INTRAPROCESS", "UNIXROS", "TCPROS"])
 def transport(request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch) -> str:
     """The transport nodes of this process use among themselves in the test."""
     monkeypatch.setattr(local, "ENABLED", request.param == "INTRAPROCESS")
+    monkeypatch.setattr(unixros, "ENABLED", request.param != "TCPROS")
     return str(request.param)
 
 
@@ -277,7 +280,10 @@ def test_bus_info_describes_connections(make_node: Callable[..., Node], transpor
     else:
         match = CONNECTION_PATTERN.match(row[6])
         assert match is not None
-        assert match.group(2).endswith(f":{a.tcpros_address()[1]}")
+        if transport == "UNIXROS":  # the publisher's socket, and this process at the other end
+            assert match.group(2) == f"{a.unixros_address()} (pid {os.getpid()})"
+        else:
+            assert match.group(2).endswith(f":{a.tcpros_address()[1]}")
     code, _, stats = call(a.uri, "getBusStats", "/test")
     assert code == 1
     assert any(entry[0] == "/info" for entry in stats[0])
