@@ -156,6 +156,8 @@ for i in range(count):
     else:
         msg.linear.x = clock()
         msg.linear.y = i
+        if i % 10 == 0:
+            msg.angular.x = msg.linear.x  # when the burst (of 10) began
     pub.publish(msg)
     if period > 0:
         time.sleep(period)
@@ -176,6 +178,8 @@ make_node(name)
 cls = msg_class(CLASSES[kind])
 state = {'n': 0, 'first': 0.0, 'last': 0.0, 'bytes': 0}
 lat = []
+first = []  # every 10th message: the first of a burst
+whole = []  # from a burst's first publish to its last callback
 done = threading.Event()
 clock = time.time
 def cb(msg):
@@ -190,6 +194,10 @@ def cb(msg):
     else:
         if msg.linear.y >= warmup:
             lat.append(now - msg.linear.x)
+            if msg.linear.y % 10 == 0:
+                first.append(now - msg.linear.x)
+            elif msg.linear.y % 10 == 9:
+                whole.append(now - msg.angular.x)
         last = msg.linear.y == count - 1 and publishers == 1
     if last or state['n'] == count * publishers:
         done.set()
@@ -208,6 +216,10 @@ if lat:
     result['p50'] = lat[len(lat) // 2] * 1e6
     result['p99'] = lat[min(len(lat) - 1, int(len(lat) * 0.99))] * 1e6
     result['samples'] = len(lat)
+    first.sort()
+    result['first_p50'] = first[len(first) // 2] * 1e6
+    whole.sort()
+    result['burst_p50'] = whole[len(whole) // 2] * 1e6
 print(json.dumps(result), flush=True)
 """
 )
@@ -252,12 +264,15 @@ def run_case(
     subscribers: int = 1,
 ) -> dict[str, float]:
     """Run publisher and subscriber processes; with several subscribers, ``rate`` and
-    ``bytes_rate`` are their sum and ``slowest`` the lowest subscriber's ``rate``."""
+    ``bytes_rate`` are their sum and ``slowest`` the lowest subscriber's ``rate``. ``lib``
+    ``rosx-tcp`` is rosx over TCPROS (``ROSX_UNIXROS=0``) instead of Unix sockets."""
     python = ROS1_PYTHON if lib == "rospy" else sys.executable
     api = API_ROSPY if lib == "rospy" else API_ROSX
     env = dict(os.environ, ROS_MASTER_URI=master, PYTHONPATH=str(ROOT))
     if lib == "rospy":
         env["ROS_PACKAGE_PATH"] = "/usr/share"
+    if lib == "rosx-tcp":
+        env["ROSX_UNIXROS"] = "0"
 
     def spawn(script: str, *argv: object) -> subprocess.Popen[str]:
         return subprocess.Popen(
@@ -308,7 +323,8 @@ def run_inproc(
     period: float,
     warmup: int = 0,
 ) -> dict[str, float]:
-    """One process publishing to itself; ``lib`` ``rosx-tcp`` is rosx without in-process links."""
+    """One process publishing to itself; ``lib`` ``rosx-tcp`` is rosx without in-process links
+    (its nodes then talk over TCPROS: ``ROSX_UNIXROS=0`` too)."""
     python = ROS1_PYTHON if lib == "rospy" else sys.executable
     api = API_ROSPY if lib == "rospy" else API_ROSX
     env = dict(os.environ, ROS_MASTER_URI=master, PYTHONPATH=str(ROOT))
@@ -316,6 +332,7 @@ def run_inproc(
         env["ROS_PACKAGE_PATH"] = "/usr/share"
     if lib == "rosx-tcp":
         env["ROSX_INTRAPROCESS"] = "0"
+        env["ROSX_UNIXROS"] = "0"
     argv = [str(count), json.dumps(pub_queue), json.dumps(sub_queue), str(period), str(warmup)]
     done = subprocess.run(
         [python, "-c", api + INPROC, *argv],
@@ -332,6 +349,19 @@ def run_inproc(
 
 
 InprocRow = tuple[str, dict[str, dict[str, float]], str]
+
+#: A two-process case's figures that are medians over its rounds.
+MEDIAN_FIELDS = (
+    "p50",
+    "p99",
+    "first_p50",
+    "burst_p50",
+    "rate",
+    "bytes_rate",
+    "received",
+    "lost",
+    "slowest",
+)
 
 
 def inproc_cases(
@@ -402,13 +432,28 @@ def median(values: list[float]) -> float:
     return ordered[mid] if len(ordered) % 2 else (ordered[mid - 1] + ordered[mid]) / 2
 
 
-def print_rows(
-    rows: list[tuple[str, dict[str, float], dict[str, float], str]], rounds: int
-) -> None:
-    """Print the two-process cases."""
-    for title, ros, rx, key in rows:
+Row = tuple[str, dict[str, dict[str, float]], str]
+
+#: A two-process case's figures that are medians over its rounds.
+MEDIAN_FIELDS = (
+    "p50",
+    "p99",
+    "first_p50",
+    "burst_p50",
+    "rate",
+    "bytes_rate",
+    "received",
+    "lost",
+    "slowest",
+)
+
+
+def print_rows(rows: list[Row]) -> None:
+    """Print the two-process cases (``rosx-tcp``: rosx over TCPROS, for reference)."""
+    for title, by_lib, key in rows:
         print(title)
-        for lib, res in (("rospy", ros), ("rosx ", rx)):
+        ros, rx = by_lib["rospy"], by_lib["rosx"]
+        for lib, res in by_lib.items():
             parts = [f"received {int(res['received'])}", f"lost {int(res['lost'])}"]
             if key == "bytes_rate":
                 parts.append(f"{res['bytes_rate'] / 2**30:.2f} GiB/s")
@@ -416,17 +461,26 @@ def print_rows(
                 parts.append(f"{res['rate']:,.0f} msgs/s")
             if key == "p50":
                 parts.append(f"latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us")
+            if key == "p50" and "burst" in title:
+                parts.append(f"a burst's first message p50 {res['first_p50']:.0f} us")
+                parts.append(
+                    f"whole burst (first publish to last callback) {res['burst_p50']:.0f} us"
+                )
             if res["slowest"] != res["rate"]:
                 parts.append(f"slowest subscriber {res['slowest']:,.0f} msgs/s")
             rounds_done = len(res["rounds"])  # type: ignore[arg-type]
             parts.append(f"(median of {rounds_done}: {res['rounds']})")
-            print(f"  {lib}: " + ", ".join(parts))
+            print(f"  {lib:8}: " + ", ".join(parts))
         base, mine = ros[key], rx[key]
         if key == "p50":
             print(
                 f"  ratio rosx/rospy latency p50: {mine / base:.2f} (target <= 0.4), "
                 f"p99: {rx['p99'] / ros['p99']:.2f} (target <= 0.5)"
             )
+            if "burst" in title:
+                print(
+                    f"  ratio rosx/rospy whole burst p50: {rx['burst_p50'] / ros['burst_p50']:.2f}"
+                )
         else:
             print(f"  ratio rosx/rospy: {mine / base:.1f}x")
 
@@ -455,7 +509,7 @@ def main() -> None:
     rounds = max(1, args.rounds if not args.quick else min(args.rounds, 2))
     fast_rounds = max(1, args.fast_rounds if not args.quick else 1)
     proc, master = start_master()
-    rows: list[tuple[str, dict[str, float], dict[str, float], str]] = []
+    rows: list[Row] = []
     inproc_rows: list[InprocRow] = []
     try:
         # name, title, kind, messages per publisher, publisher queue, period, key,
@@ -579,7 +633,10 @@ def main() -> None:
                 continue
             # Rounds alternating rospy and rosx; for latency the first `warmup` messages of
             # each are ignored. Each library's figures are the medians over its rounds.
-            runs: dict[str, list[dict[str, float]]] = {"rospy": [], "rosx": []}
+            libs = (
+                ("rospy", "rosx", "rosx-tcp") if name in ("latency", "image") else ("rospy", "rosx")
+            )
+            runs: dict[str, list[dict[str, float]]] = {lib: [] for lib in libs}
             for _ in range(rounds if name in ("latency", "image") else fast_rounds):
                 for lib, results in runs.items():
                     results.append(
@@ -596,10 +653,10 @@ def main() -> None:
                             subscribers=nsubs,
                         )
                     )
-            merged = []
-            for lib in ("rospy", "rosx"):
+            merged: dict[str, dict[str, float]] = {}
+            for lib in libs:
                 res = dict(runs[lib][-1])
-                for field in ("p50", "p99", "rate", "bytes_rate", "received", "lost", "slowest"):
+                for field in MEDIAN_FIELDS:
                     if field in res:
                         res[field] = median([r[field] for r in runs[lib]])
                 scale_key = 2**30 if key == "bytes_rate" else 1
@@ -607,13 +664,13 @@ def main() -> None:
                     round(r[key] / scale_key, 2) if key == "bytes_rate" else round(r[key])
                     for r in runs[lib]
                 ]
-                merged.append(res)
-            rows.append((title, merged[0], merged[1], key))
+                merged[lib] = res
+            rows.append((title, merged, key))
     finally:
         proc.terminate()
         proc.wait()
     print_inproc(inproc_rows, rounds)
-    print_rows(rows, rounds)
+    print_rows(rows)
 
 
 if __name__ == "__main__":
