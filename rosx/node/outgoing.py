@@ -5,8 +5,8 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
 * `OutgoingStream.send` takes one complete frame (length prefix included) from any thread. When
   nothing is queued it is written straight away with one non-blocking ``send`` on the caller's
   thread, so an idle connection adds no thread hand-off to a message's latency. Whatever the
-  kernel does not take is queued, and the I/O loop flushes the queue when the socket is
-  writable, as many frames as are waiting in one ``sendmsg``.
+  kernel does not take is queued; the queue is flushed, as many frames as are waiting in one
+  ``sendmsg``, by the next `send` and by the I/O loop when the socket is writable.
 * ``queue_size`` bounds the queue: a positive size drops the *oldest* queued frame when a new
   one would exceed it (ROS 1's semantics), never the frame already partly on the wire; ``0``
   means unbounded; ``None`` means no frame is dropped and `send` blocks its (non-loop) caller
@@ -94,6 +94,13 @@ class OutgoingStream:
                 return
             pending.append(frame)
             self._pending_bytes += len(frame)
+            # Whatever the peer has read since makes room now, not when the loop next gets
+            # the GIL (up to a switch interval, 5 ms, behind a publishing thread): the queue
+            # goes out in one ``sendmsg``, coalesced (a Unix socket's buffer counts each
+            # ``send`` of a small frame as a whole kernel buffer).
+            self._flush_locked()
+            if not pending:
+                return
             limit = self._limit
             # A head half on the wire is no longer queued, and dropping it would corrupt
             # the stream: the oldest frame that may go is the one after it.
@@ -163,34 +170,36 @@ class OutgoingStream:
 
     def _on_writable(self) -> None:
         with self._lock:
-            pending = self._pending
-            if self.closed or not pending:
+            if not self.closed and self._pending:
+                self._flush_locked()
+            if self.closed or not self._pending:
                 self._io.loop.remove_writer(self.fileno)
-                return
-            head = self._head_sent
-            buffers: list[bytes | memoryview] = []
-            for index, frame in enumerate(pending):
-                if index == _MAX_IOV:
-                    break
-                buffers.append(memoryview(frame)[head:] if index == 0 and head else frame)
-            try:
-                sent = self.sock.sendmsg(buffers)
-            except (BlockingIOError, InterruptedError):
-                return
-            except OSError:
-                self._fail_locked()
-                return
-            self.bytes_sent += sent
-            self._pending_bytes -= sent
-            sent += head
-            while pending and sent >= len(pending[0]):
-                sent -= len(pending.popleft())
-                self.frames_sent += 1
-            self._head_sent = sent
-            if not pending:
-                self._io.loop.remove_writer(self.fileno)
-            if self._blocking and self._pending_bytes <= HIGH_WATER:
-                self._drained.notify_all()
+
+    def _flush_locked(self) -> None:
+        """Write as many queued frames as the socket takes, in one ``sendmsg`` (any thread)."""
+        pending = self._pending
+        head = self._head_sent
+        buffers: list[bytes | memoryview] = []
+        for index, frame in enumerate(pending):
+            if index == _MAX_IOV:
+                break
+            buffers.append(memoryview(frame)[head:] if index == 0 and head else frame)
+        try:
+            sent = self.sock.sendmsg(buffers)
+        except (BlockingIOError, InterruptedError):
+            return
+        except OSError:
+            self._fail_locked()
+            return
+        self.bytes_sent += sent
+        self._pending_bytes -= sent
+        sent += head
+        while pending and sent >= len(pending[0]):
+            sent -= len(pending.popleft())
+            self.frames_sent += 1
+        self._head_sent = sent
+        if self._blocking and self._pending_bytes <= HIGH_WATER:
+            self._drained.notify_all()
 
 
 def configure_nodelay(sock: socket.socket, nodelay: bool) -> None:

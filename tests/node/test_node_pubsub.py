@@ -26,6 +26,7 @@ from tests.support.procs import wait_for
 Twist = get_message_class("geometry_msgs/Twist")
 Vector3 = get_message_class("geometry_msgs/Vector3")
 String = get_message_class("std_msgs/String")
+Image = get_message_class("sensor_msgs/Image")
 
 # rosnode's pattern for the connection text of getBusInfo (tools/rosnode).
 CONNECTION_PATTERN = re.compile(r"\w+ connection on port (\d+) to \[(.*) on socket (\d+)\]")
@@ -137,6 +138,44 @@ def test_subscriber_queue_drops_the_oldest(make_node: Callable[..., Node]) -> No
     release.set()
     wait_for(lambda: len(got) == 3)
     assert got == [0.0, 8.0, 9.0]
+
+
+def test_a_stalled_subscriber_holds_up_nobody(make_node: Callable[..., Node]) -> None:
+    # ROS 1's semantics: each subscriber has its own queue at the publisher (queue_size,
+    # drop-oldest), so one whose callback never returns loses messages; nobody else does.
+    source, good_node, stuck_node = (
+        make_node("fan_pub"),
+        make_node("fan_good"),
+        make_node("fan_stuck"),
+    )
+    release = threading.Event()
+    stuck: list[int] = []
+    good: list[int] = []
+
+    def never_returns(msg: Any) -> None:
+        stuck.append(msg.header.seq)
+        release.wait(30)
+
+    s1 = stuck_node.subscribe("/fan", Image, never_returns, queue_size=1)
+    s2 = good_node.subscribe("/fan", Image, lambda m: good.append(m.header.seq), queue_size=1)
+    pub = source.advertise("/fan", Image, queue_size=2)
+    wait_for(
+        lambda: (
+            pub.get_num_connections() == 2
+            and s1.get_num_connections() == 1
+            and s2.get_num_connections() == 1
+        )
+    )
+    image = Image(height=512, width=512, encoding="rgba8", step=2048, data=bytes(1 << 20))
+    try:
+        # 24 MiB: far more than the stalled subscriber's socket (or queue) holds.
+        for i in range(1, 25):
+            pub.publish(image)
+            wait_for(lambda: len(good) == i)  # noqa: B023 - called before i changes
+        assert good == list(range(1, 25))
+        assert stuck == [1]
+    finally:
+        release.set()
 
 
 def test_raw_subscription_learns_the_type(make_node: Callable[..., Node]) -> None:
