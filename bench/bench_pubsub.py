@@ -9,7 +9,8 @@ with rosx under this Python, and prints:
   its synchronous one (``queue_size=None``) against rosx's equivalents;
 * latency from ``publish`` to the callback at 1 kHz and in bursts of 10 every 10 ms: p50 and
   p99, the first messages ignored as a warm-up, medians over several rounds with rospy and rosx
-  alternating;
+  alternating; and the floor under them, a bare Python sender and receiving thread over a Unix
+  socket and over loopback TCP, same pacing;
 * 1 MiB messages (``sensor_msgs/Image``) and 10 MiB ``sensor_msgs/PointCloud2``: bytes/s
   delivered, several rounds;
 * fan-out and fan-in: one publisher to 10 subscriber processes and 10 publishers to one, Twist
@@ -225,6 +226,56 @@ print(json.dumps(result), flush=True)
 )
 
 
+# The floor: a bare Python sender and a Python thread blocked in ``recv_into``, no library, the
+# same pacing and stamps as the latency cases (a 52-byte frame per message).
+FLOOR = """
+import os, socket, struct, sys, threading, time, json
+family, count, period, warmup = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4])
+if family == 'unix':
+    server = socket.socket(socket.AF_UNIX)
+    server.bind('\\0rosx-bench-floor-%d' % os.getpid())
+else:
+    server = socket.socket()
+    server.bind(('127.0.0.1', 0))
+server.listen(1)
+address = server.getsockname()
+lat = []
+def receive(conn):
+    buff = bytearray(65536)
+    while True:
+        size = conn.recv_into(buff)
+        now = time.time()
+        if not size:
+            return
+        for offset in range(0, size, 52):
+            stamp, index = struct.unpack_from('<dd', buff, offset)
+            if index >= warmup:
+                lat.append(now - stamp)
+sender = socket.socket(server.family)
+sender.connect(address)
+conn, _ = server.accept()
+thread = threading.Thread(target=receive, args=(conn,))
+thread.start()
+pid = os.fork()
+if pid == 0:
+    conn.close()
+    time.sleep(0.3)
+    pad = bytes(36)
+    for i in range(count):
+        sender.send(struct.pack('<dd', time.time(), i) + pad)
+        if period > 0:
+            time.sleep(period)
+        elif period < 0 and i % 10 == 9:
+            time.sleep(-period)
+    os._exit(0)
+sender.close()
+os.waitpid(pid, 0)
+thread.join()
+lat.sort()
+print(json.dumps({'p50': lat[len(lat) // 2] * 1e6, 'p99': lat[int(len(lat) * 0.99)] * 1e6}))
+"""
+
+
 def free_port() -> int:
     with socket.socket() as sock:
         sock.bind(("127.0.0.1", 0))
@@ -311,6 +362,19 @@ def run_case(
     if pub_outs[0].strip():
         result.update(json.loads(pub_outs[0].strip().splitlines()[-1]))
     result["lost"] = count * publishers * subscribers - result["received"]
+    return result
+
+
+def run_floor(family: str, count: int, period: float, warmup: int) -> dict[str, float]:
+    """The floor under the latency cases: bare sockets (``unix`` or ``tcp``), no library."""
+    done = subprocess.run(
+        [sys.executable, "-c", FLOOR, family, str(count), str(period), str(warmup)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
+    )
+    result: dict[str, float] = json.loads(done.stdout.strip().splitlines()[-1])
     return result
 
 
@@ -454,6 +518,12 @@ def print_rows(rows: list[Row]) -> None:
         print(title)
         ros, rx = by_lib["rospy"], by_lib["rosx"]
         for lib, res in by_lib.items():
+            if lib.startswith("floor-"):  # bare sockets: latency only
+                print(
+                    f"  {lib}: latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us "
+                    f"(median of {len(res['rounds'])}: {res['rounds']})"  # type: ignore[arg-type]
+                )
+                continue
             parts = [f"received {int(res['received'])}", f"lost {int(res['lost'])}"]
             if key == "bytes_rate":
                 parts.append(f"{res['bytes_rate'] / 2**30:.2f} GiB/s")
@@ -633,12 +703,17 @@ def main() -> None:
                 continue
             # Rounds alternating rospy and rosx; for latency the first `warmup` messages of
             # each are ignored. Each library's figures are the medians over its rounds.
-            libs = (
-                ("rospy", "rosx", "rosx-tcp") if name in ("latency", "image") else ("rospy", "rosx")
-            )
+            libs: tuple[str, ...] = ("rospy", "rosx")
+            if name in ("latency", "image"):
+                libs = (*libs, "rosx-tcp")
+            if name == "latency":
+                libs = (*libs, "floor-unix", "floor-tcp")
             runs: dict[str, list[dict[str, float]]] = {lib: [] for lib in libs}
             for _ in range(rounds if name in ("latency", "image") else fast_rounds):
                 for lib, results in runs.items():
+                    if lib.startswith("floor-"):
+                        results.append(run_floor(lib[6:], count, period, warmup))
+                        continue
                     results.append(
                         run_case(
                             lib,
