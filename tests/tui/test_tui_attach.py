@@ -37,6 +37,17 @@ def test_rosx_tools_see_lab1(host: SimHost) -> None:
     assert params.out.strip() == "255"
 
 
+def test_teleop_drives_turtlesim_in_process(host: SimHost) -> None:
+    # Teleop and turtlesim share the sim's process: their link has no socket (INTRAPROCESS),
+    # and other processes still see it, as they would see roscpp's.
+    environ = clean_environ(ROS_MASTER_URI=host.master_uri)
+    info = rosx("rosnode", "info", "/turtlesim", environ=environ)
+    assert info.status == 0
+    link = info.out.split(" * topic: /turtle1/cmd_vel\n", 1)[1].split(" * topic:", 1)[0]
+    assert link.splitlines()[0].startswith("    * to: /teleop_turtle (http://")
+    assert link.splitlines()[1:3] == ["    * direction: inbound", "    * transport: INTRAPROCESS"]
+
+
 @needs_ros1
 def test_ros1_rostopic_echo_sees_the_pose(host: SimHost) -> None:
     done = run_ros1(
