@@ -1,8 +1,9 @@
 """The subscriber end of one TCPROS topic connection (ROS wiki ROS/TCPROS, ROS/Slave_API).
 
 `IncomingStream.start` runs the handshake on the I/O loop: ask the publisher's Slave API for a
-channel (``requestTopic``), connect to the host and port it names, send the subscriber's header
-and check the publisher's. Then ``on_connected`` hands the stream to its subscription's
+channel (``requestTopic``, offering UNIXROS first: `rosx.node.unixros`), connect to the Unix
+socket or the host and port it names, send the subscriber's header and check the publisher's
+(the same over either). Then ``on_connected`` hands the stream to its subscription's
 `Receiver` thread, which calls `IncomingStream.read` whenever the socket is readable: large
 reads parsed by a `FrameReader`. A frame of 64 KiB or more is read by ``recv_into`` straight
 into a buffer of its own once its length is known, and handed over as a ``memoryview`` of it:
