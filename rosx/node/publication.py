@@ -192,7 +192,9 @@ class Publication:
 
     def accept(self, sock: socket.socket, accepted: SubscriberAccepted) -> SubscriberLink:
         """Serve a subscriber whose header was accepted: reply, send the latch, then stream."""
-        if sock.family != socket.AF_UNIX:
+        if sock.family == socket.AF_UNIX:
+            unixros.configure_publisher(sock)
+        else:
             configure_nodelay(sock, bool(accepted.tcp_nodelay))
         stream = OutgoingStream(sock, self.io, self.queue_size, self._closed_stream)
         link = SubscriberLink.connected(stream, accepted.callerid, self.unix_address)

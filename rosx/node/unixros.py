@@ -23,6 +23,7 @@ process's environment makes its nodes neither offer nor accept it (`ENABLED`).
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import os
 import secrets
@@ -36,6 +37,13 @@ PROTOCOL = "UNIXROS"
 
 #: Whether this process's nodes use Unix sockets among themselves (Linux only).
 ENABLED = sys.platform.startswith("linux") and os.environ.get("ROSX_UNIXROS", "1") != "0"
+
+#: A publisher's send buffer on a UNIXROS connection: what Linux lets loopback TCP grow to by
+#: default (``tcp_wmem``'s maximum). A Unix socket counts every queued ``send`` as a whole
+#: kernel buffer, so with the default (208 KiB) a subscriber a moment behind a Twist flood
+#: holds a few hundred messages where TCP holds tens of thousands. The kernel caps it at
+#: ``net.core.wmem_max``.
+SEND_BUFFER = 4 * 1024 * 1024
 
 _BOOT_ID = "/proc/sys/kernel/random/boot_id"
 _CREDENTIALS = struct.Struct("3i")  # struct ucred: pid, uid, gid
@@ -99,6 +107,13 @@ def listen(address: str) -> socket.socket:
         sock.close()
         raise
     return sock
+
+
+def configure_publisher(sock: socket.socket) -> None:
+    """Size a publisher's end of a UNIXROS connection (`SEND_BUFFER`)."""
+    with contextlib.suppress(OSError):
+        if sock.getsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF) < SEND_BUFFER:
+            sock.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, SEND_BUFFER)
 
 
 def peer_pid(sock: socket.socket) -> int:

@@ -6,7 +6,9 @@ they connect through their sockets as nodes of two processes do.
 
 from __future__ import annotations
 
+import socket
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -102,3 +104,18 @@ def test_unreachable_unix_socket_falls_back_to_tcpros(
     pub.publish(_twist(3.5))
     wait_for(lambda: got)
     assert got == [3.5]
+
+
+def test_publisher_buffers_as_much_as_loopback_tcp(make_node: Callable[..., Node]) -> None:
+    # A Unix socket counts each queued frame as a whole kernel buffer: the publisher's end is
+    # given TCP's default maximum, so a subscriber a moment behind a flood loses nothing more
+    # than over TCPROS. Linux doubles what is asked, up to net.core.wmem_max.
+    talker, listener = make_node("b_talker"), make_node("b_listener")
+    pub = talker.advertise("/buffered", Twist, queue_size=100)
+    sub = listener.subscribe("/buffered", Twist, lambda m: None)
+    wait_for(lambda: pub.get_num_connections() and sub.get_num_connections())
+    (link,) = talker.publications["/buffered"].links
+    assert link.transport == unixros.PROTOCOL
+    wmem_max = int(Path("/proc/sys/net/core/wmem_max").read_text())
+    granted = link.stream.sock.getsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF)
+    assert granted >= 2 * min(unixros.SEND_BUFFER, wmem_max)
