@@ -8,7 +8,7 @@ inside a method, as rospy names it). Two handlers on ``rosout`` carry the record
 * `ConsoleHandler` prints them as rospy does (``[INFO] [1700000000.123456]: text``, stdout
   below WARN and stderr from WARN on; ``ROSCONSOLE_FORMAT`` is honoured). Before `init_node`
   there is no node to log through: as with rospy, only WARN and above are printed, as the bare
-  text on stderr.
+  text on stderr, and only when no handler of the script's on ``rosout`` takes the record.
 * `RosoutHandler` writes them to the node's log file (``__log:=``) and publishes them on
   ``/rosout``.
 
@@ -77,7 +77,7 @@ class ConsoleHandler(RosStreamHandler):
         level = ros_level(record.levelno)
         node = state.CLIENT.node
         if node is None:
-            if level >= WARN:
+            if level >= WARN and not _handled_elsewhere(record):
                 sys.stderr.write(record_text(record) + "\n")
                 sys.stderr.flush()
             return
@@ -106,6 +106,17 @@ class RosoutHandler(logging.Handler):
             function=record.funcName,
             line=record.lineno,
         )
+
+
+def _handled_elsewhere(record: logging.LogRecord) -> bool:
+    """Whether a script's own handler on ``rosout`` (or the record's child of it) takes the
+    record: before the node, rospy prints the bare text only when no handler does."""
+    logger: logging.Logger | None = logging.getLogger(record.name)
+    while logger is not None and logger is not logging.root:
+        if any(not isinstance(h, (ConsoleHandler, RosoutHandler)) for h in logger.handlers):
+            return True
+        logger = logger.parent if logger.propagate else None
+    return False
 
 
 def _install_handlers() -> None:

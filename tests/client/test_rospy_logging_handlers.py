@@ -179,3 +179,13 @@ def test_a_handler_that_logs_does_not_recurse(
         logger.removeHandler(echo)
     assert echo.seen() == [("rosout", logging.INFO, "said")]
     assert lines(capsys.readouterr().out) == [("INFO", "said"), ("INFO", "echo: said")]
+
+
+def test_before_init_node_a_handler_takes_the_warnings_from_stderr(
+    rospy: ModuleType, handler: Records, capsys: pytest.CaptureFixture[str]
+) -> None:
+    logging.getLogger("rosout").setLevel(logging.WARNING)  # Python's default, before the node
+    rospy.loginfo("quiet")
+    rospy.logwarn("taken")
+    assert handler.seen() == [("rosout", logging.WARNING, "taken")]
+    assert capsys.readouterr() == ("", "")
