@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING, Any
 
 from rosx.client import state
 from rosx.client.exceptions import ROSException, ROSInitException
+from rosx.client.logs import LoggerLevels
 from rosx.names import (
     anonymous_node_name,
     is_legal_base_name,
@@ -108,7 +109,7 @@ def init_node(
     node = _start_node(name, log_level or INFO, xmlrpc_port, tcpros_port, disable_rosout)
     node.on_shutdown(state.CLIENT.signal_shutdown)
     if log_file is not None:
-        node.log_sink.record = log_file.rosout
+        node.log_sink.record = log_file.write
         node.on_shutdown(
             lambda reason: log_file.write("rospy.core", INFO, f"signal_shutdown [{reason}]")
         )
@@ -136,7 +137,7 @@ def _make_node(
     from rosx.node import Node  # noqa: PLC0415 - the runtime loads with the first node
 
     args = state.CLIENT.args
-    return Node(
+    node = Node(
         name,
         namespace=state.CLIENT.namespace(),
         master_uri=args.master,
@@ -149,6 +150,9 @@ def _make_node(
         console=_console,
         private_params=dict(args.params),
     )
+    # The rospy API logs through Python's ``rosout`` logger: its level is the node's.
+    node.log_sink.levels = LoggerLevels(node.log_sink.levels)
+    return node
 
 
 def _start_node(

@@ -3,9 +3,10 @@ node, ``<log folder>/<run_id>/<name>-N.log``).
 
 Each line is rospy's file format, ``[logger][LEVEL] YYYY-MM-DD HH:MM:SS,mmm: text``, with
 Python's level names (``WARNING``, ``CRITICAL`` for FATAL): the node's own records under the
-``rosout`` logger, and rospy's start and stop lines (``rospy.client``'s ``init_node, name[…],
-pid[…]``, ``rospy.core``'s ``signal_shutdown […]``). rospy's other internal lines (XML-RPC
-server, registration) are not written. A file that cannot be opened is no log, not an error.
+``rosout`` logger (``rosout.<name>`` given ``logger_name=``), and rospy's start and stop lines
+(``rospy.client``'s ``init_node, name[…], pid[…]``, ``rospy.core``'s ``signal_shutdown […]``).
+rospy's other internal lines (XML-RPC server, registration) are not written. A file that cannot
+be opened is no log, not an error.
 """
 
 from __future__ import annotations
@@ -36,10 +37,6 @@ class LogFile:
             if not self._stream.closed:
                 self._stream.write(line + text + "\n")
                 self._stream.flush()
-
-    def rosout(self, level: int, text: str) -> None:
-        """A record the node logged (``rospy.loginfo`` and friends)."""
-        self.write("rosout", level, text)
 
     def close(self) -> None:
         with self._lock:

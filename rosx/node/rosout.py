@@ -21,7 +21,7 @@ import time
 from typing import TYPE_CHECKING, TextIO
 
 if TYPE_CHECKING:
-    from collections.abc import Callable, Mapping
+    from collections.abc import Callable, Mapping, MutableMapping
 
 DEBUG = 1
 INFO = 2
@@ -97,7 +97,9 @@ class NodeLog:
     """A node's logger levels and the sinks of its records (``/rosout`` and the console).
 
     ``publish`` sends one ``rosgraph_msgs/Log`` (built by the node); ``console`` receives the
-    level and the formatted line, or is ``None`` for a quiet node.
+    level and the formatted line, or is ``None`` for a quiet node. `log` filters a record by the
+    ``rosout`` level and hands it to both; `show` and `send` are the two halves, for a caller
+    that has filtered it already (say, a `logging` handler).
     """
 
     def __init__(
@@ -110,11 +112,13 @@ class NodeLog:
         environ: Mapping[str, str] | None = None,
     ) -> None:
         self.name = name
-        self.levels: dict[str, int] = {ROSOUT_LOGGER: level, "rospy": INFO, "rosx": INFO}
+        #: Level of each logger by name; may be replaced by another mapping (one kept in
+        #: Python's `logging`, say) as long as it holds ``rosout``.
+        self.levels: MutableMapping[str, int] = {ROSOUT_LOGGER: level, "rospy": INFO, "rosx": INFO}
         self.publish = publish
         self.console = console
-        #: Receives each emitted record's level and text (a log file), if set.
-        self.record: Callable[[int, str], None] | None = None
+        #: Receives each emitted record's logger name, level and text (a log file), if set.
+        self.record: Callable[[str, int, str], None] | None = None
         self._environ = environ
         self._busy = threading.local()
 
@@ -133,8 +137,20 @@ class NodeLog:
         """Emit one record to the console and ``/rosout`` if its level is enabled."""
         if level < self.levels[ROSOUT_LOGGER]:
             return
-        if self.record is not None:
-            self.record(level, message)
+        self.show(level, message, file=file, function=function, line=line)
+        self.send(level, message, file=file, function=function, line=line)
+
+    def show(
+        self,
+        level: int,
+        message: str,
+        *,
+        logger: str = ROSOUT_LOGGER,
+        file: str = "",
+        function: str = "",
+        line: int = 0,
+    ) -> None:
+        """Print one record on the console (if the node has one), whatever its level."""
         if self.console is not None:
             self.console(
                 level,
@@ -142,12 +158,27 @@ class NodeLog:
                     level,
                     message,
                     node=self.name,
+                    logger=logger,
                     file=file,
                     function=function,
                     line=line,
                     environ=self._environ,
                 ),
             )
+
+    def send(
+        self,
+        level: int,
+        message: str,
+        *,
+        logger: str = ROSOUT_LOGGER,
+        file: str = "",
+        function: str = "",
+        line: int = 0,
+    ) -> None:
+        """Write one record to the log file and publish it on ``/rosout``, whatever its level."""
+        if self.record is not None:
+            self.record(logger, level, message)
         # A record logged while publishing one (say, about a failed connection) is not sent
         # again to /rosout: that could recurse without end.
         if self.publish is not None and not getattr(self._busy, "active", False):

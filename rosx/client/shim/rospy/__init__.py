@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import importlib
 
-_SUBMODULES = ("exceptions", "names")
+_SUBMODULES = ("exceptions", "impl", "names")
 
 try:
     import rosx.client as _client
