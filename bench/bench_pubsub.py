@@ -414,19 +414,6 @@ def run_inproc(
 
 InprocRow = tuple[str, dict[str, dict[str, float]], str]
 
-#: A two-process case's figures that are medians over its rounds.
-MEDIAN_FIELDS = (
-    "p50",
-    "p99",
-    "first_p50",
-    "burst_p50",
-    "rate",
-    "bytes_rate",
-    "received",
-    "lost",
-    "slowest",
-)
-
 
 def inproc_cases(
     master: str, small: int, latency: int, rounds: int, warmup: int
