@@ -57,6 +57,18 @@ _DIRECT = 64 * 1024
 _DONTWAIT = getattr(socket, "MSG_DONTWAIT", 0)
 
 
+def describe_connection(sock: socket.socket, fileno: int, remote: tuple[str, int]) -> str:
+    """A topic connection as ``getBusInfo`` describes it, in rospy's shape (``rosnode info``
+    parses it): over TCP, this end's port and ``remote`` host and port; over a Unix socket,
+    ``remote``'s first item is the publisher's UNIXROS address (`rosx.node.unixros`)."""
+    if sock.family == socket.AF_UNIX:
+        return unixros.transport_info(remote[0], sock, fileno)
+    return (
+        f"TCPROS connection on port {sock.getsockname()[1]} to "
+        f"[{remote[0]}:{remote[1]} on socket {fileno}]"
+    )
+
+
 class GiveUp(Exception):  # noqa: N818 - a signal between helpers, not an error for users
     """The publisher cannot be reached and should not be retried."""
 
@@ -209,13 +221,7 @@ class IncomingStream:
         self.header = verdict.header
         self.latching = verdict.latching
         self.fileno = sock.fileno()
-        if sock.family == socket.AF_UNIX:
-            self.info = unixros.transport_info(self.remote[0], sock, self.fileno)
-        else:
-            self.info = (
-                f"TCPROS connection on port {sock.getsockname()[1]} to "
-                f"[{self.remote[0]}:{self.remote[1]} on socket {self.fileno}]"
-            )
+        self.info = describe_connection(sock, self.fileno, self.remote)
         self.connected = True
         self._reader.max_frame_size = DEFAULT_MAX_FRAME_SIZE
         self._on_connected(self)

@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING
 
 from rosx.msg.codec.clone import clone
 from rosx.node import unixros
-from rosx.node.incoming import connection_ids
+from rosx.node.incoming import connection_ids, describe_connection
 from rosx.node.outgoing import OutgoingStream, configure_nodelay
 from rosx.node.receiver import LocalMessage
 from rosx.wire.header import encode_header
@@ -77,14 +77,9 @@ class SubscriberLink:
         """The link of a connected socket, described as rospy describes its connections."""
         sock = stream.sock
         if sock.family == socket.AF_UNIX:
-            info = unixros.transport_info(unix_address or "", sock, stream.fileno)
+            info = describe_connection(sock, stream.fileno, (unix_address or "", 0))
             return cls(stream, callerid, unixros.PROTOCOL, info)
-        local = sock.getsockname()[:2]
-        remote = sock.getpeername()[:2]
-        info = (
-            f"TCPROS connection on port {local[1]} to "
-            f"[{remote[0]}:{remote[1]} on socket {stream.fileno}]"
-        )
+        info = describe_connection(sock, stream.fileno, sock.getpeername()[:2])
         return cls(stream, callerid, "TCPROS", info)
 
     def transport_info(self) -> str:
