@@ -5,11 +5,13 @@ channel (``requestTopic``, offering UNIXROS first: `rosx.node.unixros`), connect
 socket or the host and port it names, send the subscriber's header and check the publisher's
 (the same over either). Then ``on_connected`` hands the stream to its subscription's
 `Receiver` thread, which calls `IncomingStream.read` whenever the socket is readable: large
-reads parsed by a `FrameReader`. A frame of 64 KiB or more is read by ``recv_into`` straight
-into a buffer of its own once its length is known, and handed over as a ``memoryview`` of it:
-the kernel's copy is then the only one before the decoder's (``bytes`` fields copy once;
-``numpy`` arrays read the buffer in place). ``on_close`` is called once, on the loop, when
-the stream ends. The byte and frame counts (``getBusStats``) are written by that one thread only.
+reads parsed by a `FrameReader`, except a read that is exactly one whole frame (the usual one on
+a topic whose subscriber keeps up), handed over as it is. A frame of 64 KiB or more is read by
+``recv_into`` straight into a buffer of its own once its length is known, and handed over as a
+``memoryview`` of it: the kernel's copy is then the only one before the decoder's (``bytes``
+fields copy once; ``numpy`` arrays read the buffer in place). ``on_close`` is called once, on
+the loop, when the stream ends. The byte and frame counts (``getBusStats``) are written by that
+one thread only (and by the handshake, before it starts).
 
 Retries follow rospy: a publisher whose XML-RPC server refuses the connection, or that refuses
 the topic, is given up at once; other failures to reach it (timeouts, unreachable hosts, a
@@ -24,6 +26,7 @@ from __future__ import annotations
 import asyncio
 import itertools
 import socket
+import struct
 from typing import TYPE_CHECKING, Any, Protocol
 
 from rosx.master.client import MasterError
@@ -55,6 +58,7 @@ _READ_BOUND = 8 * 1024 * 1024
 # A frame at least this large is read straight into a buffer of its own (`_read_large`).
 _DIRECT = 64 * 1024
 _DONTWAIT = getattr(socket, "MSG_DONTWAIT", 0)
+_U32 = struct.Struct("<I")
 
 
 def describe_connection(sock: socket.socket, fileno: int, remote: tuple[str, int]) -> str:
@@ -130,6 +134,7 @@ class IncomingStream:
         self.frames_received = 0
         self._reader = FrameReader(DEFAULT_MAX_HEADER_SIZE)
         self._scratch = bytearray(_RECV_SIZE)
+        self._view = memoryview(self._scratch)
         self._task: asyncio.Task[None] | None = None
         #: The receiver thread reading this stream once connected (see `Receiver`).
         self.receiver: Detacher | None = None
@@ -268,6 +273,7 @@ class IncomingStream:
             reader.feed(data)
             block = reader.next_frame()
             if block is not None:
+                self.bytes_received += reader.buffered  # messages sent right behind it
                 return decode_header(block)
 
     # -- the data path (on the receiver's thread) --------------------------------------------
@@ -284,30 +290,41 @@ class IncomingStream:
             return None
         scratch = self._scratch
         reader = self._reader
-        pending = reader.pending()
-        if pending >= _DIRECT:
-            return self._read_large(sock, pending)
+        whole = not reader.buffered  # a read may then hold exactly one frame
+        if not whole:
+            pending = reader.pending()
+            if pending >= _DIRECT:
+                return self._read_large(sock, pending)
+        view = self._view
         total = 0
         flags = 0
-        with memoryview(scratch) as view:
-            while True:
-                try:
-                    size = sock.recv_into(scratch, 0, flags)
-                except (BlockingIOError, InterruptedError):
-                    break
-                except OSError:
-                    return None
-                if size == 0:
-                    if total:
-                        break  # deliver what came; the next read sees the end
-                    return None
-                total += size
-                reader.feed(view[:size])
-                if size < len(scratch) or not _DONTWAIT or total >= _READ_BOUND:
-                    break
-                if reader.pending() >= _DIRECT:
-                    break  # the rest of that frame goes straight into its own buffer
-                flags = _DONTWAIT
+        while True:
+            try:
+                size = sock.recv_into(scratch, 0, flags)
+            except (BlockingIOError, InterruptedError):
+                break
+            except OSError:
+                return None
+            if size == 0:
+                if total:
+                    break  # deliver what came; the next read sees the end
+                return None
+            if whole and 4 <= size < _RECV_SIZE and _U32.unpack_from(scratch)[0] == size - 4:
+                # The usual read on a topic that keeps up: one whole frame, nothing before it.
+                frame = bytes(view[4:size])
+                self.bytes_received += size
+                self.frames_received += 1
+                if self.latching:
+                    self.latched = frame
+                return (frame,)
+            whole = False
+            total += size
+            reader.feed(view[:size])
+            if size < _RECV_SIZE or not _DONTWAIT or total >= _READ_BOUND:
+                break
+            if reader.pending() >= _DIRECT:
+                break  # the rest of that frame goes straight into its own buffer
+            flags = _DONTWAIT
         self.bytes_received += total
         return self.take_frames()
 

@@ -28,18 +28,23 @@ The contract:
   frames, with `Receiver.put_local` on the publishing thread; the subscription's own local
   thread runs their callbacks. A bounded queue drops the oldest, as for frames; an unbounded
   one makes a synchronous publisher (``queue_size=None``) wait while more than `LOCAL_HIGH_WATER`
-  messages are queued, as a full socket would.
+  messages are queued, as a full socket would. The local thread sleeps on a condition for
+  `LOCAL_BATCH_WINDOW` after each message (a flood is taken in batches), then on a pipe, which
+  the next message's publisher writes to without the GIL (it is handled at once).
+* Every thread that runs callbacks asks for a short time slice (`rosx.node.slices`).
 """
 
 from __future__ import annotations
 
 import contextlib
+import os
 import socket
 import threading
 from collections import deque
 from typing import TYPE_CHECKING, Any
 
 from rosx.msg.codec.clone import clone
+from rosx.node import slices
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -58,6 +63,11 @@ if TYPE_CHECKING:
 
 #: With an unbounded queue, a synchronous in-process publisher waits while more wait than this.
 LOCAL_HIGH_WATER = 10_000
+
+#: Seconds the local thread waits for the next message in the way that batches a flood.
+LOCAL_BATCH_WINDOW = 0.0002
+_ON_CONDITION = 1
+_ON_PIPE = 2
 
 
 class LocalMessage:
@@ -124,13 +134,19 @@ class Receiver:
         self._stopped = False
         self._local: threading.Thread | None = None
         self._wake = threading.Condition(threading.Lock())
-        self._sleeping = False
+        #: The local thread's pipe (read end, write end) while it runs; it sleeps reading it.
+        self._doorbell: tuple[int, int] | None = None
+        #: How the local thread sleeps, if it does: 0, `_ON_CONDITION` or `_ON_PIPE`.
+        self._sleeping = 0
         self._waiting_publishers = 0
         self._counting = threading.Lock()
-        #: Frames queued, and frames whose callbacks have run (how far the callbacks are
-        #: behind). Several reader threads queue at once, so `received` grows under a lock of
-        #: its own; `handled` grows only under the dispatch lock.
-        self.received = 0
+        #: `received` (frames and messages taken in) against `handled` (those whose callbacks
+        #: have run) says how far the callbacks are behind. A connected stream's frames are
+        #: counted by its own thread alone (``frames_received``), so reading costs no lock;
+        #: the rest (queued by the loop or in this process, or from ended streams) under
+        #: `_counting`, which also guards the set of streams. `handled` grows only under the
+        #: dispatch lock.
+        self._received_before = 0
         self.handled = 0
 
     # -- callbacks (any thread) --------------------------------------------------------------
@@ -193,11 +209,22 @@ class Receiver:
         queue.append((payload, header, None))
         if self._local is None:
             self._start_local()
-        # The local thread sets `_sleeping` under the lock before its last look at the queue,
-        # so a message appended before that look is seen, and one after it finds the flag set.
-        if self._sleeping:
+        # The local thread sets `_sleeping` before its last look at the queue, so a message
+        # appended before that look is seen, and one after it finds the flag set.
+        sleeping = self._sleeping
+        if sleeping == _ON_PIPE:
+            self._ring()
+        elif sleeping:
             with self._wake:
                 self._wake.notify_all()
+
+    def _ring(self) -> None:
+        # The local thread sleeps in a read of its pipe, not on a condition, so that it is
+        # woken by a system call, made without the GIL: it can run at once (`slices`), not
+        # after this thread next lets the GIL go.
+        with self._wake:  # the local thread closes the pipe under the lock
+            if self._doorbell is not None:
+                os.write(self._doorbell[1], b"\0")
 
     def _wait_for_room(self) -> None:
         queue = self._queue
@@ -213,28 +240,52 @@ class Receiver:
         with self._wake:
             if self._local is not None:
                 return
+            self._doorbell = os.pipe()
             self._local = threading.Thread(
-                target=self._local_loop, name=f"{self._name}-local", daemon=True
+                target=self._local_loop,
+                args=(self._doorbell[0],),
+                name=f"{self._name}-local",
+                daemon=True,
             )
             self._local.start()
 
-    def _local_loop(self) -> None:
+    def _local_loop(self, bell: int) -> None:
         queue = self._queue
         wake = self._wake
-        while not self._stopped:
-            if queue:
-                self._dispatch_all()
-                if self._waiting_publishers:
-                    with wake:
-                        wake.notify_all()
-                continue
-            with wake:
-                self._sleeping = True
+        slices.request_short_slice()
+        try:
+            while not self._stopped:
+                if queue:
+                    self._dispatch_all()
+                    if self._waiting_publishers:
+                        with wake:
+                            wake.notify_all()
+                    continue
+                # Messages coming faster than a wake-up costs are taken in batches: for a
+                # while after each one the thread waits on the condition, which a publisher
+                # notifies holding the GIL, so it goes on publishing until it lets the GIL
+                # go. Then the thread sleeps on its pipe, and the next message, after a
+                # pause, is handled as soon as it is published.
+                with wake:
+                    self._sleeping = _ON_CONDITION
+                    try:
+                        if not queue and not self._stopped:
+                            wake.wait(LOCAL_BATCH_WINDOW)
+                    finally:
+                        self._sleeping = 0
+                if queue or self._stopped:
+                    continue
+                self._sleeping = _ON_PIPE
                 try:
                     if not queue and not self._stopped:
-                        wake.wait()
+                        os.read(bell, 4096)  # one byte or more: wake-ups since the last look
                 finally:
-                    self._sleeping = False
+                    self._sleeping = 0
+        finally:
+            with wake:
+                ends, self._doorbell = self._doorbell, None
+            for end in ends or ():
+                os.close(end)
 
     # -- connections -------------------------------------------------------------------------
 
@@ -245,7 +296,8 @@ class Receiver:
             return
         stream.receiver = self
         stream.sock.setblocking(True)
-        self._streams.add(stream)
+        with self._counting:
+            self._streams.add(stream)
         threading.Thread(
             target=self._read_loop, args=(stream,), name=self._name, daemon=True
         ).start()
@@ -265,24 +317,25 @@ class Receiver:
             self.detach(stream)
         with self._wake:
             self._wake.notify_all()
+        self._ring()
 
     # -- the threads -------------------------------------------------------------------------
 
     def _read_loop(self, stream: IncomingStream) -> None:
         queue = self._queue
         lock = self._dispatching
+        slices.request_short_slice()
         try:
             frames = stream.take_frames()  # what came with the header (a latched message)
             while frames is not None and not self._stopped:
                 if frames:
-                    self._count(len(frames))
                     header = stream.header
                     if len(frames) == 1 and not queue and lock.acquire(blocking=False):
                         # Nothing waits and no callback runs: run this frame's callbacks now,
                         # without the trip through the queue (the same order either way).
                         try:
                             if not self._stopped:
-                                self._dispatch((frames[0], header, None))
+                                self._run(frames[0], header, self.entries)
                         finally:
                             lock.release()
                         if queue:
@@ -292,16 +345,24 @@ class Receiver:
                         self._dispatch_all()
                 frames = stream.read()
         finally:
-            self._streams.discard(stream)
+            with self._counting:
+                self._streams.discard(stream)
+                self._received_before += stream.frames_received
             stream.receiver = None
             sock, stream.sock = stream.sock, None
             if sock is not None:
                 sock.close()
             self._io.call_soon(stream.close)
 
+    @property
+    def received(self) -> int:
+        """Frames and messages queued or run so far."""
+        with self._counting:
+            return self._received_before + sum(s.frames_received for s in self._streams)
+
     def _count(self, frames: int) -> None:
         with self._counting:
-            self.received += frames
+            self._received_before += frames
 
     def _dispatch_all(self) -> None:
         # Another thread may queue frames just after this one found the queue empty, then
@@ -322,6 +383,20 @@ class Receiver:
         entries = (only,) if only is not None else self.entries
         if isinstance(frame, LocalMessage):
             self._dispatch_local(frame, header, entries)
+        else:
+            self._run(frame, header, entries)
+
+    def _run(
+        self, frame: bytes | memoryview, header: dict[str, str], entries: tuple[Entry, ...]
+    ) -> None:
+        if len(entries) == 1:  # the usual subscription: one callback, one decoded message
+            callback, decode = entries[0]
+            try:
+                callback(decode(frame, header))
+            except Exception as exc:  # a user's callback must not end the thread
+                if self._on_error is not None and not self._stopped:
+                    self._on_error(exc, callback)
+            self.handled += 1
             return
         decoded: dict[Any, Any] = {}
         for entry in entries:

@@ -9,6 +9,7 @@ from typing import Any
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node, RawMessage
+from rosx.node import receiver as receiver_module
 from rosx.node.local import LocalLink
 from rosx.node.publication import serialize_frame
 from tests.support.cli import rosx_process
@@ -77,6 +78,33 @@ def test_a_synchronous_publisher_loses_nothing_past_the_high_water(
         pub.publish(twist(i))
     wait_for(lambda: len(got) == 30_000, timeout=60)
     assert got == [float(i) for i in range(30_000)]
+
+
+def test_the_local_thread_wakes_for_a_flood_and_after_a_pause(
+    make_node: Callable[..., Node],
+) -> None:
+    """The local thread waits for a flood's next message on a condition, and after a pause on
+    a pipe: a message gets through either way, and the pipe goes with the subscriber."""
+    a, b = make_node("wake_pub"), make_node("wake_sub")
+    got: list[float] = []
+    sub = b.subscribe("/wake", Twist, lambda m: got.append(m.linear.x))
+    pub = a.advertise("/wake", Twist, queue_size=None)
+    wait_for(linked(pub, sub))
+    receiver = sub.subscription.receiver
+    for i in range(5):
+        pub.publish(twist(i))
+        wait_for(lambda: len(got) == i + 1)  # noqa: B023 - awaited before `i` changes
+        wait_for(lambda: receiver._sleeping == receiver_module._ON_PIPE)  # the pause
+    for i in range(5, 3000):  # a flood: most wake-ups find the thread on the condition
+        pub.publish(twist(i))
+    wait_for(lambda: len(got) == 3000)
+    assert got == [float(i) for i in range(3000)]
+    assert receiver._doorbell is not None
+    thread = receiver._local
+    assert thread is not None
+    sub.unregister()
+    wait_for(lambda: not thread.is_alive())
+    assert receiver._doorbell is None  # both ends closed
 
 
 def test_each_subscriber_gets_a_copy_taken_at_publish(make_node: Callable[..., Node]) -> None:

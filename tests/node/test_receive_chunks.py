@@ -1,0 +1,149 @@
+"""A subscriber reads frames whole however the publisher's bytes are cut up on the way.
+
+A read that holds exactly one whole frame is handed over at once; anything else goes through
+the stream's frame reader. The publisher here is a bare TCPROS socket, so the test decides
+where each read ends: it waits, through ``getBusStats``, until the subscriber has read every
+byte sent before sending the next piece.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import socket
+import threading
+from collections.abc import Callable, Iterator
+from typing import Any
+from xmlrpc.server import SimpleXMLRPCServer
+
+from rosx.msg.codec.classes import get_message_class
+from rosx.node import Node
+from rosx.node.publication import serialize_frame
+from rosx.transport.client import call
+from rosx.wire.framing import FrameReader
+from rosx.wire.header import decode_header, encode_header
+from tests.support.procs import wait_for
+
+String = get_message_class("std_msgs/String")
+
+
+@contextlib.contextmanager
+def bare_publisher(topic: str) -> Iterator[tuple[str, socket.socket]]:
+    """A Slave API that answers ``requestTopic`` with a TCPROS socket of the test's own."""
+    listener = socket.create_server(("127.0.0.1", 0))
+    port = listener.getsockname()[1]
+    server = SimpleXMLRPCServer(("127.0.0.1", 0), logRequests=False)
+    server.register_function(lambda *_: [1, "", ["TCPROS", "127.0.0.1", port]], "requestTopic")
+    server.register_function(lambda *_: [1, "", [[topic, "std_msgs/String"]]], "getPublications")
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}/", listener
+    finally:
+        server.shutdown()
+        server.server_close()
+        thread.join()
+        listener.close()
+
+
+def accept_subscriber(listener: socket.socket, topic: str, behind: bytes = b"") -> socket.socket:
+    """Take the subscriber's connection and answer its header as a publisher (``behind`` it,
+    in the same ``send``, whatever is given)."""
+    listener.settimeout(30)
+    conn, _ = listener.accept()
+    conn.settimeout(30)
+    conn.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+    reader = FrameReader()
+    while (block := reader.next_frame()) is None:
+        reader.feed(conn.recv(65536))
+    assert decode_header(block)["topic"] == topic
+    reply = {
+        "callerid": "/bare_pub",
+        "topic": topic,
+        "type": "std_msgs/String",
+        "md5sum": String._md5sum,
+        "message_definition": String._full_text,
+    }
+    conn.sendall(encode_header(reply) + behind)
+    return conn
+
+
+def bytes_read(node: Node, topic: str) -> Callable[[], int]:
+    """What the node's subscriber has read from its one connection to ``topic``."""
+
+    def count() -> int:
+        _, _, (_, subscriptions, _) = call(node.uri, "getBusStats", "/test")
+        for name, connections in subscriptions:
+            if name == topic and connections:
+                return int(connections[0][1])
+        return 0
+
+    return count
+
+
+def test_frames_cut_anywhere_arrive_whole_and_in_order(
+    make_node: Callable[..., Node], master: str
+) -> None:
+    topic = "/chunks"
+    node = make_node("chunk_listener")
+    got: list[str] = []
+    with bare_publisher(topic) as (uri, listener):
+        call(master, "registerPublisher", "/bare_pub", topic, "std_msgs/String", uri)
+        sub = node.subscribe(topic, String, lambda msg: got.append(msg.data))
+        conn = accept_subscriber(listener, topic)
+        with conn:
+            frames = {text: serialize_frame(String(data=text)) for text in "abcdefgh"}
+            read = bytes_read(node, topic)
+            wait_for(lambda: sub.get_num_connections() == 1)
+            a, b, c, d, e, f, g, h = frames.values()
+            pieces = [
+                a,  # one whole frame
+                b[:2],  # part of a length
+                b[2:] + c,  # the rest, then a whole frame
+                d + e[:7],  # a whole frame and part of the next one's payload
+                e[7:],  # its end
+                f,  # a whole frame again
+                g + h,  # two in one read
+            ]
+            sent = 0
+            for piece in pieces:
+                conn.sendall(piece)
+                sent += len(piece)
+                wait_for(lambda: read() == sent)  # noqa: B023 - awaited before `sent` changes
+            wait_for(lambda: len(got) == len(frames))
+    assert got == list("abcdefgh")
+
+
+def test_an_empty_frame_is_a_message(make_node: Callable[..., Node], master: str) -> None:
+    """A frame of no bytes (``std_msgs/Empty``'s) read alone is one message."""
+    topic = "/empties"
+    node = make_node("empty_listener")
+    got: list[Any] = []
+    with bare_publisher(topic) as (uri, listener):
+        call(master, "registerPublisher", "/bare_pub", topic, "std_msgs/String", uri)
+        sub = node.subscribe(topic, None, got.append)
+        conn = accept_subscriber(listener, topic)
+        with conn:
+            read = bytes_read(node, topic)
+            wait_for(lambda: sub.get_num_connections() == 1)
+            conn.sendall(b"\0\0\0\0")
+            wait_for(lambda: read() == 4)
+            conn.sendall(serialize_frame(String(data="x")))
+            wait_for(lambda: len(got) == 2)
+    assert [bytes(m._buff) for m in got] == [b"", b"\x01\0\0\0x"]
+
+
+def test_a_message_right_behind_the_header_is_read_and_counted(
+    make_node: Callable[..., Node], master: str
+) -> None:
+    """Bytes that come in the handshake's read count in ``getBusStats`` as later ones do."""
+    topic = "/eager"
+    node = make_node("eager_listener")
+    got: list[str] = []
+    with bare_publisher(topic) as (uri, listener):
+        call(master, "registerPublisher", "/bare_pub", topic, "std_msgs/String", uri)
+        node.subscribe(topic, String, lambda msg: got.append(msg.data))
+        frame = serialize_frame(String(data="first"))
+        conn = accept_subscriber(listener, topic, behind=frame)
+        with conn:
+            wait_for(lambda: got == ["first"])
+            assert bytes_read(node, topic)() == len(frame)
