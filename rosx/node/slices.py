@@ -21,9 +21,9 @@ policies, or with ``ROSX_SHORT_SLICE=0`` in the environment.
 from __future__ import annotations
 
 import contextlib
-import ctypes
+import functools
 import os
-import platform
+import struct
 import sys
 from collections.abc import Callable
 
@@ -32,40 +32,33 @@ SLICE_NS = 500_000
 #: ``sched_setattr``'s number per architecture (``uname -m``).
 _SYSCALLS = {"x86_64": 314, "aarch64": 274, "arm64": 274, "riscv64": 274}
 
+#: struct sched_attr as of Linux 4.1 (SCHED_ATTR_SIZE_VER0): size, policy, flags, nice,
+#: priority, runtime, deadline, period.
+_ATTR = struct.Struct("=IIQiIQQQ")
+
 ENABLED = sys.platform.startswith("linux") and os.environ.get("ROSX_SHORT_SLICE", "1") != "0"
 
 
-class _SchedAttr(ctypes.Structure):
-    # struct sched_attr as of Linux 4.1 (SCHED_ATTR_SIZE_VER0, 48 bytes).
-    _fields_ = (
-        ("size", ctypes.c_uint32),
-        ("sched_policy", ctypes.c_uint32),
-        ("sched_flags", ctypes.c_uint64),
-        ("sched_nice", ctypes.c_int32),
-        ("sched_priority", ctypes.c_uint32),
-        ("sched_runtime", ctypes.c_uint64),
-        ("sched_deadline", ctypes.c_uint64),
-        ("sched_period", ctypes.c_uint64),
-    )
-
-
-def _syscall() -> Callable[..., int] | None:
-    if not ENABLED or platform.machine() not in _SYSCALLS:
+@functools.cache
+def _setattr() -> Callable[[bytes], int] | None:
+    """``sched_setattr`` for the calling thread, loaded on first use (ctypes costs start-up)."""
+    number = _SYSCALLS.get(os.uname().machine) if ENABLED else None
+    if number is None:
         return None
+    import ctypes  # noqa: PLC0415
+
     try:
-        function: Callable[..., int] = ctypes.CDLL(None, use_errno=True).syscall
+        syscall = ctypes.CDLL(None, use_errno=True).syscall
     except (OSError, AttributeError):
         return None
-    return function
-
-
-_SYSCALL = _syscall()
+    return lambda attr: int(syscall(number, 0, attr, 0))
 
 
 def request_short_slice() -> bool:
     """Ask for a short time slice for the calling thread; whether the kernel accepted the
     request (a kernel older than 6.12 accepts it and ignores it)."""
-    if _SYSCALL is None:
+    call = _setattr()
+    if call is None:
         return False
     try:
         policy = os.sched_getscheduler(0)
@@ -74,7 +67,7 @@ def request_short_slice() -> bool:
         nice = os.getpriority(os.PRIO_PROCESS, 0)  # Linux: the calling thread's
     except OSError:
         return False
-    attr = _SchedAttr(ctypes.sizeof(_SchedAttr), policy, 0, nice, 0, SLICE_NS, 0, 0)
+    attr = _ATTR.pack(_ATTR.size, policy, 0, nice, 0, SLICE_NS, 0, 0)
     with contextlib.suppress(OSError):
-        return int(_SYSCALL(_SYSCALLS[platform.machine()], 0, ctypes.byref(attr), 0)) == 0
+        return call(attr) == 0
     return False
