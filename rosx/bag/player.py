@@ -208,6 +208,7 @@ class Player:
         origin_bag = 0
         previous = 0
         last_status = 0.0
+        last_state = ""
         for conn, stamp, data in self._messages():
             if origin_wall is None:
                 origin_wall, origin_bag, previous = time.monotonic(), stamp, stamp
@@ -227,9 +228,12 @@ class Player:
                 if self.timing is not None:
                     self.timing.append((due + shift, time.monotonic()))
             now = time.monotonic()
-            if self.status is not None and now - last_status >= _STATUS_PERIOD:
-                last_status = now
-                state = "PAUSED " if self.paused else "RUNNING"
+            state = "PAUSED " if self.paused else "RUNNING"
+            # At most every _STATUS_PERIOD, and at once when a pause begins or ends.
+            if self.status is not None and (
+                now - last_status >= _STATUS_PERIOD or state != last_state
+            ):
+                last_status, last_state = now, state
                 self.status(
                     f"\r [{state}]  Bag Time: {stamp / _NS:13.6f}   "
                     f"Duration: {(stamp - first) / _NS:.6f} / {total:.6f}               \r"
