@@ -42,7 +42,9 @@ ENABLED = sys.platform.startswith("linux") and os.environ.get("ROSX_SHORT_SLICE"
 @functools.cache
 def _setattr() -> Callable[[bytes], int] | None:
     """``sched_setattr`` for the calling thread, loaded on first use (ctypes costs start-up)."""
-    number = _SYSCALLS.get(os.uname().machine) if ENABLED else None
+    number = None
+    if ENABLED and sys.platform.startswith("linux"):
+        number = _SYSCALLS.get(os.uname().machine)
     if number is None:
         return None
     import ctypes  # noqa: PLC0415
