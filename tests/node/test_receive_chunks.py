@@ -67,6 +67,24 @@ def accept_subscriber(listener: socket.socket, topic: str, behind: bytes = b"") 
     return conn
 
 
+@contextlib.contextmanager
+def fed_by_a_bare_publisher(
+    node: Node,
+    master: str,
+    topic: str,
+    data_class: Any,
+    callback: Callable[[Any], object],
+    behind: bytes = b"",
+) -> Iterator[tuple[Any, socket.socket]]:
+    """``node`` subscribed to ``topic``, whose one publisher is a bare socket of the test's:
+    the subscriber and that socket (``behind``: sent with the header)."""
+    with bare_publisher(topic) as (uri, listener):
+        call(master, "registerPublisher", "/bare_pub", topic, "std_msgs/String", uri)
+        sub = node.subscribe(topic, data_class, callback)
+        with accept_subscriber(listener, topic, behind) as conn:
+            yield sub, conn
+
+
 def bytes_read(node: Node, topic: str) -> Callable[[], int]:
     """What the node's subscriber has read from its one connection to ``topic``."""
 
@@ -86,30 +104,29 @@ def test_frames_cut_anywhere_arrive_whole_and_in_order(
     topic = "/chunks"
     node = make_node("chunk_listener")
     got: list[str] = []
-    with bare_publisher(topic) as (uri, listener):
-        call(master, "registerPublisher", "/bare_pub", topic, "std_msgs/String", uri)
-        sub = node.subscribe(topic, String, lambda msg: got.append(msg.data))
-        conn = accept_subscriber(listener, topic)
-        with conn:
-            frames = {text: serialize_frame(String(data=text)) for text in "abcdefgh"}
-            read = bytes_read(node, topic)
-            wait_for(lambda: sub.get_num_connections() == 1)
-            a, b, c, d, e, f, g, h = frames.values()
-            pieces = [
-                a,  # one whole frame
-                b[:2],  # part of a length
-                b[2:] + c,  # the rest, then a whole frame
-                d + e[:7],  # a whole frame and part of the next one's payload
-                e[7:],  # its end
-                f,  # a whole frame again
-                g + h,  # two in one read
-            ]
-            sent = 0
-            for piece in pieces:
-                conn.sendall(piece)
-                sent += len(piece)
-                wait_for(lambda: read() == sent)  # noqa: B023 - awaited before `sent` changes
-            wait_for(lambda: len(got) == len(frames))
+    with fed_by_a_bare_publisher(node, master, topic, String, lambda msg: got.append(msg.data)) as (
+        sub,
+        conn,
+    ):
+        frames = {text: serialize_frame(String(data=text)) for text in "abcdefgh"}
+        read = bytes_read(node, topic)
+        wait_for(lambda: sub.get_num_connections() == 1)
+        a, b, c, d, e, f, g, h = frames.values()
+        pieces = [
+            a,  # one whole frame
+            b[:2],  # part of a length
+            b[2:] + c,  # the rest, then a whole frame
+            d + e[:7],  # a whole frame and part of the next one's payload
+            e[7:],  # its end
+            f,  # a whole frame again
+            g + h,  # two in one read
+        ]
+        sent = 0
+        for piece in pieces:
+            conn.sendall(piece)
+            sent += len(piece)
+            wait_for(lambda: read() == sent)  # noqa: B023 - awaited before `sent` changes
+        wait_for(lambda: len(got) == len(frames))
     assert got == list("abcdefgh")
 
 
@@ -118,17 +135,13 @@ def test_an_empty_frame_is_a_message(make_node: Callable[..., Node], master: str
     topic = "/empties"
     node = make_node("empty_listener")
     got: list[Any] = []
-    with bare_publisher(topic) as (uri, listener):
-        call(master, "registerPublisher", "/bare_pub", topic, "std_msgs/String", uri)
-        sub = node.subscribe(topic, None, got.append)
-        conn = accept_subscriber(listener, topic)
-        with conn:
-            read = bytes_read(node, topic)
-            wait_for(lambda: sub.get_num_connections() == 1)
-            conn.sendall(b"\0\0\0\0")
-            wait_for(lambda: read() == 4)
-            conn.sendall(serialize_frame(String(data="x")))
-            wait_for(lambda: len(got) == 2)
+    with fed_by_a_bare_publisher(node, master, topic, None, got.append) as (sub, conn):
+        read = bytes_read(node, topic)
+        wait_for(lambda: sub.get_num_connections() == 1)
+        conn.sendall(b"\0\0\0\0")
+        wait_for(lambda: read() == 4)
+        conn.sendall(serialize_frame(String(data="x")))
+        wait_for(lambda: len(got) == 2)
     assert [bytes(m._buff) for m in got] == [b"", b"\x01\0\0\0x"]
 
 
@@ -139,11 +152,9 @@ def test_a_message_right_behind_the_header_is_read_and_counted(
     topic = "/eager"
     node = make_node("eager_listener")
     got: list[str] = []
-    with bare_publisher(topic) as (uri, listener):
-        call(master, "registerPublisher", "/bare_pub", topic, "std_msgs/String", uri)
-        node.subscribe(topic, String, lambda msg: got.append(msg.data))
-        frame = serialize_frame(String(data="first"))
-        conn = accept_subscriber(listener, topic, behind=frame)
-        with conn:
-            wait_for(lambda: got == ["first"])
-            assert bytes_read(node, topic)() == len(frame)
+    frame = serialize_frame(String(data="first"))
+    with fed_by_a_bare_publisher(
+        node, master, topic, String, lambda msg: got.append(msg.data), behind=frame
+    ):
+        wait_for(lambda: got == ["first"])
+        assert bytes_read(node, topic)() == len(frame)
