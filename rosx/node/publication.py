@@ -77,10 +77,10 @@ class SubscriberLink:
         """The link of a connected socket, described as rospy describes its connections."""
         sock = stream.sock
         if sock.family == socket.AF_UNIX:
-            info = describe_connection(sock, stream.fileno, (unix_address or "", 0))
-            return cls(stream, callerid, unixros.PROTOCOL, info)
-        info = describe_connection(sock, stream.fileno, sock.getpeername()[:2])
-        return cls(stream, callerid, "TCPROS", info)
+            transport, remote = unixros.PROTOCOL, (unix_address or "", 0)
+        else:
+            transport, remote = "TCPROS", sock.getpeername()[:2]
+        return cls(stream, callerid, transport, describe_connection(sock, stream.fileno, remote))
 
     def transport_info(self) -> str:
         """rospy's description of the connection (``rosnode info`` parses it)."""
