@@ -20,13 +20,14 @@ lose a concurrent publisher's update.
 from __future__ import annotations
 
 import io
+import ipaddress
 import socket
 import struct
 import threading
 from typing import TYPE_CHECKING
 
 from rosx.msg.codec.clone import clone
-from rosx.node import unixros
+from rosx.node import slices, unixros
 from rosx.node.incoming import connection_ids, describe_connection
 from rosx.node.outgoing import OutgoingStream, configure_nodelay
 from rosx.node.receiver import LocalMessage
@@ -46,6 +47,15 @@ _U32 = struct.Struct("<I")
 _PREFIX = b"\0\0\0\0"
 
 
+def _on_this_machine(sock: socket.socket, peer: str) -> bool:
+    """Whether a TCP connection's peer is this machine: a loopback address, or the connection's
+    own address at both ends."""
+    try:
+        return ipaddress.ip_address(peer).is_loopback or peer == sock.getsockname()[0]
+    except (OSError, ValueError):
+        return False
+
+
 def serialize_frame(msg: Message) -> bytes:
     """``msg`` in the ROS 1 wire format, as one TCPROS frame (uint32 length prefix first)."""
     buff = io.BytesIO()
@@ -60,15 +70,25 @@ def serialize_frame(msg: Message) -> bytes:
 class SubscriberLink:
     """One subscriber connected to a publication (what ``getBusInfo`` reports)."""
 
-    __slots__ = ("callerid", "id", "info", "stream", "transport")
+    __slots__ = ("callerid", "id", "info", "nearby", "stream", "transport")
 
-    def __init__(self, stream: OutgoingStream, callerid: str, transport: str, info: str) -> None:
+    def __init__(
+        self,
+        stream: OutgoingStream,
+        callerid: str,
+        transport: str,
+        info: str,
+        *,
+        nearby: bool = False,
+    ) -> None:
         self.id = next(connection_ids)
         self.stream = stream
         self.callerid = callerid
         #: ``TCPROS`` or ``UNIXROS`` (`rosx.node.unixros`), and the connection's description.
         self.transport = transport
         self.info = info
+        #: Whether the subscriber runs on this machine (a publisher hands off to it in bursts).
+        self.nearby = nearby
 
     @classmethod
     def connected(
@@ -78,9 +98,12 @@ class SubscriberLink:
         sock = stream.sock
         if sock.family == socket.AF_UNIX:
             transport, remote = unixros.PROTOCOL, (unix_address or "", 0)
+            nearby = True
         else:
             transport, remote = "TCPROS", sock.getpeername()[:2]
-        return cls(stream, callerid, transport, describe_connection(sock, stream.fileno, remote))
+            nearby = _on_this_machine(sock, remote[0])
+        info = describe_connection(sock, stream.fileno, remote)
+        return cls(stream, callerid, transport, info, nearby=nearby)
 
     def transport_info(self) -> str:
         """rospy's description of the connection (``rosnode info`` parses it)."""
@@ -116,6 +139,9 @@ class Publication:
         self.closed = False
         #: The node's UNIXROS address, for describing connections (`rosx.node.unixros`).
         self.unix_address: str | None = None
+        self._handoff = slices.Handoff() if slices.HANDOFF_ENABLED else None
+        #: Whether any socket subscriber runs on this machine (`SubscriberLink.nearby`).
+        self._nearby = False
 
     @property
     def latching(self) -> bool:
@@ -178,6 +204,8 @@ class Publication:
             self.bytes_published += size
         for link in links:
             link.stream.send(frame)
+        if self._nearby and self._handoff is not None:
+            self._handoff.after_publish()
 
     def connection_count(self) -> int:
         """Subscribers currently connected (in this process or not)."""
@@ -198,6 +226,7 @@ class Publication:
             if self.latched is not None:
                 stream.send(self.latched)
             self.links = (*self.links, link)
+            self._nearby = any(link.nearby for link in self.links)
         return link
 
     def attach_local(self, link: LocalLink) -> None:
@@ -217,12 +246,14 @@ class Publication:
     def _closed_stream(self, stream: OutgoingStream) -> None:
         with self._lock:
             self.links = tuple(link for link in self.links if link.stream is not stream)
+            self._nearby = any(link.nearby for link in self.links)
 
     def close(self) -> None:
         """Disconnect every subscriber; further publishing does nothing."""
         self.closed = True
         with self._lock:
             links, self.links = self.links, ()
+            self._nearby = False
             local = self.local_links
         for link in links:
             link.stream.close()

@@ -1,0 +1,146 @@
+"""A publisher hands its CPU to subscribers on this machine inside a burst, within a budget.
+
+`rosx.node.slices.Handoff` decides; these tests drive it with a clock they move themselves
+and count the yields it makes, then check that a publication asks it exactly when a socket
+subscriber on this machine is connected.
+"""
+
+from __future__ import annotations
+
+import os
+import socket
+import subprocess
+import sys
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+import pytest
+
+from rosx.msg.codec.classes import get_message_class
+from rosx.node import Node, local, publication, slices, unixros
+from tests.support.procs import wait_for
+
+Twist = get_message_class("geometry_msgs/Twist")
+
+
+class Scheduler:
+    """A clock moved by hand, and a ``sched_yield`` that counts its calls and takes time."""
+
+    def __init__(self) -> None:
+        self.now = 1_000_000_000
+        self.yields = 0
+        #: How long each yield takes (another thread running meanwhile).
+        self.yield_ns = 5_000
+
+    def clock(self) -> int:
+        return self.now
+
+    def sched_yield(self) -> int:
+        self.yields += 1
+        self.now += self.yield_ns
+        return 0
+
+
+@pytest.fixture
+def sched(monkeypatch: pytest.MonkeyPatch) -> Scheduler:
+    fake = Scheduler()
+    monkeypatch.setattr(slices, "_clock", fake.clock)
+    monkeypatch.setattr(slices, "_sched_yield", lambda: fake.sched_yield)
+    return fake
+
+
+def publish_run(handoff: slices.Handoff, sched: Scheduler, count: int, apart_ns: int) -> int:
+    """Publish ``count`` messages ``apart_ns`` apart; the yields made."""
+    before = sched.yields
+    for _ in range(count):
+        sched.now += apart_ns
+        handoff.after_publish()
+    return sched.yields - before
+
+
+def test_a_burst_yields_after_its_2nd_to_16th_message(sched: Scheduler) -> None:
+    handoff = slices.Handoff()
+    assert publish_run(handoff, sched, 10, 3_000) == 9
+    sched.now += 10_000_000
+    assert publish_run(handoff, sched, 1, 3_000) == 0  # a lone message: the reader preempts
+    sched.now += 10_000_000
+    assert publish_run(handoff, sched, 1000, 3_000) == slices.HANDOFF_RUN - 1  # a flood
+
+
+def test_a_pause_starts_a_new_run(sched: Scheduler) -> None:
+    handoff = slices.Handoff()
+    assert publish_run(handoff, sched, 40, slices.RUN_GAP_NS) == 0  # 5 kHz: each alone
+    assert publish_run(handoff, sched, 40, slices.RUN_GAP_NS - 1) == slices.HANDOFF_RUN - 1
+
+
+def test_yields_stop_when_they_cost_too_much_and_resume_later(sched: Scheduler) -> None:
+    handoff = slices.Handoff()
+    sched.yield_ns = 1_500_000  # each yield lets a busy thread run a whole slice
+    sched.now += 10_000_000
+    assert publish_run(handoff, sched, 10, 3_000) == 4  # 5 ms of credit: the 4th overdraws it
+    assert publish_run(handoff, sched, 10, 3_000) == 0  # the run goes on, no credit left
+    # The credit grows by 1/32 of the time between runs: 10 ms gives back 0.3 ms.
+    yields = 0
+    for _ in range(100):
+        sched.now += 10_000_000
+        yields += publish_run(handoff, sched, 10, 3_000)
+    spent = yields * sched.yield_ns
+    assert 0 < spent <= 100 * 10_000_000 // 32 + slices.CREDIT_CAP_NS
+
+
+@pytest.fixture
+def counted(monkeypatch: pytest.MonkeyPatch) -> Iterator[list[int]]:
+    """Every call that publications made meanwhile make to `Handoff.after_publish`."""
+    made: list[int] = []
+    monkeypatch.setattr(slices, "HANDOFF_ENABLED", True)
+    monkeypatch.setattr(slices.Handoff, "after_publish", lambda self: made.append(1))
+    yield made
+
+
+@pytest.mark.parametrize("transport", ["UNIXROS", "TCPROS", "in-process"])
+def test_a_publication_hands_off_to_subscribers_on_this_machine(
+    make_node: Callable[..., Node],
+    monkeypatch: pytest.MonkeyPatch,
+    counted: list[int],
+    transport: str,
+) -> None:
+    monkeypatch.setattr(local, "ENABLED", transport == "in-process")
+    monkeypatch.setattr(unixros, "ENABLED", transport == "UNIXROS")
+    talker, listener = make_node("handoff_talker"), make_node("handoff_listener")
+    got: list[float] = []
+    sub = listener.subscribe("/handoff", Twist, lambda msg: got.append(msg.linear.x))
+    pub = talker.advertise("/handoff", Twist, queue_size=100)
+    wait_for(lambda: pub.get_num_connections() == 1 and sub.get_num_connections() == 1)
+    counted.clear()
+    for i in range(20):
+        msg = Twist()
+        msg.linear.x = float(i)
+        pub.publish(msg)
+    wait_for(lambda: len(got) == 20)
+    assert got == [float(i) for i in range(20)]
+    # A socket subscriber on this machine is handed off to after each message; an
+    # in-process one is woken without a socket and needs no hand-off.
+    assert len(counted) == (0 if transport == "in-process" else 20)
+
+
+def test_a_tcp_peer_on_loopback_or_on_our_own_address_is_on_this_machine() -> None:
+    with socket.create_server(("127.0.0.1", 0)) as server:
+        client = socket.create_connection(server.getsockname())
+        accepted, peer = server.accept()
+        with client, accepted:
+            assert publication._on_this_machine(accepted, peer[0])
+            assert not publication._on_this_machine(accepted, "192.0.2.7")
+            assert not publication._on_this_machine(accepted, "not an address")
+
+
+def test_off_in_the_environment() -> None:
+    script = "from rosx.node import slices\nprint(slices.HANDOFF_ENABLED)\n"
+    done = subprocess.run(
+        [sys.executable, "-c", script],
+        env=dict(os.environ, ROSX_HANDOFF="0"),
+        cwd=Path(__file__).resolve().parents[2],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert done.stdout == "False\n"
