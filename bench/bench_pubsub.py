@@ -16,9 +16,10 @@ with rosx under this Python, and prints:
 * fan-out and fan-in: one publisher to 10 subscriber processes and 10 publishers to one, Twist
   and 1 MiB images: delivered msgs/s or bytes/s summed over subscribers, and the slowest
   subscriber's rate;
-* publisher and subscriber in one process (``inproc``: Twist flood and latency at 1 kHz): rospy
-  has one node per process, its publisher and subscriber talking over loopback TCPROS; rosx
-  has two `Node` objects linked in-process (``ROSX_INTRAPROCESS=0``: over TCPROS, shown too);
+* publisher and subscriber in one process (``inproc``: Twist floods, latency at 1 kHz and in
+  bursts): rospy has one node per process, its publisher and subscriber talking over loopback
+  TCPROS; rosx has two `Node` objects linked in-process (``ROSX_INTRAPROCESS=0``: over TCPROS,
+  shown too);
 
 and the ratios rosx/rospy. Run:
 ``python bench/bench_pubsub.py [--quick] [--only CASE] [--rounds N] [--fast-rounds N]``.
@@ -104,8 +105,10 @@ for i in range(count):
     msg.linear.x = clock()
     msg.linear.y = i
     pub.publish(msg)
-    if period:
+    if period > 0:
         time.sleep(period)
+    elif period < 0 and i % 10 == 9:  # bursts of 10
+        time.sleep(-period)
 pub_rate = count / (clock() - start)
 deadline = time.monotonic() + 120
 while not done.is_set() and time.monotonic() < deadline:
@@ -438,6 +441,14 @@ def inproc_cases(
             "rate",
         ),
         ("Twist at 1 kHz, one process, latency", latency, 100, None, 0.001, "p50"),
+        (
+            "Twist in bursts of 10 every 10 ms, one process, latency",
+            latency,
+            100,
+            None,
+            -0.01,
+            "p50",
+        ),
     ]
     for title, count, pq, sq, period, key in cases:
         libs: dict[str, list[dict[str, float]]] = {"rospy": [], "rosx-tcp": [], "rosx": []}
