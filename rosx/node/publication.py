@@ -10,6 +10,10 @@ Subscribers of the same process are `rosx.node.local.LocalLink` objects: each ge
 the message object (never serialized), queued on its subscription's receiver from the
 publishing thread; the frame is built only when a socket subscriber or a latch needs it.
 
+Within a burst the publishing thread gives way to the subscribers on this machine after each
+message, so each is handled as it is published (`rosx.node.slices.Handoff`); whether a TCP
+subscriber is on this machine is decided once, when it connects.
+
 `Publication.accept` runs on the I/O loop when the node's TCPROS server has accepted a
 subscriber's header (`rosx.wire.tcpros.accept_subscriber`); ``publish`` runs on any thread, so
 the sequence number and the byte count (``getBusStats``) change only under the publication's
@@ -165,7 +169,10 @@ class Publication:
             with self._lock:
                 self.seq += 1
                 msg.header.seq = self.seq
+        burst = self._burst()
         if self.local_links and not self.closed:
+            for link in self.local_links:
+                link.receiver.eager = burst
             if self.info.latching:
                 # One copy kept as the latch; every callback gets a copy of it. As for frames,
                 # a subscriber attached meanwhile gets either this message or the latch.
@@ -179,19 +186,27 @@ class Publication:
                 for link in self.local_links:
                     link.deliver(LocalMessage(clone(msg)))
             if not self.links and not self.info.latching:
+                if burst:
+                    self._give_way()
                 return
         self._send_frame(serialize_frame(msg))
+        if burst:
+            self._give_way()
 
     def publish_frame(self, frame: bytes) -> None:
         """Queue an already serialized frame (length prefix included) for every subscriber."""
+        burst = self._burst()
         if self.local_links and not self.closed:
             payload = frame[4:]
             with self._lock:
                 self.latched_local = None
                 local = self.local_links
             for link in local:
+                link.receiver.eager = burst
                 link.deliver(payload)
         self._send_frame(frame)
+        if burst:
+            self._give_way()
 
     def _send_frame(self, frame: bytes) -> None:
         if self.closed:
@@ -204,8 +219,19 @@ class Publication:
             self.bytes_published += size
         for link in links:
             link.stream.send(frame)
-        if self._nearby and self._handoff is not None:
-            self._handoff.after_publish()
+
+    # A burst's messages are handled as they are published (`rosx.node.slices.Handoff`):
+    # the local threads of subscribers in this process sleep on their pipes meanwhile, and
+    # the publishing thread gives way to the readers of subscribers on this machine.
+
+    def _burst(self) -> bool:
+        handoff = self._handoff
+        return handoff is not None and bool(self._nearby or self.local_links) and handoff.start()
+
+    def _give_way(self) -> None:
+        # A subscriber in this process needs the GIL too.
+        if self._handoff is not None:
+            self._handoff.give_way(release_gil=bool(self.local_links))
 
     def connection_count(self) -> int:
         """Subscribers currently connected (in this process or not)."""

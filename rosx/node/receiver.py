@@ -30,7 +30,8 @@ The contract:
   one makes a synchronous publisher (``queue_size=None``) wait while more than `LOCAL_HIGH_WATER`
   messages are queued, as a full socket would. The local thread sleeps on a condition for
   `LOCAL_BATCH_WINDOW` after each message (a flood is taken in batches), then on a pipe, which
-  the next message's publisher writes to without the GIL (it is handled at once).
+  the next message's publisher writes to without the GIL (it is handled at once). While a
+  publisher of this process publishes a burst (`eager`), the thread sleeps on the pipe at once.
 * Every thread that runs callbacks asks for a short time slice (`rosx.node.slices`).
 """
 
@@ -139,6 +140,10 @@ class Receiver:
         #: How the local thread sleeps, if it does: 0, `_ON_CONDITION` or `_ON_PIPE`.
         self._sleeping = 0
         self._waiting_publishers = 0
+        #: Set by a publisher of this process while it publishes a burst
+        #: (`rosx.node.slices.Handoff`): the local thread then sleeps on its pipe at once, so
+        #: each message of the burst is handled as it is published, not after the burst.
+        self.eager = False
         self._counting = threading.Lock()
         #: `received` (frames and messages taken in) against `handled` (those whose callbacks
         #: have run) says how far the callbacks are behind. A connected stream's frames are
@@ -265,16 +270,17 @@ class Receiver:
                 # while after each one the thread waits on the condition, which a publisher
                 # notifies holding the GIL, so it goes on publishing until it lets the GIL
                 # go. Then the thread sleeps on its pipe, and the next message, after a
-                # pause, is handled as soon as it is published.
-                with wake:
-                    self._sleeping = _ON_CONDITION
-                    try:
-                        if not queue and not self._stopped:
-                            wake.wait(LOCAL_BATCH_WINDOW)
-                    finally:
-                        self._sleeping = 0
-                if queue or self._stopped:
-                    continue
+                # pause or within a burst (`eager`), is handled as soon as it is published.
+                if not self.eager:
+                    with wake:
+                        self._sleeping = _ON_CONDITION
+                        try:
+                            if not queue and not self._stopped:
+                                wake.wait(LOCAL_BATCH_WINDOW)
+                        finally:
+                            self._sleeping = 0
+                    if queue or self._stopped:
+                        continue
                 self._sleeping = _ON_PIPE
                 try:
                     if not queue and not self._stopped:

@@ -1,4 +1,5 @@
-"""Short time slices for the threads that run callbacks, so a message is handled as it arrives.
+"""Short time slices for callback threads, and publishers that give way to them in a burst,
+so that a message is handled as it arrives.
 
 Linux's fair scheduler (EEVDF, since 6.6) lets a thread that wakes up preempt the running one
 only when it asks for a shorter time slice; since Linux 6.12 a thread may ask for one, without
@@ -20,14 +21,23 @@ policies, or with ``ROSX_SHORT_SLICE=0`` in the environment.
 A short slice is not enough inside a burst. A reader thread that has just run is owed no CPU
 time when the next message wakes it, so it waits until the publisher (whose CPU it was woken
 on) has published the whole burst and gone to sleep: per message, a burst of ten Twists took
-40-50 µs. `Handoff` is the publisher's side: after each of the first `HANDOFF_RUN` messages of
-a run published back to back to a subscriber on this machine, the publishing thread yields its
-CPU (``sched_yield``, without letting go of the GIL), so the reader takes the message now and
-the publisher carries on where it was. The first message of a run does not yield (the reader
-preempts it anyway), nor do the messages after `HANDOFF_RUN` (a flood keeps its batches).
-Yielding may hand the CPU to any thread of that CPU; time spent in a yield is paid from a
-credit that grows by 1/32 of the time between runs, so on a busy machine or with a slow
-callback the yields stop before they cost the publisher more than about 3 % of its time.
+40-50 µs. `Handoff` is the publisher's side. A run is a series of messages published less
+than `RUN_GAP_NS` apart; its first `HANDOFF_RUN` messages are a burst, the rest a flood.
+
+* After each burst message but the first (whose reader preempts the publisher anyway), once it
+  is written to a subscriber on this machine, the publishing thread yields its CPU
+  (``sched_yield``): the reader takes the message now and the publisher carries on where it
+  was. The GIL is kept, so no other thread of the publisher's process runs meanwhile, unless
+  a subscriber is in this process: its local thread needs the GIL.
+* A subscriber in this process is told it is in a burst (`Receiver.eager`): its local thread
+  then sleeps on its pipe at once, not on the condition that batches a flood, so the
+  publisher's write to the pipe wakes it on the publisher's CPU.
+* A flood keeps its batches: no yield, no pipe.
+* Time spent in yields is paid from a credit that grows by 1/32 of the time between runs
+  (at most `CREDIT_CAP_NS`): on a busy machine, where a yield may hand the CPU to another
+  program for a whole slice, or with a slow callback, the yields stop before they cost the
+  publisher more than about 3 % of its time.
+
 ``ROSX_HANDOFF=0`` turns hand-offs off.
 """
 
@@ -126,8 +136,9 @@ def _sched_yield() -> Callable[[], int] | None:
 class Handoff:
     """One publication's hand-offs to its readers during a burst (see the module's docstring).
 
-    `after_publish` is called by the publishing thread once a message is written to every
-    subscriber. Several threads publishing at once may blur a run's count; nothing worse.
+    The publishing thread calls `start` before a message goes out and `give_way` once it is
+    written to every socket subscriber. Several threads publishing at once may blur a run's
+    count; nothing worse.
     """
 
     __slots__ = ("_credit", "_last", "_run")
@@ -137,24 +148,30 @@ class Handoff:
         self._run = 0
         self._credit = CREDIT_CAP_NS
 
-    def after_publish(self) -> None:
-        """Yield the CPU if this message is the 2nd to `HANDOFF_RUN`-th of a run and the
-        credit allows."""
+    def start(self) -> bool:
+        """Count a message about to be published; whether it is one of the first
+        `HANDOFF_RUN` of its run (a burst so far, not a flood)."""
         now = _clock()
         gap = now - self._last
         self._last = now
         if gap >= RUN_GAP_NS:
             self._run = 1
             self._credit = min(CREDIT_CAP_NS, self._credit + (gap >> _CREDIT_SHIFT))
-            return
+            return True
         run = self._run + 1
         self._run = run
-        if run > HANDOFF_RUN or self._credit <= 0:
+        return run <= HANDOFF_RUN
+
+    def give_way(self, *, release_gil: bool = False) -> None:
+        """Yield the CPU if the message just written is the 2nd to `HANDOFF_RUN`-th of its run
+        and the credit allows."""
+        if not 1 < self._run <= HANDOFF_RUN or self._credit <= 0:
             return
-        call = _sched_yield()
+        call = os.sched_yield if release_gil else _sched_yield()
         if call is None:
             return
+        before = _clock()
         call()
         after = _clock()
-        self._credit -= after - now
+        self._credit -= after - before
         self._last = after  # the time the readers took is not a pause of the publisher's

@@ -11,7 +11,7 @@ import os
 import socket
 import subprocess
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -54,7 +54,8 @@ def publish_run(handoff: slices.Handoff, sched: Scheduler, count: int, apart_ns:
     before = sched.yields
     for _ in range(count):
         sched.now += apart_ns
-        handoff.after_publish()
+        if handoff.start():
+            handoff.give_way()
     return sched.yields - before
 
 
@@ -89,19 +90,23 @@ def test_yields_stop_when_they_cost_too_much_and_resume_later(sched: Scheduler) 
 
 
 @pytest.fixture
-def counted(monkeypatch: pytest.MonkeyPatch) -> Iterator[list[int]]:
-    """Every call that publications made meanwhile make to `Handoff.after_publish`."""
-    made: list[int] = []
+def given_way(monkeypatch: pytest.MonkeyPatch, sched: Scheduler) -> list[bool]:
+    """Each `Handoff.give_way` that publications made meanwhile make: whether it lets the GIL
+    go. The clock stands still: every message is published back to back."""
+    made: list[bool] = []
     monkeypatch.setattr(slices, "HANDOFF_ENABLED", True)
-    monkeypatch.setattr(slices.Handoff, "after_publish", lambda self: made.append(1))
-    yield made
+    monkeypatch.setattr(
+        slices.Handoff, "give_way", lambda self, *, release_gil=False: made.append(release_gil)
+    )
+    return made
 
 
 @pytest.mark.parametrize("transport", ["UNIXROS", "TCPROS", "in-process"])
-def test_a_publication_hands_off_to_subscribers_on_this_machine(
+def test_a_publication_gives_way_to_subscribers_on_this_machine_in_a_burst(
     make_node: Callable[..., Node],
     monkeypatch: pytest.MonkeyPatch,
-    counted: list[int],
+    sched: Scheduler,
+    given_way: list[bool],
     transport: str,
 ) -> None:
     monkeypatch.setattr(local, "ENABLED", transport == "in-process")
@@ -111,16 +116,41 @@ def test_a_publication_hands_off_to_subscribers_on_this_machine(
     sub = listener.subscribe("/handoff", Twist, lambda msg: got.append(msg.linear.x))
     pub = talker.advertise("/handoff", Twist, queue_size=100)
     wait_for(lambda: pub.get_num_connections() == 1 and sub.get_num_connections() == 1)
-    counted.clear()
+    sched.now += slices.RUN_GAP_NS
     for i in range(20):
         msg = Twist()
         msg.linear.x = float(i)
         pub.publish(msg)
     wait_for(lambda: len(got) == 20)
     assert got == [float(i) for i in range(20)]
-    # A socket subscriber on this machine is handed off to after each message; an
-    # in-process one is woken without a socket and needs no hand-off.
-    assert len(counted) == (0 if transport == "in-process" else 20)
+    # Only the first 16 of a run are a burst; one of this process needs the GIL let go.
+    assert given_way == [transport == "in-process"] * slices.HANDOFF_RUN
+
+
+def test_a_subscriber_in_this_process_is_eager_during_a_burst_only(
+    make_node: Callable[..., Node],
+    monkeypatch: pytest.MonkeyPatch,
+    sched: Scheduler,
+    given_way: list[bool],
+) -> None:
+    monkeypatch.setattr(local, "ENABLED", True)
+    talker, listener = make_node("eager_talker"), make_node("eager_listener")
+    got: list[int] = []
+    sub = listener.subscribe("/eager", Twist, lambda msg: got.append(int(msg.linear.x)))
+    pub = talker.advertise("/eager", Twist, queue_size=0)
+    wait_for(lambda: pub.get_num_connections() == 1 and sub.get_num_connections() == 1)
+    receiver = listener.subscriptions["/eager"].receiver
+    eager: list[bool] = []
+    for i in range(40):
+        if i == 30:
+            sched.now += slices.RUN_GAP_NS  # a pause: a new burst
+        msg = Twist()
+        msg.linear.x = float(i)
+        pub.publish(msg)
+        eager.append(receiver.eager)
+    wait_for(lambda: len(got) == 40)
+    assert got == list(range(40))
+    assert eager == [True] * 16 + [False] * 14 + [True] * 10
 
 
 def test_a_tcp_peer_on_loopback_or_on_our_own_address_is_on_this_machine() -> None:
