@@ -34,9 +34,10 @@ than `RUN_GAP_NS` apart; its first `HANDOFF_RUN` messages are a burst, the rest 
   publisher's write to the pipe wakes it on the publisher's CPU.
 * A flood keeps its batches: no yield, no pipe.
 * Time spent in yields is paid from a credit that grows by 1/32 of the time between runs
-  (at most `CREDIT_CAP_NS`): on a busy machine, where a yield may hand the CPU to another
-  program for a whole slice, or with a slow callback, the yields stop before they cost the
-  publisher more than about 3 % of its time.
+  (at most `CREDIT_CAP_NS`), so they never cost the publisher more than about 3 % of its
+  time. On a busy machine a yield may hand the CPU to another program for a whole slice,
+  which delays the reader too; a yield that long (`SLOW_YIELD_NS`) stops them for about a
+  second.
 
 ``ROSX_HANDOFF=0`` turns hand-offs off.
 """
@@ -112,6 +113,11 @@ RUN_GAP_NS = 200_000
 CREDIT_CAP_NS = 5_000_000
 _CREDIT_SHIFT = 5
 
+#: A yield that takes longer than this (a reader handles a message in a few µs) leaves the
+#: credit at minus `SLOW_PENALTY_NS`: no yields until about a second of pauses has passed.
+SLOW_YIELD_NS = 200_000
+SLOW_PENALTY_NS = 1_000_000_000 >> _CREDIT_SHIFT
+
 #: Whether publishers hand off (``ROSX_HANDOFF=0`` says no); only on Linux, whose scheduler
 #: this was measured on.
 HANDOFF_ENABLED = sys.platform.startswith("linux") and os.environ.get("ROSX_HANDOFF", "1") != "0"
@@ -173,5 +179,8 @@ class Handoff:
         before = _clock()
         call()
         after = _clock()
-        self._credit -= after - before
+        took = after - before
+        # Longer than a reader takes: the CPU went to another program, or the callback is
+        # slow. Either way the yields stop for a while.
+        self._credit = -SLOW_PENALTY_NS if took > SLOW_YIELD_NS else self._credit - took
         self._last = after  # the time the readers took is not a pause of the publisher's

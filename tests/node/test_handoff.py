@@ -74,19 +74,33 @@ def test_a_pause_starts_a_new_run(sched: Scheduler) -> None:
     assert publish_run(handoff, sched, 40, slices.RUN_GAP_NS - 1) == slices.HANDOFF_RUN - 1
 
 
-def test_yields_stop_when_they_cost_too_much_and_resume_later(sched: Scheduler) -> None:
+def test_yields_are_paid_from_a_credit(sched: Scheduler) -> None:
     handoff = slices.Handoff()
-    sched.yield_ns = 1_500_000  # each yield lets a busy thread run a whole slice
-    sched.now += 10_000_000
-    assert publish_run(handoff, sched, 10, 3_000) == 4  # 5 ms of credit: the 4th overdraws it
-    assert publish_run(handoff, sched, 10, 3_000) == 0  # the run goes on, no credit left
-    # The credit grows by 1/32 of the time between runs: 10 ms gives back 0.3 ms.
-    yields = 0
+    sched.yield_ns = 150_000  # a reader that takes its time, short of a slow yield
+    yields = []
     for _ in range(100):
         sched.now += 10_000_000
-        yields += publish_run(handoff, sched, 10, 3_000)
-    spent = yields * sched.yield_ns
-    assert 0 < spent <= 100 * 10_000_000 // 32 + slices.CREDIT_CAP_NS
+        yields.append(publish_run(handoff, sched, 10, 3_000))
+    # 5 ms saved up, then 1/32 of each 10 ms pause: far fewer than 9 a run.
+    spent = sum(yields) * sched.yield_ns
+    assert spent <= slices.CREDIT_CAP_NS + 100 * (10_000_000 >> 5) + 9 * sched.yield_ns
+    assert yields[0] == 9
+    assert 0 < max(yields[10:]) <= 3  # 0.3 ms of credit a run: 2 or 3 yields
+
+
+def test_a_slow_yield_stops_them_for_a_second(sched: Scheduler) -> None:
+    handoff = slices.Handoff()
+    sched.yield_ns = 1_500_000  # each yield lets another program run a whole slice
+    sched.now += 10_000_000
+    assert publish_run(handoff, sched, 10, 3_000) == 1
+    sched.yield_ns = 5_000
+    yields = []
+    for _ in range(120):  # 1.2 s of bursts every 10 ms
+        sched.now += 10_000_000
+        yields.append(publish_run(handoff, sched, 10, 3_000))
+    first = next(i for i, n in enumerate(yields) if n)
+    assert 90 <= first <= 101
+    assert yields[first + 1 :] == [9] * (len(yields) - first - 1)
 
 
 @pytest.fixture
