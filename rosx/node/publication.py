@@ -146,6 +146,8 @@ class Publication:
         self._handoff = slices.Handoff() if slices.HANDOFF_ENABLED else None
         #: Whether any socket subscriber runs on this machine (`SubscriberLink.nearby`).
         self._nearby = False
+        #: What the receivers of `local_links` were last told (`Receiver.eager`).
+        self._eager = False
 
     @property
     def latching(self) -> bool:
@@ -171,8 +173,6 @@ class Publication:
                 msg.header.seq = self.seq
         burst = self._burst()
         if self.local_links and not self.closed:
-            for link in self.local_links:
-                link.receiver.eager = burst
             if self.info.latching:
                 # One copy kept as the latch; every callback gets a copy of it. As for frames,
                 # a subscriber attached meanwhile gets either this message or the latch.
@@ -202,7 +202,6 @@ class Publication:
                 self.latched_local = None
                 local = self.local_links
             for link in local:
-                link.receiver.eager = burst
                 link.deliver(payload)
         self._send_frame(frame)
         if burst:
@@ -226,7 +225,20 @@ class Publication:
 
     def _burst(self) -> bool:
         handoff = self._handoff
-        return handoff is not None and bool(self._nearby or self.local_links) and handoff.start()
+        if handoff is None:
+            return False
+        local = self.local_links
+        if not local:
+            return self._nearby and handoff.start()
+        burst = handoff.start(self._caught_up)
+        if burst is not self._eager:
+            self._eager = burst
+            for link in local:
+                link.receiver.eager = burst
+        return burst
+
+    def _caught_up(self) -> bool:
+        return all(link.receiver.idle for link in self.local_links)
 
     def _give_way(self) -> None:
         # A subscriber in this process needs the GIL too.

@@ -223,6 +223,12 @@ class Receiver:
             with self._wake:
                 self._wake.notify_all()
 
+    @property
+    def idle(self) -> bool:
+        """Whether the local thread sleeps on its pipe: it has had nothing to do for a while
+        (`LOCAL_BATCH_WINDOW`), or a burst is on (`eager`)."""
+        return self._sleeping == _ON_PIPE
+
     def _ring(self) -> None:
         # The local thread sleeps in a read of its pipe, not on a condition, so that it is
         # woken by a system call, made without the GIL: it can run at once (`slices`), not

@@ -154,13 +154,15 @@ class Handoff:
         self._run = 0
         self._credit = CREDIT_CAP_NS
 
-    def start(self) -> bool:
+    def start(self, caught_up: Callable[[], bool] | None = None) -> bool:
         """Count a message about to be published; whether it is one of the first
-        `HANDOFF_RUN` of its run (a burst so far, not a flood)."""
+        `HANDOFF_RUN` of its run (a burst so far, not a flood). A pause starts a new run only
+        if the subscribers have ``caught_up``: a publisher kept from the GIL by a callback of
+        its own process has not paused, its flood goes on."""
         now = _clock()
         gap = now - self._last
         self._last = now
-        if gap >= RUN_GAP_NS:
+        if gap >= RUN_GAP_NS and (caught_up is None or caught_up()):
             self._run = 1
             self._credit = min(CREDIT_CAP_NS, self._credit + (gap >> _CREDIT_SHIFT))
             return True

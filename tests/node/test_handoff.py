@@ -74,6 +74,18 @@ def test_a_pause_starts_a_new_run(sched: Scheduler) -> None:
     assert publish_run(handoff, sched, 40, slices.RUN_GAP_NS - 1) == slices.HANDOFF_RUN - 1
 
 
+def test_a_pause_while_subscribers_catch_up_is_no_pause(sched: Scheduler) -> None:
+    # A publisher kept from the GIL by a callback of its own process goes on with its flood.
+    handoff = slices.Handoff()
+    behind = [True]
+    assert [handoff.start(lambda: not behind[0]) for _ in range(20)].count(True) == 16
+    sched.now += 10_000_000
+    assert not handoff.start(lambda: not behind[0])
+    behind[0] = False
+    sched.now += 10_000_000
+    assert handoff.start(lambda: not behind[0])
+
+
 def test_yields_are_paid_from_a_credit(sched: Scheduler) -> None:
     handoff = slices.Handoff()
     sched.yield_ns = 150_000  # a reader that takes its time, short of a slow yield
@@ -156,8 +168,9 @@ def test_a_subscriber_in_this_process_is_eager_during_a_burst_only(
     receiver = listener.subscriptions["/eager"].receiver
     eager: list[bool] = []
     for i in range(40):
-        if i == 30:
-            sched.now += slices.RUN_GAP_NS  # a pause: a new burst
+        if i == 30:  # a pause, once the subscriber has caught up: a new burst
+            wait_for(lambda: len(got) == 30 and receiver.idle)
+            sched.now += slices.RUN_GAP_NS
         msg = Twist()
         msg.linear.x = float(i)
         pub.publish(msg)
