@@ -29,6 +29,7 @@ POSIX_NAMES = {
         | {"WNOHANG", "wait3", "wait4", "sysconf", "statvfs", "getloadavg", "nice", "chown"}
         | {"lchown", "uname", "pipe2", "sched_getaffinity", "posix_spawn", "tcgetpgrp"}
         | {"sched_getscheduler", "SCHED_OTHER", "SCHED_BATCH", "getpriority", "PRIO_PROCESS"}
+        | {"sched_yield"}
     ),
     "signal": frozenset(
         {"SIGKILL", "SIGHUP", "SIGQUIT", "SIGTSTP", "SIGCONT", "SIGSTOP", "SIGCHLD", "SIGUSR1"}
@@ -46,7 +47,7 @@ GUARDED = {
     "turtle/rosx_turtle/keyboard.py": "turtle_teleop_key's raw keys (termios)",
     "rosx/launch/monitor.py": "roslaunch stops each node's process group (killpg, SIGKILL)",
     "rosx/launch/zygote.py": "roslaunch's fork server for Python nodes (fork, setsid, SIGCHLD)",
-    "rosx/node/slices.py": "short time slices for callback threads (uname, sched_getscheduler)",
+    "rosx/node/slices.py": "short time slices and hand-offs (uname, sched_getscheduler, sched_yield)",
 }
 
 _FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)

@@ -124,6 +124,9 @@ HANDOFF_ENABLED = sys.platform.startswith("linux") and os.environ.get("ROSX_HAND
 
 _clock = time.perf_counter_ns
 
+#: ``sched_yield`` that lets the GIL go (for a subscriber thread of the publisher's process).
+_YIELD_LETTING_GIL_GO = os.sched_yield if hasattr(os, "sched_yield") else None
+
 
 @functools.cache
 def _sched_yield() -> Callable[[], int] | None:
@@ -175,7 +178,7 @@ class Handoff:
         and the credit allows."""
         if not 1 < self._run <= HANDOFF_RUN or self._credit <= 0:
             return
-        call = os.sched_yield if release_gil else _sched_yield()
+        call = _YIELD_LETTING_GIL_GO if release_gil else _sched_yield()
         if call is None:
             return
         before = _clock()
