@@ -241,9 +241,10 @@ class Publication:
         return all(link.receiver.idle for link in self.local_links)
 
     def _give_way(self) -> None:
-        # A subscriber in this process needs the GIL too.
-        if self._handoff is not None:
-            self._handoff.give_way(release_gil=bool(self.local_links))
+        # Only after `_burst` said yes, so there is a hand-off. A subscriber in this process
+        # needs the GIL too.
+        assert self._handoff is not None
+        self._handoff.give_way(release_gil=bool(self.local_links))
 
     def connection_count(self) -> int:
         """Subscribers currently connected (in this process or not)."""
@@ -263,8 +264,7 @@ class Publication:
             stream.send(encode_header(accepted.reply))
             if self.latched is not None:
                 stream.send(self.latched)
-            self.links = (*self.links, link)
-            self._nearby = any(link.nearby for link in self.links)
+            self._set_links((*self.links, link))
         return link
 
     def attach_local(self, link: LocalLink) -> None:
@@ -281,17 +281,21 @@ class Publication:
         with self._lock:
             self.local_links = tuple(other for other in self.local_links if other is not link)
 
+    def _set_links(self, links: tuple[SubscriberLink, ...]) -> None:
+        # Under the lock; `_nearby` follows the links, read without the lock when publishing.
+        self.links = links
+        self._nearby = any(link.nearby for link in links)
+
     def _closed_stream(self, stream: OutgoingStream) -> None:
         with self._lock:
-            self.links = tuple(link for link in self.links if link.stream is not stream)
-            self._nearby = any(link.nearby for link in self.links)
+            self._set_links(tuple(link for link in self.links if link.stream is not stream))
 
     def close(self) -> None:
         """Disconnect every subscriber; further publishing does nothing."""
         self.closed = True
         with self._lock:
-            links, self.links = self.links, ()
-            self._nearby = False
+            links = self.links
+            self._set_links(())
             local = self.local_links
         for link in links:
             link.stream.close()
