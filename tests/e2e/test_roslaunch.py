@@ -277,6 +277,10 @@ def launched(args: list[str], env: dict[str, str]) -> Iterator[Launch]:
     launch = Launch(args, env)
     try:
         yield launch
+    except BaseException:
+        launch.close()
+        print(f"roslaunch's output:\n{launch.out}\nroslaunch's errors:\n{launch.err}")
+        raise
     finally:
         launch.close()
 
