@@ -19,7 +19,8 @@ with rosx under this Python, and prints:
 * publisher and subscriber in one process (``inproc``: Twist floods, latency at 1 kHz and in
   bursts): rospy has one node per process, its publisher and subscriber talking over loopback
   TCPROS; rosx has two `Node` objects linked in-process (``ROSX_INTRAPROCESS=0``: over TCPROS,
-  shown too);
+  shown too); and the floor under any in-process link in this Python: the publishing loop
+  with a ``publish`` that does nothing, and the private copy of a Twist a subscriber gets;
 
 and the ratios rosx/rospy. Run:
 ``python bench/bench_pubsub.py [--quick] [--only CASE] [--rounds N] [--fast-rounds N]``.
@@ -467,8 +468,44 @@ def inproc_cases(
     return rows
 
 
-def print_inproc(rows: list[InprocRow], rounds: int) -> None:
-    """Print the one-process cases."""
+def inproc_floor(count: int) -> dict[str, float]:
+    """What any in-process link costs at least, in this Python: the workers' publishing loop
+    with ``publish`` doing nothing (msgs/s), and the private copy of a Twist each in-process
+    subscriber gets (ns)."""
+    from rosx.msg.codec.classes import get_message_class
+    from rosx.msg.codec.clone import clone
+
+    msg = get_message_class("geometry_msgs/Twist")()
+    clock = time.time
+
+    def publish(_: object) -> None:
+        pass
+
+    loops = []
+    for _ in range(3):
+        start = clock()
+        for i in range(count):
+            msg.linear.x = clock()
+            msg.linear.y = i
+            publish(msg)
+        loops.append(count / (clock() - start))
+    copies = []
+    for _ in range(3):
+        start = time.perf_counter()
+        for _ in range(count):
+            clone(msg)
+        copies.append((time.perf_counter() - start) / count * 1e9)
+    return {"loop_rate": max(loops), "copy_ns": min(copies)}
+
+
+def print_inproc(rows: list[InprocRow], rounds: int, floor: dict[str, float] | None) -> None:
+    """Print the one-process cases, and the floor under the floods (`inproc_floor`)."""
+    if rows and floor is not None:
+        print(
+            f"One process, floor: the publishing loop alone {floor['loop_rate']:,.0f} msgs/s; "
+            f"a Twist's copy {floor['copy_ns']:.0f} ns (at most "
+            f"{1e9 / floor['copy_ns']:,.0f} msgs/s)"
+        )
     for title, by_lib, key in rows:
         print(title)
         for lib, res in by_lib.items():
@@ -486,6 +523,12 @@ def print_inproc(rows: list[InprocRow], rounds: int) -> None:
             )
         else:
             print(f"  ratio rosx/rospy: {mine['rate'] / base['rate']:.1f}x (target >= 20)")
+            if floor is not None and "queue_size=None" in title:
+                wanted = 20 * base["rate"]
+                print(
+                    f"  20 x rospy's is {wanted:,.0f} msgs/s, {1e9 / wanted:.0f} ns a message: "
+                    f"the copy alone takes {floor['copy_ns']:.0f}"
+                )
 
 
 def median(values: list[float]) -> float:
@@ -579,6 +622,7 @@ def main() -> None:
     proc, master = start_master()
     rows: list[Row] = []
     inproc_rows: list[InprocRow] = []
+    floor: dict[str, float] | None = None
     try:
         # name, title, kind, messages per publisher, publisher queue, period, key,
         # publishers, subscribers
@@ -696,6 +740,7 @@ def main() -> None:
         ]
         if not args.only or args.only == "inproc":
             inproc_rows = inproc_cases(master, small, latency, rounds, warmup)
+            floor = inproc_floor(small)
         for name, title, kind, count, pq, period, key, npubs, nsubs in cases:
             if args.only and name != args.only:
                 continue
@@ -742,7 +787,7 @@ def main() -> None:
     finally:
         proc.terminate()
         proc.wait()
-    print_inproc(inproc_rows, rounds)
+    print_inproc(inproc_rows, rounds, floor)
     print_rows(rows)
 
 
