@@ -106,6 +106,7 @@ class LocalLink:
 
     def start(self) -> None:
         """Connect to the publication (its latched message comes first)."""
+        self.receiver.start_local()
         self.connected = True
         self.publication.attach_local(self)
 

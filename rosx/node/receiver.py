@@ -67,8 +67,14 @@ LOCAL_HIGH_WATER = 10_000
 
 #: Seconds the local thread waits for the next message in the way that batches a flood.
 LOCAL_BATCH_WINDOW = 0.0002
+#: Seconds `Receiver.start_local` waits for the local thread to be ready (it goes on anyway).
+LOCAL_START_TIMEOUT = 5.0
+
 _ON_CONDITION = 1
 _ON_PIPE = 2
+#: The local thread sleeps on its pipe and has been rung: it is waking (and may be waiting for
+#: the GIL), later messages need not ring again.
+_RUNG = 3
 
 
 class LocalMessage:
@@ -137,7 +143,8 @@ class Receiver:
         self._wake = threading.Condition(threading.Lock())
         #: The local thread's pipe (read end, write end) while it runs; it sleeps reading it.
         self._doorbell: tuple[int, int] | None = None
-        #: How the local thread sleeps, if it does: 0, `_ON_CONDITION` or `_ON_PIPE`.
+        #: How the local thread sleeps, if it does: 0, `_ON_CONDITION`, `_ON_PIPE` or
+        #: `_RUNG`.
         self._sleeping = 0
         self._waiting_publishers = 0
         #: Set by a publisher of this process while it publishes a burst
@@ -213,13 +220,18 @@ class Receiver:
         self._count(1)
         queue.append((payload, header, None))
         if self._local is None:
-            self._start_local()
+            self.start_local()
         # The local thread sets `_sleeping` before its last look at the queue, so a message
         # appended before that look is seen, and one after it finds the flag set.
         sleeping = self._sleeping
         if sleeping == _ON_PIPE:
+            # Rung once until it has woken: each ring is a write that lets the GIL go, and a
+            # publisher that lets it go for every message keeps the woken thread from ever
+            # taking it (CPython asks the holder to switch only after a switch interval in
+            # which nobody else took the GIL): a flood would go by without its callbacks.
+            self._sleeping = _RUNG
             self._ring()
-        elif sleeping:
+        elif sleeping == _ON_CONDITION:
             with self._wake:
                 self._wake.notify_all()
 
@@ -247,23 +259,35 @@ class Receiver:
             finally:
                 self._waiting_publishers -= 1
 
-    def _start_local(self) -> None:
+    def start_local(self) -> None:
+        """Start the local thread, which runs the callbacks of messages published in this
+        process, if it has not started; return once it is ready for them.
+
+        Called when an in-process link connects, not at its first message: what the thread
+        does before it waits for messages (asking for a short slice, which loads ``ctypes``
+        the first time) lets the GIL go and takes it back each time, and against a publisher
+        already flooding each take waits a whole switch interval (5 ms), while the messages
+        pile up.
+        """
         with self._wake:
-            if self._local is not None:
+            if self._local is not None or self._stopped:
                 return
             self._doorbell = os.pipe()
+            ready = threading.Event()
             self._local = threading.Thread(
                 target=self._local_loop,
-                args=(self._doorbell[0],),
+                args=(self._doorbell[0], ready),
                 name=f"{self._name}-local",
                 daemon=True,
             )
             self._local.start()
+        ready.wait(LOCAL_START_TIMEOUT)
 
-    def _local_loop(self, bell: int) -> None:
+    def _local_loop(self, bell: int, ready: threading.Event) -> None:
         queue = self._queue
         wake = self._wake
         slices.request_short_slice()
+        ready.set()
         try:
             while not self._stopped:
                 if queue:

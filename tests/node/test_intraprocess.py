@@ -66,6 +66,37 @@ def test_same_messages_in_the_same_order(make_node: Callable[..., Node]) -> None
     assert [m.header.seq for m in got] == list(range(1, 2001))
 
 
+def test_the_local_thread_is_ready_when_the_link_connects(make_node: Callable[..., Node]) -> None:
+    """Before the first message: a publisher may flood as soon as it sees the subscriber, and
+    a thread still starting then would wait for the GIL while the queue overflows."""
+    a, b = make_node("ready_pub"), make_node("ready_sub")
+    sub = b.subscribe("/ready", Twist, lambda m: None)
+    receiver = sub.subscription.receiver
+    assert receiver._local is None  # nothing in this process publishes it yet
+    pub = a.advertise("/ready", Twist, queue_size=100)
+    wait_for(linked(pub, sub))
+    thread = receiver._local
+    assert thread is not None
+    assert thread.is_alive()
+    assert receiver._doorbell is not None
+
+
+def test_an_asynchronous_flood_from_the_start_loses_nothing(
+    make_node: Callable[..., Node],
+) -> None:
+    """A publisher with a queue floods from its first message on: the callbacks keep up (the
+    queue drops only past `LOCAL_HIGH_WATER` waiting messages)."""
+    a, b = make_node("flood_pub"), make_node("flood_sub")
+    got: list[float] = []
+    sub = b.subscribe("/flood", Twist, lambda m: got.append(m.linear.x))
+    pub = a.advertise("/flood", Twist, queue_size=100)
+    wait_for(linked(pub, sub))
+    for i in range(30_000):
+        pub.publish(twist(i))
+    wait_for(lambda: len(got) == 30_000, timeout=60, what="30 000 messages")
+    assert got == [float(i) for i in range(30_000)]
+
+
 def test_a_synchronous_publisher_loses_nothing_past_the_high_water(
     make_node: Callable[..., Node],
 ) -> None:
