@@ -237,8 +237,8 @@ class Receiver:
 
     @property
     def idle(self) -> bool:
-        """Whether the local thread sleeps on its pipe: it has had nothing to do for a while
-        (`LOCAL_BATCH_WINDOW`), or a burst is on (`eager`)."""
+        """Whether the local thread sleeps on its pipe, not yet rung: it has had nothing to do
+        for a while (`LOCAL_BATCH_WINDOW`), or a burst is on (`eager`)."""
         return self._sleeping == _ON_PIPE
 
     def _ring(self) -> None:
