@@ -219,10 +219,9 @@ class Receiver:
                     queue.popleft()
         self._count(1)
         queue.append((payload, header, None))
-        if self._local is None:
-            self.start_local()
-        # The local thread sets `_sleeping` before its last look at the queue, so a message
-        # appended before that look is seen, and one after it finds the flag set.
+        # The local thread (started when the link connected, `start_local`) sets `_sleeping`
+        # before its last look at the queue, so a message appended before that look is seen,
+        # and one after it finds the flag set.
         sleeping = self._sleeping
         if sleeping == _ON_PIPE:
             # Rung once until it has woken: each ring is a write that lets the GIL go, and a
