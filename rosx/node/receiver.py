@@ -365,7 +365,7 @@ class Receiver:
             while frames is not None and not self._stopped:
                 if frames:
                     header = stream.header
-                    if len(frames) == 1 and not queue and lock.acquire(blocking=False):
+                    if len(frames) == 1 and not queue and lock.acquire(False):
                         # Nothing waits and no callback runs: run this frame's callbacks now,
                         # without the trip through the queue (the same order either way).
                         try:
@@ -404,7 +404,7 @@ class Receiver:
         # fail to take the lock this one still holds: so look again after releasing it.
         queue = self._queue
         lock = self._dispatching
-        while queue and lock.acquire(blocking=False):
+        while queue and lock.acquire(False):
             try:
                 while queue and not self._stopped:
                     self._dispatch(queue.popleft())
