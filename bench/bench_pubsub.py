@@ -9,8 +9,8 @@ with rosx under this Python, and prints:
   its synchronous one (``queue_size=None``) against rosx's equivalents;
 * latency from ``publish`` to the callback at 1 kHz and in bursts of 10 every 10 ms: p50 and
   p99, the first messages ignored as a warm-up, medians over several rounds with rospy and rosx
-  alternating; and the floor under them, a bare Python sender and receiving thread over a Unix
-  socket and over loopback TCP, same pacing;
+  alternating, and the p99 ratio round by round; and the floor under them, a bare Python sender
+  and receiving thread over a Unix socket and over loopback TCP, same pacing;
 * 1 MiB messages (``sensor_msgs/Image``) and 10 MiB ``sensor_msgs/PointCloud2``: bytes/s
   delivered, several rounds;
 * fan-out and fan-in: one publisher to 10 subscriber processes and 10 publishers to one, Twist
@@ -463,9 +463,22 @@ def inproc_cases(
                 if field in res:
                     res[field] = median([r[field] for r in results])
             res["rounds"] = [round(r[key]) for r in results]  # type: ignore[assignment]
+            if key == "p50":
+                res["p99_rounds"] = [r["p99"] for r in results]  # type: ignore[assignment]
             merged[lib] = res
         rows.append((title, merged, key))
     return rows
+
+
+def paired_p99(base: dict[str, float], mine: dict[str, float]) -> str:
+    """rosx's p99 over rospy's, round by round (each pair ran one after the other, so the
+    host's moods, which move both, mostly cancel out), and how many met the target."""
+    mine_p99: list[float] = mine["p99_rounds"]  # type: ignore[assignment]
+    base_p99: list[float] = base["p99_rounds"]  # type: ignore[assignment]
+    ratios = [m / b for m, b in zip(mine_p99, base_p99, strict=True)]
+    met = sum(ratio <= 0.5 for ratio in ratios)
+    shown = ", ".join(f"{ratio:.2f}" for ratio in ratios)
+    return f"  p99 ratio round by round: {shown} ({met} of {len(ratios)} <= 0.5)"
 
 
 def inproc_floor(count: int) -> dict[str, float]:
@@ -521,6 +534,7 @@ def print_inproc(rows: list[InprocRow], rounds: int, floor: dict[str, float] | N
                 f"  ratio rosx/rospy latency p50: {mine['p50'] / base['p50']:.2f}, "
                 f"p99: {mine['p99'] / base['p99']:.2f}"
             )
+            print(paired_p99(base, mine))
         else:
             print(f"  ratio rosx/rospy: {mine['rate'] / base['rate']:.1f}x (target >= 20)")
             if floor is not None and "queue_size=None" in title:
@@ -588,6 +602,7 @@ def print_rows(rows: list[Row]) -> None:
                 f"  ratio rosx/rospy latency p50: {mine / base:.2f} (target <= 0.4), "
                 f"p99: {rx['p99'] / ros['p99']:.2f} (target <= 0.5)"
             )
+            print(paired_p99(ros, rx))
             if "burst" in title:
                 print(
                     f"  ratio rosx/rospy whole burst p50: {rx['burst_p50'] / ros['burst_p50']:.2f}"
@@ -777,6 +792,8 @@ def main() -> None:
                 for field in MEDIAN_FIELDS:
                     if field in res:
                         res[field] = median([r[field] for r in runs[lib]])
+                if key == "p50" and not lib.startswith("floor-"):
+                    res["p99_rounds"] = [r["p99"] for r in runs[lib]]  # type: ignore[assignment]
                 scale_key = 2**30 if key == "bytes_rate" else 1
                 res["rounds"] = [  # type: ignore[assignment]
                     round(r[key] / scale_key, 2) if key == "bytes_rate" else round(r[key])

@@ -92,14 +92,23 @@ class LocalMessage:
         self.msg = msg
         self.kept = kept
 
+    def message(self, decode: Decode, header: dict[str, str]) -> Any:
+        """What the callback of a subscription with one callback receives."""
+        msg = self.msg
+        if getattr(decode, "msg_class", None) is not msg.__class__:
+            return self.messages([decode], header)[0]
+        if self.kept:
+            msg = clone(msg)  # a latched message, kept as published
+        else:
+            self.kept = True  # the usual case: the callback takes the copy made at publish
+        msg._connection_header = header
+        return msg
+
     def messages(self, decoders: list[Decode], header: dict[str, str]) -> list[Any]:
-        """What each of ``decoders``' callbacks receives, in order."""
+        """What each of ``decoders``' callbacks receives, in order: copies made before any
+        callback runs, so that none sees what another does to its message."""
         msg = self.msg
         cls = msg.__class__
-        if len(decoders) == 1 and not self.kept and getattr(decoders[0], "msg_class", None) is cls:
-            self.kept = True  # the usual case: one callback takes the copy made at publish
-            msg._connection_header = header
-            return [msg]
         out: list[Any] = []
         frame: bytes | None = None
         for decode in decoders:
@@ -140,7 +149,10 @@ class Receiver:
         self._streams: set[IncomingStream] = set()
         self._stopped = False
         self._local: threading.Thread | None = None
-        self._wake = threading.Condition(threading.Lock())
+        #: The condition's lock, taken directly on the publishing path (`_ring`): a
+        #: condition's ``with`` runs Python code of its own, costly when cold.
+        self._wake_lock = threading.Lock()
+        self._wake = threading.Condition(self._wake_lock)
         #: The local thread's pipe (read end, write end) while it runs; it sleeps reading it.
         self._doorbell: tuple[int, int] | None = None
         #: How the local thread sleeps, if it does: 0, `_ON_CONDITION`, `_ON_PIPE` or
@@ -243,10 +255,15 @@ class Receiver:
     def _ring(self) -> None:
         # The local thread sleeps in a read of its pipe, not on a condition, so that it is
         # woken by a system call, made without the GIL: it can run at once (`slices`), not
-        # after this thread next lets the GIL go.
-        with self._wake:  # the local thread closes the pipe under the lock
+        # after this thread next lets the GIL go. The local thread closes the pipe under the
+        # lock; acquire/release as in `rosx.node.publication`, for a burst's cold first message.
+        lock = self._wake_lock
+        lock.acquire()
+        try:
             if self._doorbell is not None:
                 os.write(self._doorbell[1], b"\0")
+        finally:
+            lock.release()
 
     def _wait_for_room(self) -> None:
         queue = self._queue
@@ -365,7 +382,7 @@ class Receiver:
             while frames is not None and not self._stopped:
                 if frames:
                     header = stream.header
-                    if len(frames) == 1 and not queue and lock.acquire(blocking=False):
+                    if len(frames) == 1 and not queue and lock.acquire(False):
                         # Nothing waits and no callback runs: run this frame's callbacks now,
                         # without the trip through the queue (the same order either way).
                         try:
@@ -396,15 +413,19 @@ class Receiver:
             return self._received_before + sum(s.frames_received for s in self._streams)
 
     def _count(self, frames: int) -> None:
-        with self._counting:
+        lock = self._counting
+        lock.acquire()
+        try:
             self._received_before += frames
+        finally:
+            lock.release()
 
     def _dispatch_all(self) -> None:
         # Another thread may queue frames just after this one found the queue empty, then
         # fail to take the lock this one still holds: so look again after releasing it.
         queue = self._queue
         lock = self._dispatching
-        while queue and lock.acquire(blocking=False):
+        while queue and lock.acquire(False):
             try:
                 while queue and not self._stopped:
                     self._dispatch(queue.popleft())
@@ -449,6 +470,15 @@ class Receiver:
     def _dispatch_local(
         self, local: LocalMessage, header: dict[str, str], entries: tuple[Entry, ...]
     ) -> None:
+        if len(entries) == 1:  # the usual subscription: one callback, no lists (cold, quicker)
+            callback, decode = entries[0]
+            try:
+                callback(local.message(decode, header))
+            except Exception as exc:  # the callback's, or a raw subscriber's serialization
+                if self._on_error is not None and not self._stopped:
+                    self._on_error(exc, callback)
+            self.handled += 1
+            return
         try:
             messages = local.messages([decode for _, decode in entries], header)
         except Exception as exc:  # a message that cannot be serialized for a raw subscriber

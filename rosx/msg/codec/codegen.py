@@ -1,4 +1,5 @@
-"""Build a message class from a spec: generated ``__init__``, ``serialize`` and ``deserialize``.
+"""Build a message class from a spec: generated ``__init__``, ``serialize`` and ``deserialize``
+(and ``_frame`` for types of a fixed size, `serializer.write_framer`).
 
 As genpy does at build time, rosx writes Python source per message type and executes it once
 (at first use of the type): constructors that fill defaults without loops, and a codec in the
@@ -49,6 +50,7 @@ def build_message_class(spec: MsgSpec, md5sum: str, full_text: str, resolver: Re
         lossy=False,
         reuse=True,
     )
+    framed = serializer.write_framer(src, spec, resolver.lookup)
     code = src.compile()
     namespace: dict[str, Any] = {
         "__slots__": python_names(spec),
@@ -67,6 +69,8 @@ def build_message_class(spec: MsgSpec, md5sum: str, full_text: str, resolver: Re
         "serialize": code["serialize"],
         "deserialize": code["deserialize"],
     }
+    if framed:
+        namespace["_frame"] = code["_frame"]
     for constant in spec.constants:
         namespace[python_name(constant.name)] = constant.value
     return type(spec.short_name, (Message,), namespace)

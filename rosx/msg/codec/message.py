@@ -13,6 +13,8 @@ prints. A service class carries ``_type``, ``_md5sum``, ``_request_class`` and
 from __future__ import annotations
 
 import copy
+import io
+import struct
 from typing import TYPE_CHECKING, Any, ClassVar, Protocol, TypeVar
 
 if TYPE_CHECKING:
@@ -22,6 +24,9 @@ if TYPE_CHECKING:
     from rosx.msg.spec import MsgSpec
 
 _M = TypeVar("_M", bound="Message")
+
+_U32 = struct.Struct("<I")
+_PREFIX = b"\0\0\0\0"
 
 
 class Writable(Protocol):
@@ -83,6 +88,19 @@ class Message:
         if self._slot_types:
             raise NotImplementedError(f"{type(self).__name__} has no generated deserializer")
         return self
+
+    def _frame(self) -> bytes:
+        """This message as one TCPROS frame: its size (uint32), then what `serialize` writes.
+
+        Types whose values all have a fixed size get a generated one, a single ``pack``.
+        """
+        buff = io.BytesIO()
+        buff.write(_PREFIX)
+        self.serialize(buff)
+        size = buff.tell() - 4
+        buff.seek(0)
+        buff.write(_U32.pack(size))
+        return buff.getvalue()
 
     def serialize_numpy(self, buff: Writable, numpy: ModuleType) -> None:
         """As `serialize`, taking numeric arrays as numpy arrays."""

@@ -48,6 +48,7 @@ def store(tmp_path: Path) -> TypeStore:
             "Sub": "int32 a\ntime t\n",
             "Fixed": "float64[9] k\nuint8[3] rgb\nstring[2] names\n",
             "Times": "time t\nduration d\nstd_msgs/Header h\n",
+            "Packed": "bool b\nchar c\nuint8[3] rgb\nfloat32[2] f\ntime t\nduration d\nSub sub\n",
         },
     )
     return TypeStore([tmp_path])
@@ -186,6 +187,36 @@ def test_every_kind_round_trips(store: TypeStore) -> None:
     assert every().deserialize(bytearray(data) + b"trailing") == msg
 
 
+def frame(msg: Message) -> bytes:
+    """What a publisher sends: the serialized size (uint32), then the bytes."""
+    data = ser(msg)
+    return len(data).to_bytes(4, "little") + data
+
+
+def test_a_fixed_size_type_makes_its_frame_in_one_pack(store: TypeStore) -> None:
+    packed = cls("x/Packed", store)
+    assert "_frame" in vars(packed)  # generated, not Message's
+    msg = packed(b=True, c=7, rgb=b"\x01\x02\x03", f=[0.5, -2.0], t=Time(4, 5), d=Duration(-3, 7))
+    msg.sub.a, msg.sub.t = -9, Time(1, 2)
+    assert msg._frame() == frame(msg)
+    assert packed()._frame() == frame(packed())
+    assert "_frame" not in vars(cls("x/Fixed", store))  # strings: Message's
+    # uint8[N] given as a list, or as bytes of another length, is packed as `serialize` packs it
+    for rgb in ([1, 2, 3], b"\x01", b"\x01\x02\x03\x04"):
+        msg.rgb = rgb
+        assert msg._frame() == frame(msg)
+
+
+def test_frame_errors_name_the_field_as_serialize_does(store: TypeStore) -> None:
+    twist = cls("geometry_msgs/Twist")()
+    twist.angular.z = "a"
+    with pytest.raises(SerializationError, match=r"^field angular\.z must be float type$"):
+        twist._frame()
+    packed = cls("x/Packed", store)(f=[1.0])
+    with pytest.raises(SerializationError, match=r"^field f must have 2 elements, not 1$"):
+        packed._frame()
+
+
 # -- every standard type --------------------------------------------------------------------
 
 
@@ -205,6 +236,7 @@ def test_standard_type_round_trips_from_defaults(name: str) -> None:
     assert back == msg_class()
     assert ser(back) == data
     assert msg_class().deserialize(data + b"\0") == back
+    assert msg_class()._frame() == frame(msg_class())
 
 
 @pytest.mark.parametrize(
@@ -214,6 +246,7 @@ def test_populated_round_trip(name: str) -> None:
     msg = populate(cls(name), random.Random(name))
     data = ser(msg)
     assert ser(cls(name)().deserialize(data)) == data
+    assert msg._frame() == frame(msg)
 
 
 # -- errors ---------------------------------------------------------------------------------

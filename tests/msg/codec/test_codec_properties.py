@@ -92,3 +92,4 @@ def test_round_trip(type_name: str, data: st.DataObject) -> None:
     back = get_message_class(type_name, STORE)().deserialize(wire)
     assert plain(back) == plain(msg)
     assert encode(back) == wire
+    assert msg._frame() == len(wire).to_bytes(4, "little") + wire
