@@ -20,8 +20,9 @@ the socket then costs microseconds rather than nanoseconds, so the way is kept s
 a fixed size packs its frame in one call (its generated ``_frame``), and locks are taken with
 ``acquire``/``release``, which runs about half the code of ``with`` (positional arguments too:
 ``acquire(blocking=False)`` parses keywords, cold, for 8 µs). Measured on a two-CPU virtual
-machine: a Twist's first ``publish`` after 10 ms asleep took 39-44 µs instead of 48-54 µs, where a
-bare ``send`` of the same bytes takes 16-20 µs.
+machine, side by side with the longer way: a Twist's first ``publish`` after 10 ms asleep took
+37-40 µs instead of 48-54 µs, where a bare ``send`` of the same bytes takes 16-20 µs
+(bench/README.md, "A burst's first message").
 
 `Publication.accept` runs on the I/O loop when the node's TCPROS server has accepted a
 subscriber's header (`rosx.wire.tcpros.accept_subscriber`); ``publish`` runs on any thread, so
