@@ -1,0 +1,237 @@
+"""A burst's first message, side by side: rospy, rosx, and rosx from another checkout.
+
+The p99 latency of bursts (`bench_pubsub.py`) is the first message of each burst: it runs
+after the publisher and the subscriber have slept, with the CPU's caches cold, and how cold
+depends on what the host did meanwhile, so single runs minutes apart differ twofold. Here every
+contender is started at once, each its own publisher (and, between two processes, its own
+subscriber process), and they take turns: each publishes a burst of ten Twists every 10 ms, as
+in `bench_pubsub.py`, the contenders' bursts spread evenly over those 10 ms in an order shuffled
+every round. Whatever the host does then falls on all of them alike (and each contender's
+bursts run after the others' work, not after 10 ms of nothing). Printed per contender: the
+first message's latency (``time.time()`` before ``publish`` to ``time.time()`` in the
+callback), p50 and p90 over the bursts (the p90 of first messages is about the p99 of all
+messages), and its ratio to rospy's.
+
+``--against PATH`` adds rosx from the checkout at PATH (to measure a change: PATH holds the code
+before it). ``--one-process`` puts each contender's subscriber in its publisher's process
+(rosx links them in-process; rospy's one node talks to itself over TCPROS).
+
+Run: ``python bench/bench_burst.py [--bursts 390] [--against PATH] [--one-process]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import random
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from bench.bench_pubsub import (  # noqa: E402 -- after the path is set
+    API_ROSPY,
+    API_ROSX,
+    ROS1_PYTHON,
+    start_master,
+)
+
+# A publisher waiting for its turn: on "b" it publishes a burst and says "ok"; on
+# "q" it publishes the last message (linear.y -1) and, with its own subscriber, prints what it
+# measured. linear.x holds the stamp, linear.y the message's place in its burst.
+PUBLISHER = """
+import sys, time, json, threading
+one_process, tag = sys.argv[1] == '1', sys.argv[2]
+make_node('burst_pub_' + tag)
+cls = msg_class('geometry_msgs/Twist')
+lat = []
+done = threading.Event()
+clock = time.time
+def cb(msg):
+    now = clock()
+    if msg.linear.y == 0:
+        lat.append(now - msg.linear.x)
+    elif msg.linear.y < 0:
+        done.set()
+if one_process:
+    second_node('burst_sub_' + tag)
+    subscriber('/burst_' + tag, cls, cb, 100)
+pub = publisher('/burst_' + tag, cls, 100)
+while pub.get_num_connections() == 0:
+    time.sleep(0.01)
+time.sleep(0.5)
+print('ready', flush=True)
+msg = cls()
+for line in sys.stdin:
+    if line.strip() != 'b':
+        break
+    for i in range(10):
+        msg.linear.x = clock()
+        msg.linear.y = i
+        pub.publish(msg)
+    print('ok', flush=True)
+msg.linear.y = -1
+pub.publish(msg)
+if one_process:
+    done.wait(10)
+    print(json.dumps(lat), flush=True)
+else:
+    time.sleep(0.5)
+import os
+os._exit(0)
+"""
+
+SUBSCRIBER = """
+import sys, time, json, threading
+tag = sys.argv[1]
+make_node('burst_sub_' + tag)
+cls = msg_class('geometry_msgs/Twist')
+lat = []
+done = threading.Event()
+clock = time.time
+def cb(msg):
+    now = clock()
+    if msg.linear.y == 0:
+        lat.append(now - msg.linear.x)
+    elif msg.linear.y < 0:
+        done.set()
+subscriber('/burst_' + tag, cls, cb, 100)
+print('ready', flush=True)
+done.wait(600)
+print(json.dumps(lat), flush=True)
+import os
+os._exit(0)
+"""
+
+#: Bursts at the start of a run that are not counted (connections settling, first imports).
+WARMUP = 20
+#: Seconds from one burst of a contender to its next (`bench_pubsub.py`'s bursts: 10 ms).
+PERIOD = 0.01
+
+
+class Contender:
+    """One library (or one checkout of rosx): its publisher and, between two processes, its
+    subscriber, on a topic of its own."""
+
+    def __init__(
+        self, name: str, master: str, root: Path | None, tag_number: int, *, one_process: bool
+    ) -> None:
+        self.name = name
+        python = ROS1_PYTHON if root is None else sys.executable
+        api = API_ROSPY if root is None else API_ROSX
+        env = dict(os.environ, ROS_MASTER_URI=master)
+        tag = str(tag_number)  # names its nodes and topic apart from the others'
+        if root is None:
+            env["ROS_PACKAGE_PATH"] = "/usr/share"
+        else:
+            env["PYTHONPATH"] = str(root)
+
+        def spawn(script: str, *argv: str) -> subprocess.Popen[str]:
+            return subprocess.Popen(
+                [python, "-c", api + script, *argv],
+                stdin=subprocess.PIPE,
+                stdout=subprocess.PIPE,
+                stderr=subprocess.DEVNULL,
+                env=env,
+                cwd=root or ROOT,
+                text=True,
+            )
+
+        self.sub = None if one_process else spawn(SUBSCRIBER, tag)
+        if self.sub is not None:
+            self._expect(self.sub, "ready")
+        self.pub = spawn(PUBLISHER, "1" if one_process else "0", tag)
+        self._expect(self.pub, "ready")
+
+    @staticmethod
+    def _expect(proc: subprocess.Popen[str], word: str) -> None:
+        assert proc.stdout is not None
+        line = proc.stdout.readline().strip()
+        if line != word:
+            raise SystemExit(f"a worker said {line!r}, not {word!r}")
+
+    def go(self) -> None:
+        """Have the publisher publish a burst now (`done` waits for it)."""
+        assert self.pub.stdin is not None
+        self.pub.stdin.write("b\n")
+        self.pub.stdin.flush()
+
+    def done(self) -> None:
+        self._expect(self.pub, "ok")
+
+    def finish(self) -> list[float]:
+        """Stop the workers; the first messages' latencies in µs, warm-up left out."""
+        assert self.pub.stdin is not None
+        out, _ = self.pub.communicate("q\n", timeout=60)
+        if self.sub is not None:
+            out, _ = self.sub.communicate(timeout=60)
+        return [value * 1e6 for value in json.loads(out.strip().splitlines()[-1])[WARMUP:]]
+
+    def kill(self) -> None:
+        for proc in (self.pub, self.sub):
+            if proc is not None and proc.poll() is None:
+                proc.kill()
+                proc.wait()
+
+
+def percentile(values: list[float], share: float) -> float:
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, int(len(ordered) * share))]
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--bursts", type=int, default=390, help="bursts per contender")
+    parser.add_argument("--against", type=Path, help="also rosx from the checkout at PATH")
+    parser.add_argument(
+        "--one-process", action="store_true", help="each subscriber in its publisher's process"
+    )
+    args = parser.parse_args()
+    roots: list[tuple[str, Path | None]] = []
+    if Path(ROS1_PYTHON).exists():
+        roots.append(("rospy", None))
+    roots.append(("rosx", ROOT))
+    if args.against is not None:
+        roots.append((f"rosx@{args.against}", args.against.resolve()))
+    proc, master = start_master()
+    contenders: list[Contender] = []
+    try:
+        for number, (name, root) in enumerate(roots):
+            contenders.append(Contender(name, master, root, number, one_process=args.one_process))
+        order = list(contenders)
+        rng = random.Random(0)
+        slot = PERIOD / len(order)
+        start = time.monotonic()
+        for burst in range(args.bursts + WARMUP):
+            rng.shuffle(order)
+            for number, contender in enumerate(order):
+                time.sleep(max(0.0, start + burst * PERIOD + number * slot - time.monotonic()))
+                contender.go()
+            for contender in order:
+                contender.done()
+        results = {contender.name: contender.finish() for contender in contenders}
+    finally:
+        for contender in contenders:
+            contender.kill()
+        proc.terminate()
+        proc.wait()
+    where = "one process" if args.one_process else "two processes"
+    print(f"A burst's first message, publish -> callback, {where}, {args.bursts} bursts each:")
+    base = results.get("rospy")
+    for name, values in results.items():
+        p50, p90 = percentile(values, 0.5), percentile(values, 0.9)
+        line = f"  {name:12}: p50 {p50:6.1f} us, p90 {p90:6.1f} us ({len(values)} bursts)"
+        if base and name != "rospy":
+            line += (
+                f", ratio to rospy p50 {p50 / percentile(base, 0.5):.2f}"
+                f" p90 {p90 / percentile(base, 0.9):.2f}"
+            )
+        print(line)
+
+
+if __name__ == "__main__":
+    main()
