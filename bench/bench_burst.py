@@ -121,31 +121,37 @@ class Contender:
         self, name: str, master: str, root: Path | None, tag_number: int, *, one_process: bool
     ) -> None:
         self.name = name
-        python = ROS1_PYTHON if root is None else sys.executable
-        api = API_ROSPY if root is None else API_ROSX
-        env = dict(os.environ, ROS_MASTER_URI=master)
-        tag = str(tag_number)  # names its nodes and topic apart from the others'
+        self.root = root
+        self.one_process = one_process
+        self.tag = str(tag_number)  # names its nodes and topic apart from the others'
+        self.env = dict(os.environ, ROS_MASTER_URI=master)
         if root is None:
-            env["ROS_PACKAGE_PATH"] = "/usr/share"
+            self.env["ROS_PACKAGE_PATH"] = "/usr/share"
         else:
-            env["PYTHONPATH"] = str(root)
+            self.env["PYTHONPATH"] = str(root)
+        self.sub: subprocess.Popen[str] | None = None
+        self.pub: subprocess.Popen[str] | None = None
 
-        def spawn(script: str, *argv: str) -> subprocess.Popen[str]:
-            return subprocess.Popen(
-                [python, "-c", api + script, *argv],
-                stdin=subprocess.PIPE,
-                stdout=subprocess.PIPE,
-                stderr=subprocess.DEVNULL,
-                env=env,
-                cwd=root or ROOT,
-                text=True,
-            )
-
-        self.sub = None if one_process else spawn(SUBSCRIBER, tag)
-        if self.sub is not None:
+    def start(self) -> None:
+        """Start the workers; return once the publisher sees its subscriber."""
+        if not self.one_process:
+            self.sub = self._spawn(SUBSCRIBER, self.tag)
             self._expect(self.sub, "ready")
-        self.pub = spawn(PUBLISHER, "1" if one_process else "0", tag)
+        self.pub = self._spawn(PUBLISHER, "1" if self.one_process else "0", self.tag)
         self._expect(self.pub, "ready")
+
+    def _spawn(self, script: str, *argv: str) -> subprocess.Popen[str]:
+        python = ROS1_PYTHON if self.root is None else sys.executable
+        api = API_ROSPY if self.root is None else API_ROSX
+        return subprocess.Popen(
+            [python, "-c", api + script, *argv],
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL,
+            env=self.env,
+            cwd=self.root or ROOT,
+            text=True,
+        )
 
     @staticmethod
     def _expect(proc: subprocess.Popen[str], word: str) -> None:
@@ -156,16 +162,17 @@ class Contender:
 
     def go(self) -> None:
         """Have the publisher publish a burst now (`done` waits for it)."""
-        assert self.pub.stdin is not None
+        assert self.pub is not None and self.pub.stdin is not None
         self.pub.stdin.write("b\n")
         self.pub.stdin.flush()
 
     def done(self) -> None:
+        assert self.pub is not None
         self._expect(self.pub, "ok")
 
     def finish(self) -> list[float]:
         """Stop the workers; the first messages' latencies in µs, warm-up left out."""
-        assert self.pub.stdin is not None
+        assert self.pub is not None
         out, _ = self.pub.communicate("q\n", timeout=60)
         if self.sub is not None:
             out, _ = self.sub.communicate(timeout=60)
@@ -201,7 +208,9 @@ def main() -> None:
     contenders: list[Contender] = []
     try:
         for number, (name, root) in enumerate(roots):
-            contenders.append(Contender(name, master, root, number, one_process=args.one_process))
+            contender = Contender(name, master, root, number, one_process=args.one_process)
+            contenders.append(contender)  # before it starts: stopped whatever happens
+            contender.start()
         order = list(contenders)
         rng = random.Random(0)
         slot = PERIOD / len(order)
