@@ -198,6 +198,8 @@ def main() -> None:
         "--one-process", action="store_true", help="each subscriber in its publisher's process"
     )
     args = parser.parse_args()
+    if args.against is not None and not (args.against / "rosx" / "node").is_dir():
+        parser.error(f"--against: no rosx checkout at {args.against}")
     roots: list[tuple[str, Path | None]] = []
     if Path(ROS1_PYTHON).exists():
         roots.append(("rospy", None))
