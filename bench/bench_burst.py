@@ -40,13 +40,12 @@ from bench.bench_pubsub import (  # noqa: E402 -- after the path is set
     start_master,
 )
 
-# A publisher waiting for its turn: on "b" it publishes a burst and says "ok"; on
-# "q" it publishes the last message (linear.y -1) and, with its own subscriber, prints what it
-# measured. linear.x holds the stamp, linear.y the message's place in its burst.
-PUBLISHER = """
+# What publisher and subscriber share: the topic's class and the callback that records a
+# burst's first message (linear.x holds the stamp, linear.y the message's place in its burst; -1
+# ends the run). The first argument names the contender's nodes and topic apart.
+RECORDER = """
 import sys, time, json, threading
-one_process, tag = sys.argv[1] == '1', sys.argv[2]
-make_node('burst_pub_' + tag)
+tag = sys.argv[1]
 cls = msg_class('geometry_msgs/Twist')
 lat = []
 done = threading.Event()
@@ -57,6 +56,15 @@ def cb(msg):
         lat.append(now - msg.linear.x)
     elif msg.linear.y < 0:
         done.set()
+"""
+
+# A publisher waiting for its turn: on "b" it publishes a burst and says "ok"; on "q" it
+# publishes the last message and, with its own subscriber, prints what it measured.
+PUBLISHER = (
+    RECORDER
+    + """
+one_process = sys.argv[2] == '1'
+make_node('burst_pub_' + tag)
 if one_process:
     second_node('burst_sub_' + tag)
     subscriber('/burst_' + tag, cls, cb, 100)
@@ -84,21 +92,12 @@ else:
 import os
 os._exit(0)
 """
+)
 
-SUBSCRIBER = """
-import sys, time, json, threading
-tag = sys.argv[1]
+SUBSCRIBER = (
+    RECORDER
+    + """
 make_node('burst_sub_' + tag)
-cls = msg_class('geometry_msgs/Twist')
-lat = []
-done = threading.Event()
-clock = time.time
-def cb(msg):
-    now = clock()
-    if msg.linear.y == 0:
-        lat.append(now - msg.linear.x)
-    elif msg.linear.y < 0:
-        done.set()
 subscriber('/burst_' + tag, cls, cb, 100)
 print('ready', flush=True)
 done.wait(600)
@@ -106,6 +105,7 @@ print(json.dumps(lat), flush=True)
 import os
 os._exit(0)
 """
+)
 
 #: Bursts at the start of a run that are not counted (connections settling, first imports).
 WARMUP = 20
@@ -137,7 +137,7 @@ class Contender:
         if not self.one_process:
             self.sub = self._spawn(SUBSCRIBER, self.tag)
             self._expect(self.sub, "ready")
-        self.pub = self._spawn(PUBLISHER, "1" if self.one_process else "0", self.tag)
+        self.pub = self._spawn(PUBLISHER, self.tag, "1" if self.one_process else "0")
         self._expect(self.pub, "ready")
 
     def _spawn(self, script: str, *argv: str) -> subprocess.Popen[str]:
