@@ -10,7 +10,9 @@ with rosx under this Python, and prints:
 * latency from ``publish`` to the callback at 1 kHz and in bursts of 10 every 10 ms: p50 and
   p99, the first messages ignored as a warm-up, medians over several rounds with rospy and rosx
   alternating, and the p99 ratio round by round; and the floor under them, a bare Python sender
-  and receiving thread over a Unix socket and over loopback TCP, same pacing;
+  and receiving thread over a Unix socket and over loopback TCP, same pacing; and over the Unix
+  socket again with the receiving thread given the short time slice rosx's readers ask for
+  (`rosx.node.slices`), the floor under rosx's own design;
 * 1 MiB messages (``sensor_msgs/Image``) and 10 MiB ``sensor_msgs/PointCloud2``: bytes/s
   delivered, several rounds;
 * fan-out and fan-in: one publisher to 10 subscriber processes and 10 publishers to one, Twist
@@ -231,10 +233,14 @@ print(json.dumps(result), flush=True)
 
 
 # The floor: a bare Python sender and a Python thread blocked in ``recv_into``, no library, the
-# same pacing and stamps as the latency cases (a 52-byte frame per message).
+# same pacing and stamps as the latency cases (a 52-byte frame per message). ``unix-slice``: the
+# receiving thread first asks for rosx's short time slice.
 FLOOR = """
 import os, socket, struct, sys, threading, time, json
 family, count, period, warmup = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4])
+family, short_slice = family.split('-')[0], family.endswith('-slice')
+if short_slice:
+    from rosx.node.slices import request_short_slice
 if family == 'unix':
     server = socket.socket(socket.AF_UNIX)
     server.bind('\\0rosx-bench-floor-%d' % os.getpid())
@@ -245,6 +251,8 @@ server.listen(1)
 address = server.getsockname()
 lat = []
 def receive(conn):
+    if short_slice:
+        request_short_slice()
     buff = bytearray(65536)
     while True:
         size = conn.recv_into(buff)
@@ -370,9 +378,11 @@ def run_case(
 
 
 def run_floor(family: str, count: int, period: float, warmup: int) -> dict[str, float]:
-    """The floor under the latency cases: bare sockets (``unix`` or ``tcp``), no library."""
+    """The floor under the latency cases: bare sockets (``unix``, ``unix-slice`` or ``tcp``),
+    no library."""
     done = subprocess.run(
         [sys.executable, "-c", FLOOR, family, str(count), str(period), str(warmup)],
+        env=dict(os.environ, PYTHONPATH=str(ROOT)),
         capture_output=True,
         text=True,
         timeout=120,
@@ -576,7 +586,8 @@ def print_rows(rows: list[Row]) -> None:
             if lib.startswith("floor-"):  # bare sockets: latency only
                 print(
                     f"  {lib}: latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us "
-                    f"(median of {len(res['rounds'])}: {res['rounds']})"  # type: ignore[arg-type]
+                    f"(median of {len(res['rounds'])}: {res['rounds']}), "  # type: ignore[arg-type]
+                    f"p99 {res['p99'] / ros['p99']:.2f} x rospy's"
                 )
                 continue
             parts = [f"received {int(res['received'])}", f"lost {int(res['lost'])}"]
@@ -765,7 +776,7 @@ def main() -> None:
             if name in ("latency", "image"):
                 libs = (*libs, "rosx-tcp")
             if name == "latency":
-                libs = (*libs, "floor-unix", "floor-tcp")
+                libs = (*libs, "floor-unix", "floor-unix-slice", "floor-tcp")
             runs: dict[str, list[dict[str, float]]] = {lib: [] for lib in libs}
             for _ in range(rounds if name in ("latency", "image") else fast_rounds):
                 for lib, results in runs.items():
