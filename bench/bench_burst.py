@@ -12,9 +12,15 @@ first message's latency (``time.time()`` before ``publish`` to ``time.time()`` i
 callback), p50 and p90 over the bursts (the p90 of first messages is about the p99 of all
 messages), and its ratio to rospy's.
 
+A third contender, ``floor``, is no library at all: a bare Python sender and a Python thread
+blocked in ``recv_into`` on a Unix socket, that thread with the short time slice rosx's readers
+ask for (`rosx.node.slices`). It is the floor under rosx's design in the same moment of the host,
+and so shows how much of the ratio is left to any library.
+
 ``--against PATH`` adds rosx from the checkout at PATH (to measure a change: PATH holds the code
 before it). ``--one-process`` puts each contender's subscriber in its publisher's process
-(rosx links them in-process; rospy's one node talks to itself over TCPROS).
+(rosx links them in-process; rospy's one node talks to itself over TCPROS; the floor's thread
+reads a socket pair in its sender's process).
 
 Run: ``python bench/bench_burst.py [--bursts 390] [--against PATH] [--one-process]``.
 """
@@ -107,6 +113,63 @@ os._exit(0)
 """
 )
 
+# The floor: the same turns and the same record (a 52-byte frame: stamp, place in its burst),
+# over a Unix socket pair; its reader runs in a child process (two processes) or a thread.
+FLOOR = """
+import os, socket, struct, sys, threading, time, json
+from rosx.node.slices import request_short_slice
+one_process = sys.argv[2] == '1'
+record = struct.Struct('<dd36x')
+sender, receiver = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
+clock = time.time
+lat = []
+def read():
+    request_short_slice()
+    buff = bytearray(65536)
+    view = memoryview(buff)
+    kept = 0
+    while True:
+        size = receiver.recv_into(view[kept:])
+        now = clock()
+        if not size:
+            return
+        kept += size
+        whole = kept - kept % record.size
+        for offset in range(0, whole, record.size):
+            stamp, place = record.unpack_from(buff, offset)
+            if place == 0:
+                lat.append(now - stamp)
+            elif place < 0:
+                return
+        buff[:kept - whole] = buff[whole:kept]
+        kept -= whole
+if one_process:
+    reader = threading.Thread(target=read)
+    reader.start()
+else:
+    child = os.fork()
+    if child == 0:
+        sender.close()
+        read()
+        print(json.dumps(lat), flush=True)
+        os._exit(0)
+    receiver.close()
+print('ready', flush=True)
+for line in sys.stdin:
+    if line.strip() != 'b':
+        break
+    for i in range(10):
+        sender.send(record.pack(clock(), i))
+    print('ok', flush=True)
+sender.send(record.pack(0.0, -1))
+if one_process:
+    reader.join(10)
+    print(json.dumps(lat), flush=True)
+else:
+    os.waitpid(child, 0)
+os._exit(0)
+"""
+
 #: Bursts at the start of a run that are not counted (connections settling, first imports).
 WARMUP = 20
 #: Seconds from one burst of a contender to its next (`bench_pubsub.py`'s bursts: 10 ms).
@@ -114,14 +177,15 @@ PERIOD = 0.01
 
 
 class Contender:
-    """One library (or one checkout of rosx): its publisher and, between two processes, its
-    subscriber, on a topic of its own."""
+    """One library (or one checkout of rosx, or the floor): its publisher and, between two
+    processes, its subscriber, on a topic of its own."""
 
     def __init__(
         self, name: str, master: str, root: Path | None, tag_number: int, *, one_process: bool
     ) -> None:
         self.name = name
         self.root = root
+        self.floor = name == "floor"  # bare sockets: one worker, which forks its reader
         self.one_process = one_process
         self.tag = str(tag_number)  # names its nodes and topic apart from the others'
         self.env = dict(os.environ, ROS_MASTER_URI=master)
@@ -134,15 +198,16 @@ class Contender:
 
     def start(self) -> None:
         """Start the workers; return once the publisher sees its subscriber."""
-        if not self.one_process:
+        if not self.one_process and not self.floor:
             self.sub = self._spawn(SUBSCRIBER, self.tag)
             self._expect(self.sub, "ready")
-        self.pub = self._spawn(PUBLISHER, self.tag, "1" if self.one_process else "0")
+        script = FLOOR if self.floor else PUBLISHER
+        self.pub = self._spawn(script, self.tag, "1" if self.one_process else "0")
         self._expect(self.pub, "ready")
 
     def _spawn(self, script: str, *argv: str) -> subprocess.Popen[str]:
         python = ROS1_PYTHON if self.root is None else sys.executable
-        api = API_ROSPY if self.root is None else API_ROSX
+        api = "" if self.floor else API_ROSPY if self.root is None else API_ROSX
         return subprocess.Popen(
             [python, "-c", api + script, *argv],
             stdin=subprocess.PIPE,
@@ -206,6 +271,7 @@ def main() -> None:
     roots.append(("rosx", ROOT))
     if args.against is not None:
         roots.append((f"rosx@{args.against}", args.against.resolve()))
+    roots.append(("floor", ROOT))
     proc, master = start_master()
     contenders: list[Contender] = []
     try:
