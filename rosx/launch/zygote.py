@@ -16,8 +16,10 @@ talks with the launcher over a socket (`ZygoteClient`), one JSON document a line
   path (the helper's too), which the helper's type store then uses instead of crawling it
   again (hundreds of milliseconds on Debian's ``/usr/share``); the helper loads after that;
 * the launcher asks ``{"id": N, "script": PATH, "args": [...], "env": {...}, "cwd": DIR,
-  "stdout": FILE or null, "append": BOOL}``; the helper answers ``{"id": N, "pid": PID}`` (or
-  ``{"id": N, "error": TEXT}``);
+  "stdout": FILE or null, "append": BOOL}``; the helper opens FILE, forks, and answers
+  ``{"id": N, "pid": PID}`` (or ``{"id": N, "error": TEXT}``: FILE cannot be opened, or the
+  fork failed). So a node's ``-stdout.log`` exists once the launcher says it started, as with
+  ROS 1's roslaunch, whose child inherits the file already open;
 * when a node ends, the helper (its parent) reaps it and says ``{"exit": PID, "code": CODE}``
   (a signal's death as its negative number, as `subprocess` reports it).
 
@@ -75,7 +77,17 @@ def _preload(crawled: Mapping[str, str] | None) -> None:
             get_message_class(name)
 
 
-def _child(request: Mapping[str, Any], inherited: Sequence[socket.socket]) -> None:
+def _open_stdout(request: Mapping[str, Any]) -> int | None:
+    """The node's stdout log, opened as the request says (None: it keeps the helper's)."""
+    if not request.get("stdout"):
+        return None
+    flags = os.O_WRONLY | os.O_CREAT | (os.O_APPEND if request["append"] else os.O_TRUNC)
+    return os.open(request["stdout"], flags, 0o644)
+
+
+def _child(
+    request: Mapping[str, Any], stdout: int | None, inherited: Sequence[socket.socket]
+) -> None:
     """In the fork: become the node, run its script, and exit with its status as a Python
     process exits (``atexit`` hooks and the node's own shutdown run); never returns."""
     code = 1
@@ -90,11 +102,9 @@ def _child(request: Mapping[str, Any], inherited: Sequence[socket.socket]) -> No
         os.environ.clear()
         os.environ.update(request["env"])
         os.chdir(request["cwd"])
-        if request.get("stdout"):
-            flags = os.O_WRONLY | os.O_CREAT | (os.O_APPEND if request["append"] else os.O_TRUNC)
-            fd = os.open(request["stdout"], flags, 0o644)
-            os.dup2(fd, 1)
-            os.close(fd)
+        if stdout is not None:
+            os.dup2(stdout, 1)
+            os.close(stdout)
         from rosx.client.script import run_script  # noqa: PLC0415
 
         code = run_script(request["script"], request["args"])
@@ -131,13 +141,19 @@ def serve(fd: int) -> int:
     _send(control, {"ready": os.getpid()})
     while True:
         for request in lines.buffered():
+            stdout = None
             try:
+                stdout = _open_stdout(request)
                 pid = os.fork()
             except OSError as error:
+                if stdout is not None:
+                    os.close(stdout)
                 _send(control, {"id": request["id"], "error": str(error)})
                 continue
             if pid == 0:
-                _child(request, (control, wake_read, wake_write))
+                _child(request, stdout, (control, wake_read, wake_write))
+            if stdout is not None:
+                os.close(stdout)
             _send(control, {"id": request["id"], "pid": pid})
         ready, _, _ = select.select([control, wake_read], [], [])
         if wake_read in ready:
@@ -281,7 +297,8 @@ class ZygoteClient:
         """Fork a node running ``script``; its pid.
 
         Raises:
-            ZygoteError: the helper is gone or did not answer.
+            ZygoteError: the helper is gone or did not answer, or could not open ``stdout``
+                or fork (the text says which).
         """
         with self._lock:
             self._next += 1
