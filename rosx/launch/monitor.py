@@ -114,6 +114,8 @@ class LocalProcess:
         self.exit_code: int | None = None
         self.time_of_death: float | None = None
         self.spawn_count = 0
+        #: ROS 1's error when the last start could not open the stdout log, else None.
+        self.log_error: str | None = None
 
     @property
     def log_name(self) -> str:
@@ -135,16 +137,25 @@ class LocalProcess:
             return None
         return self.log_dir / f"{self.log_name}-stdout.log"
 
-    def _stdout(self) -> IO[bytes] | None:
+    def _stdout(self) -> IO[bytes] | int | None:
+        """The stdout log, opened (None: the terminal). As in ROS 1, a log that cannot be
+        opened does not keep the process from starting: `log_error` says why, and its output
+        is dropped (ROS 1 gives it a pipe that nobody reads)."""
+        self.log_error = None
         path = self.stdout_path
-        return None if path is None else path.open("ab" if self.respawn else "wb")
+        if path is None:
+            return None
+        try:
+            return path.open("ab" if self.respawn else "wb")
+        except OSError as exc:
+            self.log_error = f"[{self.name}] ERROR: unable to configure logging [{exc}]"
+            return subprocess.DEVNULL
 
     def start(self) -> None:
         """Start the program.
 
         Raises:
             FatalLaunchError: it cannot be run (ROS 1's texts: missing program, no ``#!``…).
-            OSError: its log file cannot be opened.
         """
         self.spawn_count += 1
         self.exit_code = self.time_of_death = None
@@ -166,7 +177,7 @@ class LocalProcess:
             self._record_death(1)
             raise FatalLaunchError(_launch_failure(self.name, argv, exc)) from None
         finally:
-            if stdout is not None:
+            if stdout is not None and not isinstance(stdout, int):
                 stdout.close()
         self.pid = self.popen.pid
 
@@ -298,10 +309,8 @@ class ProcessMonitor:
             self.console.error(str(exc))
             self.procs.remove(process)
             return False
-        except OSError as exc:
-            self.console.error(f"[{process.name}] ERROR: unable to configure logging [{exc}]")
-            self.procs.remove(process)
-            return False
+        if process.log_error is not None:
+            self.console.error(process.log_error)
         process.poll()
         if process.exit_code not in (None, 0):
             self.console.error(f"failed to start local process: {' '.join(process.argv)}")
@@ -406,10 +415,12 @@ class ProcessMonitor:
             process.reap()
             try:
                 process.start()
-            except (FatalLaunchError, OSError) as exc:
+            except FatalLaunchError as exc:
                 self.console.error(str(exc))
                 self.procs.remove(process)
                 continue
+            if process.log_error is not None:
+                self.console.error(process.log_error)
             self.console.bold(f"process[{process.name}]: started with pid [{process.pid}]")
 
     def _next_wake(self) -> float:

@@ -376,6 +376,7 @@ class ForkedProcess(LocalProcess):
             return
         self.spawn_count += 1
         self.exit_code = self.time_of_death = None
+        self.log_error = None
         with contextlib.suppress(OSError):
             self.cwd.mkdir(parents=True, exist_ok=True)
         stdout = self.stdout_path
