@@ -12,7 +12,7 @@ first message's latency (``time.time()`` before ``publish`` to ``time.time()`` i
 callback), p50 and p90 over the bursts (the p90 of first messages is about the p99 of all
 messages), and its ratio to rospy's.
 
-A third contender, ``floor``, is no library at all: a bare Python sender and a Python thread
+One more contender, ``floor``, is no library at all: a bare Python sender and a Python thread
 blocked in ``recv_into`` on a Unix socket, that thread with the short time slice rosx's readers
 ask for (`rosx.node.slices`). It is the floor under rosx's design in the same moment of the host,
 and so shows how much of the ratio is left to any library.
