@@ -52,13 +52,15 @@ if TYPE_CHECKING:
 connection_ids = itertools.count(1)
 
 _CONNECT_TIMEOUT = 30.0
-_RECV_SIZE = 256 * 1024
+#: The size of a read: a read of fewer bytes took all the socket held.
+RECV_SIZE = 256 * 1024
 # Bytes read from one socket before the callbacks run: enough to drain a backlog.
 _READ_BOUND = 8 * 1024 * 1024
 # A frame at least this large is read straight into a buffer of its own (`_read_large`).
 _DIRECT = 64 * 1024
 _DONTWAIT = getattr(socket, "MSG_DONTWAIT", 0)
-_U32 = struct.Struct("<I")
+#: A frame's length prefix.
+U32 = struct.Struct("<I")
 
 
 def describe_connection(sock: socket.socket, fileno: int, remote: tuple[str, int]) -> str:
@@ -133,8 +135,10 @@ class IncomingStream:
         self.bytes_received = 0
         self.frames_received = 0
         self._reader = FrameReader(DEFAULT_MAX_HEADER_SIZE)
-        self._scratch = bytearray(_RECV_SIZE)
-        self._view = memoryview(self._scratch)
+        #: What each read reads into (`read`, or a receiver's own reads: `whole_frame`,
+        #: `read_on`), and a view of it.
+        self.scratch = bytearray(RECV_SIZE)
+        self.view = memoryview(self.scratch)
         self._task: asyncio.Task[None] | None = None
         #: The receiver thread reading this stream once connected (see `Receiver`).
         self.receiver: Detacher | None = None
@@ -288,45 +292,62 @@ class IncomingStream:
         sock = self.sock
         if sock is None or self.closed:
             return None
-        scratch = self._scratch
-        reader = self._reader
-        whole = not reader.buffered  # a read may then hold exactly one frame
+        scratch = self.scratch
+        whole = not self._reader.buffered  # a read may then hold exactly one frame
         if not whole:
-            pending = reader.pending()
+            pending = self._reader.pending()
             if pending >= _DIRECT:
                 return self._read_large(sock, pending)
-        view = self._view
-        total = 0
-        flags = 0
-        while True:
+        try:
+            size = sock.recv_into(scratch)
+        except (BlockingIOError, InterruptedError):
+            return ()
+        except OSError:
+            return None
+        if whole and 4 <= size < RECV_SIZE and U32.unpack_from(scratch)[0] == size - 4:
+            return (self.whole_frame(size),)
+        return self.read_on(sock, size)
+
+    def whole_frame(self, size: int) -> bytes:
+        """The frame of a read of ``size`` bytes into `scratch` that is one whole frame and
+        nothing else (the usual read on a topic whose subscriber keeps up), counted."""
+        frame = bytes(self.view[4:size])
+        self.bytes_received += size
+        self.frames_received += 1
+        if self.latching:
+            self.latched = frame
+        return frame
+
+    def read_on(self, sock: socket.socket, size: int) -> Sequence[bytes | memoryview] | None:
+        """The complete frames after a read of ``size`` bytes into `scratch` that was not one
+        whole frame alone, with what more the socket holds already (up to a bound); ``None``:
+        the stream has ended (``size`` 0) or is out of sync."""
+        if size == 0:
+            return None
+        reader = self._reader
+        view = self.view
+        reader.feed(view[:size])
+        total = size
+        while size == RECV_SIZE and _DONTWAIT and total < _READ_BOUND:
+            if reader.pending() >= _DIRECT:
+                break  # the rest of that frame goes straight into its own buffer
             try:
-                size = sock.recv_into(scratch, 0, flags)
+                size = sock.recv_into(self.scratch, 0, _DONTWAIT)
             except (BlockingIOError, InterruptedError):
                 break
             except OSError:
                 return None
             if size == 0:
-                if total:
-                    break  # deliver what came; the next read sees the end
-                return None
-            if whole and 4 <= size < _RECV_SIZE and _U32.unpack_from(scratch)[0] == size - 4:
-                # The usual read on a topic that keeps up: one whole frame, nothing before it.
-                frame = bytes(view[4:size])
-                self.bytes_received += size
-                self.frames_received += 1
-                if self.latching:
-                    self.latched = frame
-                return (frame,)
-            whole = False
+                break  # deliver what came; the next read sees the end
             total += size
             reader.feed(view[:size])
-            if size < _RECV_SIZE or not _DONTWAIT or total >= _READ_BOUND:
-                break
-            if reader.pending() >= _DIRECT:
-                break  # the rest of that frame goes straight into its own buffer
-            flags = _DONTWAIT
         self.bytes_received += total
         return self.take_frames()
+
+    @property
+    def buffered(self) -> int:
+        """Bytes read and not yet handed over as frames (part of a frame)."""
+        return self._reader.buffered
 
     def _read_large(self, sock: socket.socket, size: int) -> Sequence[bytes | memoryview] | None:
         buff = bytearray(size)

@@ -95,6 +95,8 @@ def message_decoder(
 
     # What it makes: an in-process message of this class is handed over as a copy instead.
     setattr(decode, "msg_class", cls)  # noqa: B010 - an attribute on a function
+    # How: a reader may run the two lines above itself (`rosx.node.receiver`).
+    setattr(decode, "fresh", fresh)  # noqa: B010 - an attribute on a function
     return decode
 
 

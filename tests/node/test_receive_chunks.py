@@ -1,7 +1,8 @@
 """A subscriber reads frames whole however the publisher's bytes are cut up on the way.
 
-A read that holds exactly one whole frame is handed over at once; anything else goes through
-the stream's frame reader. The publisher here is a bare TCPROS socket, so the test decides
+A read that holds exactly one whole frame is handed over at once (with one callback, its
+reader thread runs it straight from the read); anything else goes through the stream's frame
+reader. The publisher here is a bare TCPROS socket, so the test decides
 where each read ends: it waits, through ``getBusStats``, until the subscriber has read every
 byte sent before sending the next piece.
 """
@@ -16,7 +17,7 @@ from typing import Any
 from xmlrpc.server import SimpleXMLRPCServer
 
 from rosx.msg.codec.classes import get_message_class
-from rosx.node import Node
+from rosx.node import Node, rosout
 from rosx.node.publication import serialize_frame
 from rosx.transport.client import call
 from rosx.wire.framing import FrameReader
@@ -45,7 +46,9 @@ def bare_publisher(topic: str) -> Iterator[tuple[str, socket.socket]]:
         listener.close()
 
 
-def accept_subscriber(listener: socket.socket, topic: str, behind: bytes = b"") -> socket.socket:
+def accept_subscriber(
+    listener: socket.socket, topic: str, behind: bytes = b"", *, latching: bool = False
+) -> socket.socket:
     """Take the subscriber's connection and answer its header as a publisher (``behind`` it,
     in the same ``send``, whatever is given)."""
     listener.settimeout(30)
@@ -63,6 +66,8 @@ def accept_subscriber(listener: socket.socket, topic: str, behind: bytes = b"") 
         "md5sum": String._md5sum,
         "message_definition": String._full_text,
     }
+    if latching:
+        reply["latching"] = "1"
     conn.sendall(encode_header(reply) + behind)
     return conn
 
@@ -75,13 +80,15 @@ def fed_by_a_bare_publisher(
     data_class: Any,
     callback: Callable[[Any], object],
     behind: bytes = b"",
+    *,
+    latching: bool = False,
 ) -> Iterator[tuple[Any, socket.socket]]:
     """``node`` subscribed to ``topic``, whose one publisher is a bare socket of the test's:
     the subscriber and that socket (``behind``: sent with the header)."""
     with bare_publisher(topic) as (uri, listener):
         call(master, "registerPublisher", "/bare_pub", topic, "std_msgs/String", uri)
         sub = node.subscribe(topic, data_class, callback)
-        with accept_subscriber(listener, topic, behind) as conn:
+        with accept_subscriber(listener, topic, behind, latching=latching) as conn:
             yield sub, conn
 
 
@@ -158,3 +165,79 @@ def test_a_message_right_behind_the_header_is_read_and_counted(
     ):
         wait_for(lambda: got == ["first"])
         assert bytes_read(node, topic)() == len(frame)
+
+
+def send_each(conn: socket.socket, read: Callable[[], int], texts: str) -> None:
+    """Send one whole frame per text, each once the subscriber has read all before it."""
+    sent = read()
+    for text in texts:
+        frame = serialize_frame(String(data=text))
+        conn.sendall(frame)
+        sent += len(frame)
+        wait_for(lambda: read() == sent)  # noqa: B023 - awaited before `sent` changes
+
+
+def test_a_callback_that_raises_is_reported_and_reading_goes_on(
+    make_node: Callable[..., Node], master: str
+) -> None:
+    topic = "/raising"
+    lines: list[tuple[int, str]] = []
+    node = make_node("raising_listener", console=lambda level, line: lines.append((level, line)))
+    got: list[str] = []
+
+    def callback(msg: Any) -> None:
+        got.append(msg.data)
+        if msg.data == "b":
+            raise ValueError("no b")
+
+    with fed_by_a_bare_publisher(node, master, topic, String, callback) as (sub, conn):
+        wait_for(lambda: sub.get_num_connections() == 1)
+        send_each(conn, bytes_read(node, topic), "abc")
+        wait_for(lambda: len(got) == 3)
+    assert got == ["a", "b", "c"]
+    errors = [line for level, line in lines if level == rosout.ERROR]
+    assert len(errors) == 1
+    assert "bad callback: <function" in errors[0] and "ValueError: no b" in errors[0]
+
+
+def test_callbacks_added_and_removed_while_a_topic_is_read(
+    make_node: Callable[..., Node], master: str
+) -> None:
+    """A callback added between two messages gets the second; one removed gets no more."""
+    topic = "/joining"
+    node = make_node("joining_listener")
+    first: list[str] = []
+    second: list[str] = []
+    with fed_by_a_bare_publisher(node, master, topic, String, lambda m: first.append(m.data)) as (
+        sub,
+        conn,
+    ):
+        read = bytes_read(node, topic)
+        wait_for(lambda: sub.get_num_connections() == 1)
+        send_each(conn, read, "a")
+        wait_for(lambda: first == ["a"])
+        other = node.subscribe(topic, String, lambda m: second.append(m.data))
+        send_each(conn, read, "b")
+        wait_for(lambda: first == ["a", "b"] and second == ["b"])
+        other.unregister()
+        send_each(conn, read, "c")
+        wait_for(lambda: first == ["a", "b", "c"])
+    assert second == ["b"]
+
+
+def test_a_late_callback_gets_the_last_message_read_from_a_latching_publisher(
+    make_node: Callable[..., Node], master: str
+) -> None:
+    topic = "/latching"
+    node = make_node("latch_listener")
+    first: list[str] = []
+    late: list[str] = []
+    with fed_by_a_bare_publisher(
+        node, master, topic, String, lambda m: first.append(m.data), latching=True
+    ) as (sub, conn):
+        wait_for(lambda: sub.get_num_connections() == 1)
+        send_each(conn, bytes_read(node, topic), "ab")
+        wait_for(lambda: first == ["a", "b"])
+        node.subscribe(topic, String, lambda m: late.append(m.data))
+        wait_for(lambda: late == ["b"])
+    assert first == ["a", "b"]
