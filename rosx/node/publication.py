@@ -150,6 +150,9 @@ class Publication:
         self._nearby = False
         #: What the receivers of `local_links` were last told (`Receiver.eager`).
         self._eager = False
+        #: The one subscriber's stream when it is the only one to send to and nothing keeps
+        #: the frame (no latch): `publish` then sends it the shortest way.
+        self._sole: OutgoingStream | None = None
 
     @property
     def latching(self) -> bool:
@@ -160,9 +163,11 @@ class Publication:
         """Turn latching on (rospy turns it on if any publisher of the topic latches)."""
         if latch and not self.info.latching:
             info = self.info
-            self.info = PublicationInfo(
-                info.topic, info.type, info.md5sum, info.message_definition, latching=True
-            )
+            with self._lock:
+                self.info = PublicationInfo(
+                    info.topic, info.type, info.md5sum, info.message_definition, latching=True
+                )
+                self._set_links(self.links)  # the latch needs every frame
 
     # -- any thread --------------------------------------------------------------------------
 
@@ -183,7 +188,20 @@ class Publication:
         # The usual case: no subscriber in this process. The hand-off counts the message
         # after it is sent (only what follows the send depends on it): a burst's first
         # message reaches the socket with one call less, cold.
-        self._send_frame(serialize_frame(msg))
+        sole = self._sole
+        if sole is not None:
+            # One subscriber, no latch: `serialize_frame` and `_send_frame` inlined, the bytes
+            # counted after the send.
+            frame = msg._frame() if isinstance(msg, MessageBase) else MessageBase._frame(msg)
+            sole.send(frame)
+            lock = self._lock
+            lock.acquire()
+            try:
+                self.bytes_published += len(frame)
+            finally:
+                lock.release()
+        else:
+            self._send_frame(serialize_frame(msg))
         handoff = self._handoff
         if handoff is not None and self._nearby and handoff.start():
             self._give_way()
@@ -303,9 +321,12 @@ class Publication:
             self.local_links = tuple(other for other in self.local_links if other is not link)
 
     def _set_links(self, links: tuple[SubscriberLink, ...]) -> None:
-        # Under the lock; `_nearby` follows the links, read without the lock when publishing.
+        # Under the lock; `_nearby` and `_sole` follow the links (and the latch), read
+        # without the lock when publishing.
         self.links = links
         self._nearby = any(link.nearby for link in links)
+        latching = self.info.latching
+        self._sole = links[0].stream if len(links) == 1 and not latching else None
 
     def _closed_stream(self, stream: OutgoingStream) -> None:
         with self._lock:

@@ -91,6 +91,30 @@ def test_latched_message_reaches_late_subscribers(make_node: Callable[..., Node]
     assert got == ["last"]
 
 
+def test_a_topic_that_starts_latching_keeps_what_it_publishes_next(
+    make_node: Callable[..., Node], transport: str
+) -> None:
+    """A second publisher handle asking for a latch turns it on for the topic (as in rospy),
+    though one subscriber was already served without one."""
+    a, b, c = make_node("talker"), make_node("listener"), make_node("late")
+    got: list[str] = []
+    sub = b.subscribe("/news", String, lambda m: got.append(m.data))
+    pub = a.advertise("/news", String, queue_size=10)
+    wait_for(connected(pub, sub))
+    pub.publish(String(data="before"))
+    wait_for(lambda: got == ["before"])
+    a.advertise("/news", String, queue_size=10, latch=True)
+    pub.publish(String(data="after"))
+    wait_for(lambda: got == ["before", "after"])
+    late: list[str] = []
+    c.subscribe("/news", String, lambda m: late.append(m.data))
+    wait_for(lambda: late)
+    assert late == ["after"]
+    if transport != "INTRAPROCESS":  # what went out serialized: two frames of 4 + 4 + 6 and 5
+        _, _, (publications, _, _) = call(a.uri, "getBusStats", "/test")
+        assert [p[:2] for p in publications if p[0] == "/news"] == [["/news", 14 + 13]]
+
+
 def test_late_subscribers_get_the_latch_on_the_nodes_workers(
     make_node: Callable[..., Node],
 ) -> None:
