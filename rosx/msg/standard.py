@@ -8,9 +8,12 @@ affected, since ROS 1 hashes neither comments nor layout.
 Importing rosbags' store costs a command about 60 ms (hundreds of dataclasses), more than the
 rest of ``rosmsg show`` or of a rospy script's start-up. So the texts, once built, are kept in
 the user's cache folder (``$XDG_CACHE_HOME/rosx``, else ``~/.cache/rosx``) as one
-`marshal` file, tagged with the size and time of rosbags' store module and Python's
-version: another rosbags or Python builds it anew. Nothing else is written; where the folder
-cannot be written, each run reads rosbags as before.
+`marshal` file per rosbags install and Python version, named after and tagged with the path,
+size and time of rosbags' store module and Python's version: virtual environments sharing the
+folder each keep their own, and another rosbags or Python builds its file anew. Writing one
+removes those nobody has written for `STALE_DAYS` days (a later run there builds its file
+again). Nothing else is written; where the folder cannot be written, each run reads rosbags
+as before.
 """
 
 from __future__ import annotations
@@ -27,7 +30,9 @@ if TYPE_CHECKING:
 #: rosbags gives empty ROS 1 messages this one field (an IDL rule); ROS 1 has no such field.
 _PLACEHOLDER = "structure_needs_at_least_one_member"
 _TIME_TYPES = {"builtin_interfaces/msg/Time": "time", "builtin_interfaces/msg/Duration": "duration"}
-_CACHE_FILE = "ros1_noetic_types.marshal"
+_CACHE_STEM = "ros1_noetic_types"
+#: A cache file nobody has written for this many days goes when another is written.
+STALE_DAYS = 90
 
 #: rosbags' store module (path, size, modification time) and Python's major and minor version.
 Tag = tuple[str, int, int, int, int]
@@ -46,7 +51,7 @@ def standard_text(full_name: str) -> str | None:
 @cache
 def _texts() -> dict[str, str]:
     tag = _store_tag()
-    cache_path = _cache_path()
+    cache_path = None if tag is None else _cache_path(tag)
     if tag is not None and cache_path is not None:
         texts = _read_cache(cache_path, tag)
         if texts is not None:
@@ -73,11 +78,15 @@ def _store_tag() -> Tag | None:
     return (str(path), stat.st_size, stat.st_mtime_ns, *sys.version_info[:2])
 
 
-def _cache_path() -> Path | None:
+def _cache_path(tag: Tag) -> Path | None:
+    """Where the texts of ``tag``'s rosbags and Python are kept (None: no usable folder)."""
+    import zlib  # noqa: PLC0415
+
     folder = os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache")  # noqa: PTH111
     if not Path(folder).is_absolute():
         return None
-    return Path(folder, "rosx", _CACHE_FILE)
+    key = zlib.crc32(repr(tag).encode())
+    return Path(folder, "rosx", f"{_CACHE_STEM}-py{tag[3]}.{tag[4]}-{key:08x}.marshal")
 
 
 def _read_cache(path: Path, tag: Tag) -> dict[str, str] | None:
@@ -105,6 +114,19 @@ def _write_cache(path: Path, tag: Tag, texts: dict[str, str]) -> None:
     except OSError:
         with contextlib.suppress(OSError):
             partial.unlink()
+        return
+    _remove_stale(path)
+
+
+def _remove_stale(kept: Path) -> None:
+    """Remove the other cache files not written for `STALE_DAYS` days."""
+    import time  # noqa: PLC0415
+
+    oldest = time.time() - STALE_DAYS * 86400
+    for other in kept.parent.glob(f"{_CACHE_STEM}*.marshal"):
+        with contextlib.suppress(OSError):
+            if other != kept and other.stat().st_mtime < oldest:
+                other.unlink()
 
 
 def _texts_from_rosbags() -> dict[str, str]:

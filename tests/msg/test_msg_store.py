@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+import time
 from pathlib import Path
 
 import pytest
@@ -189,12 +191,24 @@ def _fresh_standard_texts() -> dict[str, str]:
         standard._texts.cache_clear()
 
 
+def _cache_file() -> Path:
+    """The cache file of this process's rosbags and Python."""
+    from rosx.msg import standard
+
+    tag = standard._store_tag()
+    assert tag is not None
+    path = standard._cache_path(tag)
+    assert path is not None
+    return path
+
+
 def test_standard_texts_come_back_from_the_cache_unchanged(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     built = _fresh_standard_texts()
-    cache = tmp_path / "rosx" / "ros1_noetic_types.marshal"
+    cache = _cache_file()
+    assert cache.parent == tmp_path / "rosx"
     assert cache.is_file()
     assert _fresh_standard_texts() == built
     assert (
@@ -209,10 +223,57 @@ def test_a_damaged_cache_is_built_again(
 ) -> None:
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     expected = _fresh_standard_texts()
-    cache = tmp_path / "rosx" / "ros1_noetic_types.marshal"
+    cache = _cache_file()
     cache.write_bytes(content)
     assert _fresh_standard_texts() == expected
     assert cache.read_bytes() != content
+
+
+def test_virtual_environments_sharing_the_cache_folder_keep_their_own_files(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Two rosbags installs (two venvs) each build their texts once, then both read them."""
+    from rosx.msg import standard
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    tag = standard._store_tag()
+    assert tag is not None
+    other = ("/elsewhere/rosbags/typesys/stores/ros1_noetic.py", *tag[1:])
+    builds: list[int] = []
+    build = standard._texts_from_rosbags
+
+    def counted() -> dict[str, str]:
+        builds.append(1)
+        return build()
+
+    monkeypatch.setattr(standard, "_texts_from_rosbags", counted)
+    for each in (tag, other, tag, other):
+        monkeypatch.setattr(standard, "_store_tag", lambda each=each: each)
+        assert "geometry_msgs/Twist" in _fresh_standard_texts()
+    assert len(builds) == 2
+    assert len(list((tmp_path / "rosx").iterdir())) == 2
+
+
+def test_writing_a_cache_file_removes_those_long_unwritten(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from rosx.msg import standard
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    folder = tmp_path / "rosx"
+    folder.mkdir()
+    stale, recent, unrelated = (
+        folder / "ros1_noetic_types.marshal",  # the name of an older rosx's single file
+        folder / "ros1_noetic_types-py3.9-0badcafe.marshal",
+        folder / "notes.txt",
+    )
+    long_ago = time.time() - (standard.STALE_DAYS + 1) * 86400
+    for path in (stale, recent, unrelated):
+        path.write_bytes(b"x")
+    for path in (stale, unrelated):
+        os.utime(path, (long_ago, long_ago))
+    _fresh_standard_texts()
+    assert sorted(folder.iterdir()) == sorted([_cache_file(), recent, unrelated])
 
 
 def test_an_unwritable_cache_folder_costs_only_time(
