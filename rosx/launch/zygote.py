@@ -103,8 +103,13 @@ def _child(
         os.environ.update(request["env"])
         os.chdir(request["cwd"])
         if stdout is not None:
-            os.dup2(stdout, 1)
-            os.close(stdout)
+            # A helper started without a stdout has no ``sys.stdout``, and the log may have
+            # taken file descriptor 1 itself.
+            if stdout != 1:
+                os.dup2(stdout, 1)
+                os.close(stdout)
+            if sys.stdout is None:
+                sys.stdout = open(1, "w", closefd=False)  # noqa: SIM115
         from rosx.client.script import run_script  # noqa: PLC0415
 
         code = run_script(request["script"], request["args"])

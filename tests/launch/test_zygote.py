@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import subprocess
 import sys
 from collections.abc import Iterator
 from pathlib import Path
@@ -60,3 +61,28 @@ def test_a_stdout_log_that_cannot_be_opened_is_refused_before_the_fork(
     pid = helper.start(str(script), [], dict(os.environ), str(tmp_path), str(good), append=False)
     wait_for(lambda: helper.exit_code(pid) == 0, what="the node's exit")
     assert good.read_text() == "ran\n"
+
+
+def test_a_helper_started_without_stdout_gives_its_nodes_their_logs(tmp_path: Path) -> None:
+    """A launcher whose stdout is closed starts the helper so: the first log the helper opens
+    takes file descriptor 1, and the node must still write to it."""
+    script = tmp_path / "hello.py"
+    script.write_text("print('hello')\n")
+    log = tmp_path / "hello-1-stdout.log"
+    launcher = (
+        "import os, sys, time\n"
+        "os.close(1)\n"
+        "from rosx.launch.zygote import ZygoteClient\n"
+        "client = ZygoteClient(dict(os.environ), on_exit=lambda: None)\n"
+        "assert client.wait_ready(60)\n"
+        f"pid = client.start({str(script)!r}, [], dict(os.environ), {str(tmp_path)!r},\n"
+        f"                   {str(log)!r}, append=False)\n"
+        "deadline = time.monotonic() + 60\n"
+        "while client.exit_code(pid) is None and time.monotonic() < deadline:\n"
+        "    time.sleep(0.05)\n"
+        "client.close()\n"
+        "sys.exit(client.exit_code(pid))\n"
+    )
+    done = subprocess.run([sys.executable, "-c", launcher], timeout=120, check=False)
+    assert done.returncode == 0
+    assert log.read_text() == "hello\n"
