@@ -132,6 +132,7 @@ class IncomingStream:
         self.fileno = -1
         self.connected = False
         self.closed = False
+        self.retired = False
         self.bytes_received = 0
         self.frames_received = 0
         self._reader = FrameReader(DEFAULT_MAX_HEADER_SIZE)
@@ -176,6 +177,8 @@ class IncomingStream:
                 except (OSError, ProtocolError, TimeoutError, TransportError) as exc:
                     self._drop_socket()
                     self._report(f"unable to connect to [{self.publisher_uri}]: {exc}")
+                if self.retired:
+                    break
                 await asyncio.sleep(interval)
                 interval = min(interval * 2, 30.0)
                 if not await self._still_publisher():
@@ -185,8 +188,13 @@ class IncomingStream:
         if not self.connected:
             self.close()
 
+    def retire(self) -> None:
+        """The publisher is no longer listed: go on connecting and reading to the end, but
+        without retries or error reports (see `rosx.node.subscription`)."""
+        self.retired = True
+
     def _report(self, text: str) -> None:
-        if self._on_error is not None and not self.closed:
+        if self._on_error is not None and not self.closed and not self.retired:
             self._on_error(f"[{self.topic}] {text}")
 
     def _drop_socket(self) -> None:

@@ -3,9 +3,15 @@
 The contract (ROS wiki ROS/Slave_API ``publisherUpdate``, ROS/TCPROS):
 
 * `Subscription.set_publishers` (on the loop) makes the connections match the publisher list
-  the master sent: one `IncomingStream` per new publisher URI, vanished ones closed. The list
+  the master sent: one `IncomingStream` per new publisher URI, vanished ones retired. The list
   returned by ``registerSubscriber`` is applied with ``additive=True`` when a
   ``publisherUpdate`` overtook it, so an older list never drops a newer publisher.
+* A retired stream is no longer the publisher's connection (a new one is made if it comes
+  back), but it is not cut: what the publisher sent before it left is still read and handed
+  over, up to its end of the connection, as rospy does (it never drops a connection on
+  ``publisherUpdate``). One whose publisher does not hang up is closed after `RETIRE_GRACE`
+  seconds (roscpp drops it at once). So ``rostopic pub -1``'s message, sent just before it
+  unregisters, arrives however late this node reads it.
 * Once connected, streams are read by the subscription's `Receiver` thread, which also runs
   the callbacks of every `Subscriber` of the topic in the node (as rospy does), with one
   drop-oldest queue sized by the first subscriber's ``queue_size``.
@@ -27,7 +33,11 @@ from rosx.node.incoming import IncomingStream
 from rosx.node.receiver import Receiver
 from rosx.wire.tcpros import WILDCARD, publisher_header, subscriber_header
 
+#: Seconds a retired stream whose publisher keeps the connection open is still read.
+RETIRE_GRACE = 2.0
+
 if TYPE_CHECKING:
+    import asyncio
     from collections.abc import Awaitable, Callable
     from concurrent.futures import Executor
 
@@ -133,6 +143,9 @@ class Subscription:
             tcp_nodelay=tcp_nodelay,
         )
         self.streams: dict[str, IncomingStream | local.LocalLink] = {}
+        #: Streams of publishers no longer listed, read until they end (see the contract),
+        #: and the timer that closes each one at the latest.
+        self._retired: dict[IncomingStream, asyncio.TimerHandle] = {}
         self.receiver = Receiver(
             io,
             workers,
@@ -206,7 +219,7 @@ class Subscription:
         if not additive:
             for uri in list(self.streams):
                 if uri not in wanted:
-                    self.streams[uri].close()
+                    self._retire(self.streams.pop(uri))
         for uri in wanted:
             if uri not in self.streams and not self._connect_locally(uri):
                 stream = IncomingStream(
@@ -244,14 +257,25 @@ class Subscription:
         link.start()
         return True
 
+    def _retire(self, stream: IncomingStream | local.LocalLink) -> None:
+        if isinstance(stream, local.LocalLink) or stream.closed:
+            stream.close()  # in-process messages are queued as they are published
+            return
+        stream.retire()
+        self._retired[stream] = self.io.loop.call_later(RETIRE_GRACE, stream.close)
+
     def _on_stream_closed(self, stream: IncomingStream | local.LocalLink) -> None:
         if self.streams.get(stream.publisher_uri) is stream:
             del self.streams[stream.publisher_uri]
+        elif isinstance(stream, IncomingStream):
+            timer = self._retired.pop(stream, None)
+            if timer is not None:
+                timer.cancel()
 
     def close(self) -> None:
         """Close every connection and stop every subscriber's thread."""
         self.closed = True
-        for stream in list(self.streams.values()):
+        for stream in [*self.streams.values(), *self._retired]:
             stream.close()
         self.receiver.stop()
 

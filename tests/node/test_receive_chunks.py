@@ -16,8 +16,10 @@ from collections.abc import Callable, Iterator
 from typing import Any
 from xmlrpc.server import SimpleXMLRPCServer
 
+import pytest
+
 from rosx.msg.codec.classes import get_message_class
-from rosx.node import Node, rosout
+from rosx.node import Node, rosout, subscription
 from rosx.node.publication import serialize_frame
 from rosx.transport.client import call
 from rosx.wire.framing import FrameReader
@@ -28,12 +30,24 @@ String = get_message_class("std_msgs/String")
 
 
 @contextlib.contextmanager
-def bare_publisher(topic: str) -> Iterator[tuple[str, socket.socket]]:
-    """A Slave API that answers ``requestTopic`` with a TCPROS socket of the test's own."""
+def bare_publisher(
+    topic: str, answer: threading.Event | None = None, *, refuse: bool = False
+) -> Iterator[tuple[str, socket.socket]]:
+    """A Slave API that answers ``requestTopic`` with a TCPROS socket of the test's own, or
+    (``refuse``) as a node that no longer publishes the topic; once ``answer`` is set, if
+    given."""
     listener = socket.create_server(("127.0.0.1", 0))
     port = listener.getsockname()[1]
     server = SimpleXMLRPCServer(("127.0.0.1", 0), logRequests=False)
-    server.register_function(lambda *_: [1, "", ["TCPROS", "127.0.0.1", port]], "requestTopic")
+
+    def request_topic(*_: object) -> list[object]:
+        if answer is not None:
+            answer.wait(30)
+        if refuse:
+            return [-1, f"Not a publisher of [{topic}]", []]
+        return [1, "", ["TCPROS", "127.0.0.1", port]]
+
+    server.register_function(request_topic, "requestTopic")
     server.register_function(lambda *_: [1, "", [[topic, "std_msgs/String"]]], "getPublications")
     thread = threading.Thread(target=server.serve_forever, daemon=True)
     thread.start()
@@ -241,3 +255,93 @@ def test_a_late_callback_gets_the_last_message_read_from_a_latching_publisher(
         node.subscribe(topic, String, lambda m: late.append(m.data))
         wait_for(lambda: late == ["b"])
     assert first == ["a", "b"]
+
+
+@pytest.mark.parametrize("callbacks", [1, 2])
+def test_what_a_publisher_sent_before_it_left_is_still_delivered(
+    make_node: Callable[..., Node], master: str, callbacks: int
+) -> None:
+    """A ``publisherUpdate`` without the publisher (it unregistered) does not cut what it sent
+    before (``rostopic pub -1`` leaves right after sending), however late it is read."""
+    topic = "/leaving"
+    node = make_node("leaving_listener")
+    got: list[str] = []
+    release = threading.Event()
+
+    def callback(msg: Any) -> None:
+        got.append(msg.data)
+        if msg.data == "a":
+            release.wait(30)  # the reader is busy: "b" waits in the socket
+
+    with fed_by_a_bare_publisher(node, master, topic, String, callback) as (sub, conn):
+        for _ in range(1, callbacks):
+            node.subscribe(topic, String, lambda m: None)
+        wait_for(lambda: sub.get_num_connections() == 1)
+        conn.sendall(serialize_frame(String(data="a")))
+        wait_for(lambda: got == ["a"])
+        conn.sendall(serialize_frame(String(data="b")))
+        assert call(node.uri, "publisherUpdate", "/master", topic, [])[0] == 1
+        wait_for(lambda: sub.get_num_connections() == 0)
+        conn.close()  # the publisher is gone
+        release.set()
+        wait_for(lambda: got == ["a", "b"])
+
+
+def test_a_retired_connection_its_publisher_keeps_open_is_closed_in_time(
+    make_node: Callable[..., Node], master: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(subscription, "RETIRE_GRACE", 0.2)
+    topic = "/lingering"
+    node = make_node("lingering_listener")
+    got: list[str] = []
+    with fed_by_a_bare_publisher(node, master, topic, String, lambda m: got.append(m.data)) as (
+        sub,
+        conn,
+    ):
+        wait_for(lambda: sub.get_num_connections() == 1)
+        conn.sendall(serialize_frame(String(data="x")))
+        wait_for(lambda: got == ["x"])
+        assert call(node.uri, "publisherUpdate", "/master", topic, [])[0] == 1
+        conn.settimeout(30)
+        assert conn.recv(1) == b""  # the subscriber closed its end
+
+
+def test_a_publisher_that_left_while_it_was_being_connected_still_delivers(
+    make_node: Callable[..., Node], master: str
+) -> None:
+    """The publisher's ``publisherUpdate`` came, then one without it, before the connection
+    was made: the handshake goes on, and what the publisher sent is delivered."""
+    topic = "/hasty"
+    node = make_node("hasty_listener")
+    got: list[str] = []
+    answer = threading.Event()
+    with bare_publisher(topic, answer) as (uri, listener):
+        call(master, "registerPublisher", "/bare_pub", topic, "std_msgs/String", uri)
+        sub = node.subscribe(topic, String, lambda m: got.append(m.data))
+        wait_for(lambda: sub.subscription.streams, what="the connection under way")
+        assert call(node.uri, "publisherUpdate", "/master", topic, [])[0] == 1
+        answer.set()
+        frame = serialize_frame(String(data="once"))
+        with accept_subscriber(listener, topic, frame) as conn:
+            wait_for(lambda: got == ["once"])
+            conn.close()
+
+
+def test_a_publisher_that_left_and_refuses_the_topic_is_let_go_quietly(
+    make_node: Callable[..., Node], master: str
+) -> None:
+    topic = "/gone"
+    lines: list[tuple[int, str]] = []
+    node = make_node("quiet_listener", console=lambda level, line: lines.append((level, line)))
+    answer = threading.Event()
+    with bare_publisher(topic, answer, refuse=True) as (uri, _):
+        call(master, "registerPublisher", "/bare_pub", topic, "std_msgs/String", uri)
+        sub = node.subscribe(topic, String, lambda m: None)
+        subscription = sub.subscription
+        wait_for(lambda: subscription.streams, what="the connection under way")
+        (stream,) = subscription.streams.values()
+        assert call(node.uri, "publisherUpdate", "/master", topic, [])[0] == 1
+        answer.set()
+        wait_for(lambda: stream.closed, what="the stream's end")
+    assert sub.get_num_connections() == 0
+    assert [line for level, line in lines if level >= rosout.WARN] == []
