@@ -313,44 +313,48 @@ def main() -> None:
     report(results, args.rounds, "one process" if args.one_process else "two processes")
 
 
+def summary(values: list[float], base: list[float] | None, high: float, what: str) -> str:
+    """``values``' p50 and their ``high`` percentile, and their ratios to ``base``'s (rospy's)."""
+    label = f"p{round(high * 100)}"
+    p50, top = percentile(values, 0.5), percentile(values, high)
+    line = f"p50 {p50:6.1f} us, {label} {top:6.1f} us ({len(values)} {what})"
+    if base is not None:
+        line += (
+            f", ratio to rospy p50 {p50 / percentile(base, 0.5):.2f}"
+            f" {label} {top / percentile(base, high):.2f}"
+        )
+    return line
+
+
 def report(results: dict[str, list[list[float]]], rounds: int, where: str) -> None:
     """Print the first messages' p50 and p90, then every message's p50 and p99, the whole run
     and round by round (the run cut into ``rounds`` runs of consecutive bursts), with the
     ratios to rospy's."""
-    base = results.get("rospy")
     count = len(next(iter(results.values())))
-    print(f"A burst's first message, publish -> callback, {where}, {count} bursts each:")
-    for name, bursts in results.items():
-        firsts = [burst[0] for burst in bursts]
-        p50, p90 = percentile(firsts, 0.5), percentile(firsts, 0.9)
-        line = f"  {name:12}: p50 {p50:6.1f} us, p90 {p90:6.1f} us ({len(firsts)} bursts)"
-        if base and name != "rospy":
-            line += (
-                f", ratio to rospy p50 {p50 / percentile([b[0] for b in base], 0.5):.2f}"
-                f" p90 {p90 / percentile([b[0] for b in base], 0.9):.2f}"
-            )
-        print(line)
     size = max(1, count // rounds)
-    print(
-        f"Every message of the bursts, publish -> callback, p50 / p99,"
-        f" and the p99 in {rounds} rounds of {size} bursts:"
-    )
 
     def flat(bursts: list[list[float]], part: int | None = None) -> list[float]:
         chosen = bursts if part is None else bursts[part * size : (part + 1) * size]
         return [value for burst in chosen for value in burst]
 
+    base = results.get("rospy")
+    base_firsts = None if base is None else [burst[0] for burst in base]
+    base_every = None if base is None else flat(base)
+    print(f"A burst's first message, publish -> callback, {where}, {count} bursts each:")
+    for name, bursts in results.items():
+        firsts = [burst[0] for burst in bursts]
+        compared = None if name == "rospy" else base_firsts
+        print(f"  {name:12}: {summary(firsts, compared, 0.9, 'bursts')}")
+    print(
+        f"Every message of the bursts, publish -> callback, p50 / p99,"
+        f" and the p99 in {rounds} rounds of {size} bursts:"
+    )
     for name, bursts in results.items():
         if name == "floor":
             continue  # it gives no way within a burst: its later messages wait for the first
-        every = flat(bursts)
-        p50, p99 = percentile(every, 0.5), percentile(every, 0.99)
-        line = f"  {name:12}: p50 {p50:6.1f} us, p99 {p99:6.1f} us ({len(every)} messages)"
-        if base and name != "rospy":
-            line += (
-                f", ratio to rospy p50 {p50 / percentile(flat(base), 0.5):.2f}"
-                f" p99 {p99 / percentile(flat(base), 0.99):.2f}"
-            )
+        compared = None if name == "rospy" else base_every
+        line = f"  {name:12}: {summary(flat(bursts), compared, 0.99, 'messages')}"
+        if base is not None and name != "rospy":
             ratios = [
                 percentile(flat(bursts, part), 0.99) / percentile(flat(base, part), 0.99)
                 for part in range(rounds)
