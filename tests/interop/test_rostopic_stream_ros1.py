@@ -9,7 +9,7 @@ from collections.abc import Iterator
 
 import pytest
 
-from tests.support.cli import clean_environ, rosx
+from tests.support.cli import Result, clean_environ, rosx
 from tests.support.procs import running, stop, wait_for
 from tests.support.ros1 import ROS1_PYTHON, ROSCORES, needs_ros1, ros1_environ, roscore, run_ros1
 
@@ -58,6 +58,22 @@ def got(msg):
     print('got ' + msg.data, flush=True)
     rospy.signal_shutdown('done')
 rospy.Subscriber('/rosx/to_rospy', String, got)
+print('ready', flush=True)
+rospy.spin()
+"""
+
+#: A rospy node that prints what ``/rosout_agg`` carries from ``/once_probe``, once connected.
+AGG_LISTENER = """
+import rospy
+from rosgraph_msgs.msg import Log
+rospy.init_node('agg_listener')
+def got(msg):
+    if msg.name == '/once_probe':
+        print('got ' + msg.msg, flush=True)
+        rospy.signal_shutdown('done')
+sub = rospy.Subscriber('/rosout_agg', Log, got)
+while sub.get_num_connections() == 0 and not rospy.is_shutdown():
+    rospy.sleep(0.01)
 print('ready', flush=True)
 rospy.spin()
 """
@@ -188,11 +204,12 @@ def test_ros1_pub_once_reaches_rosx_echo(graph: str) -> None:
     assert "does not appear to be published yet" in ours.err or ours.err == ""
 
 
-def test_rosx_pub_once_waits_for_a_rospy_subscriber_to_get_it(graph: str) -> None:
-    env = ros1_environ(ROS_MASTER_URI=graph)
+def pub_once_to_rospy(graph: str, listener_script: str, *pub_args: str) -> tuple[Result, str]:
+    """Start a rospy listener, wait for its ``ready`` line, run ``rosx rostopic pub -1
+    PUB_ARGS…``; return that run and what the listener printed until it ended."""
     with subprocess.Popen(
-        [ROS1_PYTHON, "-c", LISTENER],
-        env=env,
+        [ROS1_PYTHON, "-c", listener_script],
+        env=ros1_environ(ROS_MASTER_URI=graph),
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
         text=True,
@@ -202,12 +219,16 @@ def test_rosx_pub_once_waits_for_a_rospy_subscriber_to_get_it(graph: str) -> Non
             assert listener.stdout is not None
             assert listener.stdout.readline() == "ready\n"
             ours = rosx(
-                "rostopic", "pub", "-1", "/rosx/to_rospy", "std_msgs/String", "hi there",
-                environ=clean_environ(ROS_MASTER_URI=graph),
-            )  # fmt: skip
+                "rostopic", "pub", "-1", *pub_args, environ=clean_environ(ROS_MASTER_URI=graph)
+            )
             out, _ = listener.communicate(timeout=20)
         finally:
             stop(listener)
+    return ours, out
+
+
+def test_rosx_pub_once_waits_for_a_rospy_subscriber_to_get_it(graph: str) -> None:
+    ours, out = pub_once_to_rospy(graph, LISTENER, "/rosx/to_rospy", "std_msgs/String", "hi there")
     assert ours.status == 0
     assert out == "got hi there\n"
     # The tool's node is gone from the graph once it exits.
@@ -316,3 +337,22 @@ def test_hz_bw_delay_reports_match_ros1() -> None:
             texts += [bw.report(when + 0.01), delay.report()]
             reports.append(["" if t is None else t + "\n" for t in texts])
     assert reports == expected
+
+
+def test_rosx_pub_once_reaches_the_rosout_node(graph: str) -> None:
+    """ROS 1's rosout is roscpp, which drops a publisher's connection as soon as the master
+    says the publisher left: the message of a ``rostopic pub -1`` that leaves before its 3 s
+    must still reach it, and so ``/rosout_agg``."""
+    ours, out = pub_once_to_rospy(
+        graph,
+        AGG_LISTENER,
+        "/rosout",
+        "rosgraph_msgs/Log",
+        "{level: 2, name: /once_probe, msg: to rosout}",
+    )
+    assert (ours.status, ours.out, ours.err) == (
+        0,
+        "publishing and latching message for 3.0 seconds\n",
+        "",
+    )
+    assert out == "got to rosout\n"
