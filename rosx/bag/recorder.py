@@ -23,6 +23,11 @@ The contract (ROS 1's ``rosbag record``, tools/rosbag/src/recorder.cpp):
 * ``limit`` messages per topic, then that topic is unsubscribed; when every named topic has
   its count, recording stops. ``max_size`` / ``max_duration`` stop the recording, or with
   ``split`` start the next file ``NAME_<n>.bag``, keeping at most ``max_splits`` files.
+* ``repeat_latched``: each new file starts with the messages of latching publishers, stamped
+  with the time the file opens (ROS 1 keeps the first message of each publisher; rosx keeps
+  its last, the one a new subscriber would be given). ``publish``: each time a file opens,
+  its name is published, latched, as a ``std_msgs/String`` on ``begin_write`` (resolved in
+  the recorder's namespace).
 """
 
 from __future__ import annotations
@@ -43,7 +48,7 @@ if TYPE_CHECKING:
     from collections.abc import Callable
 
     from rosx.bag.writer import Opener
-    from rosx.node import Node, RawMessage, Subscriber
+    from rosx.node import Node, Publisher, RawMessage, Subscriber
 
 #: Seconds between two looks at the master for new topics.
 DISCOVERY_PERIOD = 0.5
@@ -90,8 +95,10 @@ class RecordOptions:
         buffer_size: int = 256 * 1024 * 1024,
         chunk_size: int = DEFAULT_CHUNK_THRESHOLD,
         tcp_nodelay: bool = False,
+        repeat_latched: bool = False,
+        publish: bool = False,
     ) -> None:
-        self.topics = sorted(set(topics or []))
+        self.topics = list(dict.fromkeys(topics or []))  # in the order given, as ROS 1
         self.record_all = record_all
         self.regex = regex
         self.exclude = re.compile(exclude) if exclude else None
@@ -108,6 +115,8 @@ class RecordOptions:
         self.buffer_size = buffer_size
         self.chunk_size = chunk_size
         self.tcp_nodelay = tcp_nodelay
+        self.repeat_latched = repeat_latched
+        self.publish = publish
 
 
 def bag_name(prefix: str, append_date: bool, split_index: int | None, now: float) -> str:
@@ -165,14 +174,25 @@ class Recorder:
         self._failure: OSError | None = None
         self._conns: dict[tuple[str, int], int] = {}
         self._headers_kept: list[dict[str, str]] = []
+        #: With ``repeat_latched``: the last message of each latching (topic, publisher).
+        self._latched: dict[tuple[str, str], tuple[dict[str, str], bytes]] = {}
+        self._begin_write: Publisher | None = None
 
     # -- lifecycle ---------------------------------------------------------------------------
 
     def start(self) -> None:
-        """Open the first bag, subscribe, start the writer (and discovery, when asked)."""
-        self._open_bag()
+        """Subscribe to the named topics, open the first bag, start the writer (and discovery,
+        when asked)."""
+        if self.options.publish:
+            from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+
+            string = get_message_class("std_msgs/String")
+            self._begin_write = self.node.advertise("begin_write", string, queue_size=1, latch=True)
+        # ROS 1's order of the log lines: the named topics' subscriptions, then the file. What
+        # arrives meanwhile waits in the queue for the writer thread.
         for topic in self.options.topics if not self.options.regex else []:
             self._subscribe(self.node.resolve(topic))
+        self._open_bag()
         writer = threading.Thread(target=self._write_loop, name="rosx-record", daemon=True)
         self._threads.append(writer)
         writer.start()
@@ -308,6 +328,8 @@ class Recorder:
                 self._counts[topic] = count + 1
             self._queue.append((topic, header, stamp, data))
             self._queued_bytes += len(data)
+            if self.options.repeat_latched and header.get("latching") == "1":
+                self._latched[topic, header.get("callerid", "")] = (header, data)
             budget = self.options.buffer_size
             while budget and self._queued_bytes > budget and len(self._queue) > 1:
                 dropped = self._queue.popleft()
@@ -409,6 +431,8 @@ class Recorder:
         if not self._file_start:
             self._file_start = time.time_ns()
         self.log("INFO", f"Recording to '{self._target}'.")
+        if self._begin_write is not None:
+            self._begin_write.publish(self._begin_write.data_class(data=self._target))
 
     def _close_bag(self) -> None:
         writer, self._writer = self._writer, None
@@ -451,6 +475,13 @@ class Recorder:
                 except OSError as exc:
                     self.log("ERROR", f"Unable to remove {oldest}: {os.strerror(exc.errno or 0)}")
         self._open_bag()
+        with self._lock:
+            latched = list(self._latched.items())
+        writer = self._writer
+        assert writer is not None
+        now = time.time_ns()
+        for (topic, _), (header, data) in latched:
+            writer.write(self._connection(writer, topic, header), now, data)
 
     @property
     def target(self) -> str:

@@ -180,3 +180,119 @@ def test_a_full_buffer_drops_the_oldest_messages_with_ros1s_warning(
     assert len(got) == 101 - recorder.dropped
     assert got[-1] == "099 " + "y" * 5000
     assert [t[:3] for t in got[1:]] == [f"{i:03d}" for i in range(100 - len(got) + 1, 100)]
+
+
+def test_repeat_latched_starts_each_new_file_with_the_latched_messages(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    talker = make_node("talker")
+    latched = talker.advertise("/map", String, queue_size=None, latch=True)
+    chatter = talker.advertise("/chatter", String, queue_size=None)
+    recorder = _record(
+        make_node("record"),
+        tmp_path / "NAME",
+        topics=["/map", "/chatter"],
+        split=True,
+        max_size=10_000,
+        chunk_size=2048,
+        repeat_latched=True,
+    )
+    wait_for(lambda: chatter.get_num_connections() == 1, what="the recorder on /chatter")
+    wait_for(lambda: latched.get_num_connections() == 1, what="the recorder on /map")
+    latched.publish(String(data="map 1"))
+    latched.publish(String(data="map 2"))
+    wait_for(lambda: recorder.written == 2, what="the latched messages written")
+    for i in range(400):
+        chatter.publish(String(data=f"{i:04d} " + "x" * 50))
+    wait_for(lambda: recorder.written == 402, what="every message written")
+    recorder.stop()
+    names = _bags(tmp_path)
+    assert len(names) > 2
+    assert [t for t in _texts(tmp_path / names[0]) if t.startswith("map")] == ["map 1", "map 2"]
+    for name in names[1:]:
+        # Each later file holds the publisher's last latched message once, still latched.
+        assert [t for t in _texts(tmp_path / name) if t.startswith("map")] == ["map 2"], name
+        with BagReader(tmp_path / name) as bag:
+            headers = [c.header for c in bag.connections.values() if c.topic == "/map"]
+        assert [h.get("latching") for h in headers] == ["1"]
+    chatter_texts = [t for n in names for t in _texts(tmp_path / n) if not t.startswith("map")]
+    assert chatter_texts == [f"{i:04d} " + "x" * 50 for i in range(400)]
+
+
+def test_without_repeat_latched_later_files_hold_no_copies(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    talker = make_node("talker")
+    latched = talker.advertise("/map", String, queue_size=None, latch=True)
+    chatter = talker.advertise("/chatter", String, queue_size=None)
+    recorder = _record(
+        make_node("record"),
+        tmp_path / "NAME",
+        topics=["/map", "/chatter"],
+        split=True,
+        max_size=10_000,
+        chunk_size=2048,
+    )
+    wait_for(lambda: chatter.get_num_connections() == 1, what="the recorder on /chatter")
+    wait_for(lambda: latched.get_num_connections() == 1, what="the recorder on /map")
+    latched.publish(String(data="map 1"))
+    wait_for(lambda: recorder.written == 1, what="the latched message written")
+    for i in range(400):
+        chatter.publish(String(data=f"{i:04d} " + "x" * 50))
+    wait_for(lambda: recorder.written == 401, what="every message written")
+    recorder.stop()
+    names = _bags(tmp_path)
+    assert len(names) > 2
+    maps = [[t for t in _texts(tmp_path / n) if t.startswith("map")] for n in names]
+    assert maps == [["map 1"]] + [[] for _ in names[1:]]
+
+
+def test_publish_announces_each_new_file_on_begin_write(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    announced: list[str] = []
+    make_node("listener", namespace="/lab").subscribe(
+        "/lab/begin_write", String, lambda msg: announced.append(msg.data)
+    )
+    chatter = make_node("talker").advertise("/chatter", String, queue_size=None)
+    recorder = _record(
+        make_node("record", namespace="/lab"),
+        tmp_path / "NAME",
+        topics=["/chatter"],
+        split=True,
+        max_size=10_000,
+        chunk_size=2048,
+        publish=True,
+    )
+    # The first file's name is latched: a subscriber connecting later still gets it.
+    wait_for(lambda: announced == [f"{tmp_path}/NAME_0.bag"], what="the first file announced")
+    wait_for(lambda: chatter.get_num_connections() == 1, what="the recorder on /chatter")
+    for i in range(400):
+        chatter.publish(String(data=f"{i:04d} " + "x" * 50))
+    wait_for(lambda: recorder.written == 400, what="every message written")
+    wait_for(lambda: len(announced) == len(_bags(tmp_path)), what="every file announced")
+    recorder.stop()
+    names = _bags(tmp_path)
+    assert len(names) > 2
+    assert announced == [f"{tmp_path}/{name}" for name in names]
+
+
+def test_named_topics_are_subscribed_in_the_order_given_then_the_file_opens(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    """ROS 1's C++ recorder logs ``Subscribing to`` for each named topic, in the order given,
+    before ``Recording to``."""
+    logged: list[str] = []
+    recorder = _record(
+        make_node("record"),
+        tmp_path / "order",
+        lambda level, text: logged.append(f"{level} {text}"),
+        topics=["/zeta", "/alpha", "/zeta"],
+    )
+    recorder.stop()
+    assert logged == [
+        "INFO Subscribing to /zeta",
+        "INFO Subscribing to /alpha",
+        f"INFO Recording to '{tmp_path}/order.bag'.",
+        f"INFO Closing '{tmp_path}/order.bag'.",
+    ]

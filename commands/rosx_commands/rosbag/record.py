@@ -239,8 +239,6 @@ def record(argv: list[str], env: Environment) -> int:
         return ExitStatus.ERROR
     if options.udp:
         env.err("rosx records over TCPROS only; --udp is ignored.")
-    if options.repeat_latched or options.publish:
-        env.err("rosx does not support --repeat-latched or --publish yet; ignored.")
 
     from rosx.bag.recorder import Recorder, RecordOptions  # noqa: PLC0415
     from rosx.node import Node  # noqa: PLC0415
@@ -273,6 +271,8 @@ def record(argv: list[str], env: Environment) -> int:
         buffer_size=options.buffsize * 1024 * 1024,
         chunk_size=options.chunksize * 1024,
         tcp_nodelay=bool(options.tcpnodelay),
+        repeat_latched=bool(options.repeat_latched),
+        publish=bool(options.publish),
     )
     if options.node:
         env.out(f"Recording from: {options.node}")
