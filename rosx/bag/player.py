@@ -10,13 +10,20 @@ plus the time spent paused; ``immediate`` publishes without waiting; ``skip_empt
 gaps longer than that many seconds to nothing. ``start`` and ``duration`` select a window of
 the bags (seconds from the bags' start); ``loop`` plays again from the start; ``keep_alive``
 keeps the node (and its latched topics) up until stopped. With ``clock`` the bag time is
-published on ``/clock`` at ``hz``. `Player.toggle_pause` and `Player.step` serve the keys;
-`Player.wait_for_subscribers` holds playback until every topic has a subscriber.
+published on ``/clock`` at ``hz``. `Player.toggle_pause`, `Player.step` and
+`Player.toggle_pause_topics` serve the keys; `Player.wait_for_subscribers` holds playback
+until every topic has a subscriber.
+
+``pause_topics``: playback pauses before each message of those topics (``t`` turns this off
+and on). ``rate_control_topic`` (`Player.watch_rate_control`): playback waits while the bag
+time runs more than ``rate_control_max_delay`` seconds ahead of the header stamp of the last
+message heard on that topic, which must begin with a ``Header``.
 """
 
 from __future__ import annotations
 
 import heapq
+import struct
 import threading
 import time
 from typing import TYPE_CHECKING
@@ -25,7 +32,7 @@ if TYPE_CHECKING:
     from collections.abc import Callable, Iterator
 
     from rosx.bag.reader import BagReader, Connection
-    from rosx.node import Node, Publisher
+    from rosx.node import Node, Publisher, RawMessage, Subscriber
 
 _NS = 1_000_000_000
 #: Seconds between two status lines.
@@ -53,6 +60,9 @@ class PlayOptions:
         loop: bool = False,
         keep_alive: bool = False,
         topics: list[str] | None = None,
+        pause_topics: list[str] | None = None,
+        rate_control_topic: str = "",
+        rate_control_max_delay: float = 1.0,
     ) -> None:
         self.prefix = prefix
         self.quiet = quiet
@@ -69,6 +79,9 @@ class PlayOptions:
         self.loop = loop
         self.keep_alive = keep_alive
         self.topics = topics or []
+        self.pause_topics = set(pause_topics or [])
+        self.rate_control_topic = rate_control_topic
+        self.rate_control_max_delay = rate_control_max_delay
 
 
 class Player:
@@ -80,11 +93,13 @@ class Player:
         bags: list[BagReader],
         options: PlayOptions,
         status: Callable[[str], None] | None = None,
+        say: Callable[[str], None] | None = None,
     ) -> None:
         self.node = node
         self.bags = bags
         self.options = options
         self.status = status
+        self.say = say  # other text for the terminal, even with ``quiet``
         self._publishers: dict[str, Publisher] = {}
         self._cond = threading.Condition()
         self.paused = options.pause
@@ -92,6 +107,14 @@ class Player:
         self._stopped = threading.Event()
         self._bag_now = 0
         self.published = 0
+        self.pause_for_topics = bool(options.pause_topics)
+        self._rate_control: Subscriber | None = None
+        #: The header stamp (ns) last heard on the rate control topic.
+        self._rate_stamp = 0
+        self._first = 0
+        self._total = 0.0
+        self._last_status = 0.0
+        self._last_state = ""
         #: (wall time it was due, wall time it went) of each message, when asked for.
         self.timing: list[tuple[float, float]] | None = None
 
@@ -109,6 +132,11 @@ class Player:
             if self.paused:
                 self._steps += 1
                 self._cond.notify_all()
+
+    def toggle_pause_topics(self) -> None:
+        """Stop, or start again, pausing on ``pause_topics``."""
+        with self._cond:
+            self.pause_for_topics = not self.pause_for_topics
 
     def stop(self) -> None:
         """End playback (the run returns soon after)."""
@@ -169,6 +197,36 @@ class Player:
         ]
         return heapq.merge(*streams, key=lambda m: m[1])
 
+    def watch_rate_control(self) -> None:
+        """Subscribe to ``rate_control_topic`` (any type whose first field is a Header)."""
+        self._rate_control = self.node.subscribe(
+            self.options.rate_control_topic, None, self._heard_rate_control, queue_size=10
+        )
+
+    def _heard_rate_control(self, msg: RawMessage) -> None:
+        definition = msg._connection_header.get("message_definition", "")
+        first = next(
+            (line for line in definition.split("\n") if line and not line.startswith("#")), ""
+        )
+        if not first.startswith(("Header ", "std_msgs/Header ")) or len(msg._buff) < 12:
+            if self.say is not None:
+                self.say(
+                    "\nWARNING: Rate control topic is bad, header is not first. "
+                    "MSG may be malformed.\n"
+                )
+            return
+        secs, nsecs = struct.unpack_from("<iI", msg._buff, 4)
+        with self._cond:
+            self._rate_stamp = secs * _NS + nsecs
+            self._cond.notify_all()
+
+    def _delayed(self) -> bool:
+        """Whether the bag time runs too far ahead of the rate control topic."""
+        if self._rate_control is None:
+            return False
+        ahead = self._bag_now - self._rate_stamp
+        return ahead > self.options.rate_control_max_delay * _NS
+
     def wait_for_subscribers(self) -> bool:
         """Wait until every played topic has a subscriber; False if stopped first."""
         while not self._stopped.wait(0.02):
@@ -207,15 +265,20 @@ class Player:
         origin_wall: float | None = None
         origin_bag = 0
         previous = 0
-        last_status = 0.0
-        last_state = ""
+        self._first, self._total = first, total
         for conn, stamp, data in self._messages():
             if origin_wall is None:
                 origin_wall, origin_bag, previous = time.monotonic(), stamp, stamp
+                with self._cond:
+                    # Each pass starts level with the rate control topic, as ROS 1's does.
+                    self._bag_now = self._rate_stamp = stamp
             if skip and stamp - previous > skip:
                 origin_bag += stamp - previous
             previous = stamp
             due = origin_wall + (stamp - origin_bag) / _NS / rate
+            if self.pause_for_topics and conn.topic in self.options.pause_topics:
+                with self._cond:
+                    self.paused = True
             shift = self._wait(due)
             if shift is None:
                 return
@@ -227,21 +290,32 @@ class Player:
                 self.published += 1
                 if self.timing is not None:
                     self.timing.append((due + shift, time.monotonic()))
-            now = time.monotonic()
-            state = "PAUSED " if self.paused else "RUNNING"
-            # At most every _STATUS_PERIOD, and at once when a pause begins or ends.
-            if self.status is not None and (
-                now - last_status >= _STATUS_PERIOD or state != last_state
-            ):
-                last_status, last_state = now, state
-                self.status(
-                    f"\r [{state}]  Bag Time: {stamp / _NS:13.6f}   "
-                    f"Duration: {(stamp - first) / _NS:.6f} / {total:.6f}               \r"
-                )
+            self._show_status("PAUSED " if self.paused else "RUNNING")
+
+    def _show_status(self, state: str) -> None:
+        """ROS 1's status line, at most every _STATUS_PERIOD, and at once when the state
+        changes."""
+        now = time.monotonic()
+        if self.status is None or (
+            now - self._last_status < _STATUS_PERIOD and state == self._last_state
+        ):
+            return
+        self._last_status, self._last_state = now, state
+        stamp = self._bag_now
+        line = (
+            f"\r [{state}]  Bag Time: {stamp / _NS:13.6f}   "
+            f"Duration: {(stamp - self._first) / _NS:.6f} / {self._total:.6f}   "
+        )
+        if state == "DELAYED":
+            delay = max(time.time_ns() - self._rate_stamp, 0) / _NS
+            line += f"Delay: {delay:.2f} \r"
+        else:
+            line += "            \r"
+        self.status(line)
 
     def _wait(self, due: float) -> float | None:
-        """Sleep until ``due`` (wall, monotonic), honouring pauses; the time spent paused, or
-        None once stopped."""
+        """Sleep until ``due`` (wall, monotonic), honouring pauses and the rate control topic;
+        the time spent held back, or None once stopped."""
         paused_for = 0.0
         with self._cond:
             while True:
@@ -251,6 +325,13 @@ class Player:
                     if self._steps:
                         self._steps -= 1
                         return max(paused_for, time.monotonic() - due)
+                    self._show_status("PAUSED ")
+                    began = time.monotonic()
+                    self._cond.wait(0.1)
+                    paused_for += time.monotonic() - began
+                    continue
+                if self._delayed():
+                    self._show_status("DELAYED")
                     began = time.monotonic()
                     self._cond.wait(0.1)
                     paused_for += time.monotonic() - began

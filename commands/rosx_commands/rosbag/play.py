@@ -1,8 +1,9 @@
 """``rosbag play``: ROS 1's options, a `rosx.bag.player.Player` on an anonymous node.
 
 Prints what ROS 1's player prints: the bags it opens, the wait after advertising, the keys,
-and (unless ``-q``) a status line rewritten in place. On a terminal, space pauses and resumes
-and ``s`` steps one message while paused. ``topic:=other`` arguments remap topics.
+and (unless ``-q``) a status line rewritten in place. On a terminal, space pauses and resumes,
+``s`` steps one message while paused and ``t`` turns pausing on ``--pause-topics`` off and on.
+``topic:=other`` arguments remap topics.
 """
 
 from __future__ import annotations
@@ -214,16 +215,6 @@ def play(argv: list[str], env: Environment) -> int:
         args.append(options.bags)
     if not args:
         parser.error("You must specify at least 1 bag file to play back.")
-    unsupported = [
-        name
-        for name, given in (
-            ("--pause-topics", options.pause_topics),
-            ("--rate-control-topic", options.rate_control_topic),
-        )
-        if given
-    ]
-    if unsupported:
-        env.err(f"rosx does not support {', '.join(unsupported)} yet; ignored.")
 
     from rosx.bag.errors import BagError, BagUnindexedError  # noqa: PLC0415
     from rosx.bag.player import Player, PlayOptions  # noqa: PLC0415
@@ -274,8 +265,12 @@ def play(argv: list[str], env: Environment) -> int:
                     loop=options.loop,
                     keep_alive=options.keep_alive,
                     topics=options.topics,
+                    pause_topics=options.pause_topics,
+                    rate_control_topic=options.rate_control_topic or "",
+                    rate_control_max_delay=options.rate_control_max_delay,
                 ),
                 status=None if options.quiet else _writer(env),
+                say=_writer(env),
             )
             return _run(player, options, env)
         finally:
@@ -295,8 +290,14 @@ def _writer(env: Environment) -> Any:
 
 def _run(player: Player, options: optparse.Values, env: Environment) -> int:
     player.advertise()
-    blank = "" if options.quiet else "\n"  # ROS 1's status line's room, which -q does without
-    env.stdout.write(f"{blank}Waiting {options.delay:g} seconds after advertising topics...")
+    if not options.quiet:
+        env.stdout.write("\n")  # ROS 1's status line's room, which -q does without
+    if options.rate_control_topic:
+        env.stdout.write("Creating rate control topic subscriber...")
+        env.stdout.flush()
+        player.watch_rate_control()
+        env.stdout.write(" done.\n")
+    env.stdout.write(f"Waiting {options.delay:g} seconds after advertising topics...")
     env.stdout.flush()
     time.sleep(max(options.delay, 0.0))
     env.stdout.write(" done.\n")
@@ -364,6 +365,8 @@ def _keys(player: Player, env: Environment) -> Iterator[None]:
                     player.toggle_pause()
                 elif key == "s":
                     player.step()
+                elif key == "t":
+                    player.toggle_pause_topics()
 
     reader = threading.Thread(target=read_keys, name="rosx-play-keys", daemon=True)
     reader.start()
