@@ -102,29 +102,42 @@ def play(master: str) -> Iterator[Callable[..., Play]]:
 
 
 class Terminal:
-    """A pseudo-terminal for the player's stdin and stdout: keys typed, screen text read."""
+    """A pseudo-terminal for the player's stdin and stdout: keys typed, screen text read (by a
+    thread, so a player writing status lines never waits for the test)."""
 
     def __init__(self) -> None:
         self.keys, self.tty = os.openpty()
         self.text = ""
+        self._done = threading.Event()
+        self._reader = threading.Thread(target=self._read, daemon=True)
+        self._reader.start()
+
+    def _read(self) -> None:
+        while not self._done.is_set():
+            if select.select([self.keys], [], [], 0.05)[0]:
+                try:
+                    self.text += os.read(self.keys, 65536).decode(errors="replace")
+                except OSError:  # every end of the terminal closed
+                    return
 
     def type(self, keys: bytes) -> None:
         os.write(self.keys, keys)
 
-    def shows(self, text: str) -> bool:
-        while select.select([self.keys], [], [], 0)[0]:
-            try:
-                self.text += os.read(self.keys, 65536).decode(errors="replace")
-            except OSError:  # the player closed its end
-                break
-        return text in self.text
-
     def wait_for_text(self, text: str) -> None:
-        wait_for(lambda: self.shows(text), what=f"{text!r} on the player's terminal")
+        wait_for(lambda: text in self.text, what=f"{text!r} on the player's terminal")
 
     def close(self) -> None:
+        self._done.set()
+        self._reader.join()
         os.close(self.keys)
         os.close(self.tty)
+
+
+@pytest.fixture
+def terminal() -> Iterator[Terminal]:
+    screen = Terminal()
+    yield screen
+    screen.close()
 
 
 def write_messages(path: Path, messages: list[tuple[str, float, Any]]) -> str:
@@ -310,7 +323,7 @@ def test_skip_empty_jumps_over_long_gaps(
 
 
 def test_pause_topics_pause_before_each_of_their_messages_and_t_turns_it_off(
-    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path, terminal: Terminal
 ) -> None:
     bag = write_messages(
         tmp_path / "pt.bag",
@@ -323,113 +336,93 @@ def test_pause_topics_pause_before_each_of_their_messages_and_t_turns_it_off(
     )
     node = make_node("listener")
     chatter, marker = Listener(node, "/chatter"), Listener(node, "/marker")
-    terminal = Terminal()
-    try:
-        player = play(
-            "-d", "0", "--pause-topics", "/marker", "--wait-for-subscribers", bag,
-            stdin=terminal.tty, stdout=terminal.tty,
-        )  # fmt: skip
-        assert chatter.wait(1) == ["c0"]
-        # Paused before /marker's first message, at the bag time of the one before it.
-        terminal.wait_for_text(
-            " [PAUSED ]  Bag Time:    100.000000   Duration: 0.000000 / 0.030000"
-        )
-        assert marker.got == []
-        wait_for_keys(terminal.tty)
-        terminal.type(b"t")  # no more pausing on /marker
-        terminal.type(b" ")
-        assert marker.wait(2) == ["m0", "m1"]
-        assert chatter.wait(2) == ["c0", "c1"]
-        terminal.wait_for_text("Done.")
-        assert player.process.wait(30) == 0
-    finally:
-        terminal.close()
+    player = play(
+        "-d", "0", "--pause-topics", "/marker", "--wait-for-subscribers", bag,
+        stdin=terminal.tty, stdout=terminal.tty,
+    )  # fmt: skip
+    assert chatter.wait(1) == ["c0"]
+    # Paused before /marker's first message, at the bag time of the one before it.
+    terminal.wait_for_text(" [PAUSED ]  Bag Time:    100.000000   Duration: 0.000000 / 0.030000")
+    assert marker.got == []
+    wait_for_keys(terminal.tty)
+    terminal.type(b"t")  # no more pausing on /marker
+    terminal.type(b" ")
+    assert marker.wait(2) == ["m0", "m1"]
+    assert chatter.wait(2) == ["c0", "c1"]
+    terminal.wait_for_text("Done.")
+    assert player.process.wait(30) == 0
 
 
 def test_pause_topics_pause_again_on_the_next_message(
-    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path, terminal: Terminal
 ) -> None:
     bag = write_messages(
         tmp_path / "again.bag",
         [("/marker", 0.0, String(data="m0")), ("/marker", 0.01, String(data="m1"))],
     )
     marker = Listener(make_node("listener"), "/marker")
-    terminal = Terminal()
-    try:
-        player = play(
-            "-d", "0", "--pause-topics", "/marker", "--wait-for-subscribers", bag,
-            stdin=terminal.tty, stdout=terminal.tty,
-        )  # fmt: skip
-        terminal.wait_for_text("[PAUSED ]")
-        wait_for_keys(terminal.tty)
-        terminal.type(b" ")
-        assert marker.wait(1) == ["m0"]
-        terminal.wait_for_text(
-            " [PAUSED ]  Bag Time:    100.000000   Duration: 0.000000 / 0.010000"
-        )
-        assert marker.got == ["m0"]
-        terminal.type(b"s")
-        assert marker.wait(2) == ["m0", "m1"]
-        assert player.process.wait(30) == 0
-    finally:
-        terminal.close()
+    player = play(
+        "-d", "0", "--pause-topics", "/marker", "--wait-for-subscribers", bag,
+        stdin=terminal.tty, stdout=terminal.tty,
+    )  # fmt: skip
+    terminal.wait_for_text("[PAUSED ]")
+    wait_for_keys(terminal.tty)
+    terminal.type(b" ")
+    assert marker.wait(1) == ["m0"]
+    terminal.wait_for_text(" [PAUSED ]  Bag Time:    100.000000   Duration: 0.000000 / 0.010000")
+    assert marker.got == ["m0"]
+    terminal.type(b"s")
+    assert marker.wait(2) == ["m0", "m1"]
+    assert player.process.wait(30) == 0
 
 
 PointStamped = get_message_class("geometry_msgs/PointStamped")
 
 
 def test_rate_control_topic_holds_playback_until_its_stamps_catch_up(
-    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path, terminal: Terminal
 ) -> None:
     bag = write_bag(tmp_path / "rc.bag", [0.0, 0.1, 0.2, 0.3, 0.4])
     node = make_node("listener")
     chatter = Listener(node, "/chatter")
     control = node.advertise("/rc", PointStamped, queue_size=10)
-    terminal = Terminal()
-    try:
-        player = play(
-            "-d", "0", "--rate-control-topic", "/rc", "--rate-control-max-delay", "0.15",
-            "--wait-for-subscribers", bag, stdin=terminal.tty, stdout=terminal.tty,
-        )  # fmt: skip
-        wait_for(lambda: control.get_num_connections() == 1, what="the player on /rc")
-        # Three messages go (the bag time is then 0.2 s past the start), the fourth waits.
-        assert chatter.wait(3) == ["/chatter:0", "/chatter:1", "/chatter:2"]
-        terminal.wait_for_text(
-            " [DELAYED]  Bag Time:    100.200000   Duration: 0.200000 / 0.400000   Delay: "
-        )
-        assert len(chatter.got) == 3
-        stamp = PointStamped()
-        stamp.header.stamp = Time(100, 250_000_000)
-        control.publish(stamp)
-        assert chatter.wait(5) == [f"/chatter:{i}" for i in range(5)]
-        terminal.wait_for_text("Done.")
-        assert player.process.wait(30) == 0
-    finally:
-        terminal.close()
+    player = play(
+        "-d", "0", "--rate-control-topic", "/rc", "--rate-control-max-delay", "0.15",
+        "--wait-for-subscribers", bag, stdin=terminal.tty, stdout=terminal.tty,
+    )  # fmt: skip
+    wait_for(lambda: control.get_num_connections() == 1, what="the player on /rc")
+    # Three messages go (the bag time is then 0.2 s past the start), the fourth waits.
+    assert chatter.wait(3) == ["/chatter:0", "/chatter:1", "/chatter:2"]
+    terminal.wait_for_text(
+        " [DELAYED]  Bag Time:    100.200000   Duration: 0.200000 / 0.400000   Delay: "
+    )
+    assert len(chatter.got) == 3
+    stamp = PointStamped()
+    stamp.header.stamp = Time(100, 250_000_000)
+    control.publish(stamp)
+    assert chatter.wait(5) == [f"/chatter:{i}" for i in range(5)]
+    terminal.wait_for_text("Done.")
+    assert player.process.wait(30) == 0
     screen = terminal.text
     assert "rc.bag\r\n\r\nCreating rate control topic subscriber... done.\r\nWaiting 0" in screen
 
 
 def test_rate_control_topic_without_a_header_first_is_reported(
-    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path, terminal: Terminal
 ) -> None:
     bag = write_bag(tmp_path / "bad.bag", [0.0, 3600.0])
     node = make_node("listener")
     chatter = Listener(node, "/chatter")
     control = node.advertise("/rc", String, queue_size=10)
-    terminal = Terminal()
-    try:
-        player = play(
-            "-d", "0", "--rate-control-topic", "/rc", "--wait-for-subscribers", bag,
-            stdin=terminal.tty, stdout=terminal.tty,
-        )  # fmt: skip
-        wait_for(lambda: control.get_num_connections() == 1, what="the player on /rc")
-        assert chatter.wait(1) == ["/chatter:0"]
-        control.publish(String(data="no header"))
-        terminal.wait_for_text(
-            "WARNING: Rate control topic is bad, header is not first. MSG may be malformed."
-        )
-        os.killpg(player.process.pid, signal.SIGINT)
-        assert player.process.wait(30) == 0
-    finally:
-        terminal.close()
+    player = play(
+        "-d", "0", "--rate-control-topic", "/rc", "--wait-for-subscribers", bag,
+        stdin=terminal.tty, stdout=terminal.tty,
+    )  # fmt: skip
+    wait_for(lambda: control.get_num_connections() == 1, what="the player on /rc")
+    assert chatter.wait(1) == ["/chatter:0"]
+    control.publish(String(data="no header"))
+    terminal.wait_for_text(
+        "WARNING: Rate control topic is bad, header is not first. MSG may be malformed."
+    )
+    os.killpg(player.process.pid, signal.SIGINT)
+    assert player.process.wait(30) == 0

@@ -12,6 +12,8 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any, BinaryIO
 
+import pytest
+
 from rosx.bag.reader import BagReader
 from rosx.bag.recorder import Recorder, RecordOptions
 from rosx.bag.writer import open_unbuffered
@@ -182,8 +184,9 @@ def test_a_full_buffer_drops_the_oldest_messages_with_ros1s_warning(
     assert [t[:3] for t in got[1:]] == [f"{i:03d}" for i in range(100 - len(got) + 1, 100)]
 
 
+@pytest.mark.parametrize("repeat", [True, False])
 def test_repeat_latched_starts_each_new_file_with_the_latched_messages(
-    make_node: Callable[..., Node], tmp_path: Path
+    make_node: Callable[..., Node], tmp_path: Path, repeat: bool
 ) -> None:
     talker = make_node("talker")
     latched = talker.advertise("/map", String, queue_size=None, latch=True)
@@ -195,7 +198,7 @@ def test_repeat_latched_starts_each_new_file_with_the_latched_messages(
         split=True,
         max_size=10_000,
         chunk_size=2048,
-        repeat_latched=True,
+        repeat_latched=repeat,
     )
     wait_for(lambda: chatter.get_num_connections() == 1, what="the recorder on /chatter")
     wait_for(lambda: latched.get_num_connections() == 1, what="the recorder on /map")
@@ -208,43 +211,16 @@ def test_repeat_latched_starts_each_new_file_with_the_latched_messages(
     recorder.stop()
     names = _bags(tmp_path)
     assert len(names) > 2
-    assert [t for t in _texts(tmp_path / names[0]) if t.startswith("map")] == ["map 1", "map 2"]
-    for name in names[1:]:
-        # Each later file holds the publisher's last latched message once, still latched.
-        assert [t for t in _texts(tmp_path / name) if t.startswith("map")] == ["map 2"], name
+    maps = [[t for t in _texts(tmp_path / n) if t.startswith("map")] for n in names]
+    # Each later file holds the publisher's last latched message once, still latched.
+    copies = [["map 2"] if repeat else [] for _ in names[1:]]
+    assert maps == [["map 1", "map 2"], *copies]
+    for name in names[1:] if repeat else []:
         with BagReader(tmp_path / name) as bag:
             headers = [c.header for c in bag.connections.values() if c.topic == "/map"]
         assert [h.get("latching") for h in headers] == ["1"]
     chatter_texts = [t for n in names for t in _texts(tmp_path / n) if not t.startswith("map")]
     assert chatter_texts == [f"{i:04d} " + "x" * 50 for i in range(400)]
-
-
-def test_without_repeat_latched_later_files_hold_no_copies(
-    make_node: Callable[..., Node], tmp_path: Path
-) -> None:
-    talker = make_node("talker")
-    latched = talker.advertise("/map", String, queue_size=None, latch=True)
-    chatter = talker.advertise("/chatter", String, queue_size=None)
-    recorder = _record(
-        make_node("record"),
-        tmp_path / "NAME",
-        topics=["/map", "/chatter"],
-        split=True,
-        max_size=10_000,
-        chunk_size=2048,
-    )
-    wait_for(lambda: chatter.get_num_connections() == 1, what="the recorder on /chatter")
-    wait_for(lambda: latched.get_num_connections() == 1, what="the recorder on /map")
-    latched.publish(String(data="map 1"))
-    wait_for(lambda: recorder.written == 1, what="the latched message written")
-    for i in range(400):
-        chatter.publish(String(data=f"{i:04d} " + "x" * 50))
-    wait_for(lambda: recorder.written == 401, what="every message written")
-    recorder.stop()
-    names = _bags(tmp_path)
-    assert len(names) > 2
-    maps = [[t for t in _texts(tmp_path / n) if t.startswith("map")] for n in names]
-    assert maps == [["map 1"]] + [[] for _ in names[1:]]
 
 
 def test_publish_announces_each_new_file_on_begin_write(
