@@ -48,7 +48,9 @@ def command_error(error: BaseException, env: Environment, status: int) -> Comman
         if isinstance(error, MasterUnreachable):
             return unreachable(env, error.uri, status)
         if isinstance(error, MasterError):
-            return CommandError(f"ERROR: {error.status}", status)
+            # rosmaster's own texts for bad arguments already begin with "ERROR: ".
+            text = error.status
+            return CommandError(text if text.startswith("ERROR: ") else f"ERROR: {text}", status)
     if "rosx.node.service_client" in loaded:
         from rosx.node.service_client import ServiceRefused  # noqa: PLC0415
 

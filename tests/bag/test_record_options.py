@@ -19,6 +19,7 @@ from rosx.bag.recorder import Recorder, RecordOptions
 from rosx.bag.writer import open_unbuffered
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
+from tests.support.cli import clean_environ, rosx
 from tests.support.procs import wait_for
 
 String = get_message_class("std_msgs/String")
@@ -272,3 +273,14 @@ def test_named_topics_are_subscribed_in_the_order_given_then_the_file_opens(
         f"INFO Recording to '{tmp_path}/order.bag'.",
         f"INFO Closing '{tmp_path}/order.bag'.",
     ]
+
+
+def test_a_topic_the_master_refuses_is_one_error_line_and_leaves_no_file(
+    master: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    done = rosx(
+        "rosbag", "record", "-O", "x", "bad name", environ=clean_environ(ROS_MASTER_URI=master)
+    )
+    assert (done.status, done.err) == (1, "ERROR: parameter [topic] contains illegal chars\n")
+    assert list(tmp_path.iterdir()) == []
