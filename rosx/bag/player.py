@@ -11,8 +11,9 @@ gaps longer than that many seconds to nothing. ``start`` and ``duration`` select
 the bags (seconds from the bags' start); ``loop`` plays again from the start; ``keep_alive``
 keeps the node (and its latched topics) up until stopped. With ``clock`` the bag time is
 published on ``/clock`` at ``hz``. `Player.toggle_pause`, `Player.step` and
-`Player.toggle_pause_topics` serve the keys; `Player.wait_for_subscribers` holds playback
-until every topic has a subscriber.
+`Player.toggle_pause_topics` serve the keys, and `Player.serve_pause` the ``~pause_playback``
+service (``std_srvs/SetBool``: true pauses, false resumes); `Player.wait_for_subscribers`
+holds playback until every topic has a subscriber.
 
 ``pause_topics``: playback pauses before each message of those topics (``t`` turns this off
 and on). ``rate_control_topic`` (`Player.watch_rate_control`): playback waits while the bag
@@ -26,7 +27,7 @@ import heapq
 import struct
 import threading
 import time
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Iterator
@@ -132,6 +133,25 @@ class Player:
             if self.paused:
                 self._steps += 1
                 self._cond.notify_all()
+
+    def serve_pause(self) -> None:
+        """Serve ``~pause_playback``, as ROS 1's player does."""
+        from rosx.msg.codec.classes import get_service_class  # noqa: PLC0415
+
+        set_bool = get_service_class("std_srvs/SetBool")
+        self.node.advertise_service("~pause_playback", set_bool, self._pause_requested)
+
+    def _pause_requested(self, request: Any) -> dict[str, object]:
+        pause = bool(request.data)
+        with self._cond:
+            changed = pause != self.paused
+            self.paused = pause
+            self._cond.notify_all()
+        if changed:
+            message = f"Playback is now {'paused' if pause else 'resumed'}"
+        else:
+            message = f"Bag is already {'paused' if pause else 'running'}."
+        return {"success": changed, "message": message}
 
     def toggle_pause_topics(self) -> None:
         """Stop, or start again, pausing on ``pause_topics``."""

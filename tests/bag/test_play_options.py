@@ -22,7 +22,7 @@ from typing import Any
 import pytest
 
 from rosx.bag import api
-from rosx.msg.codec.classes import get_message_class
+from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.msg.codec.rostime import Time
 from rosx.node import Node
 from tests.support.cli import clean_environ
@@ -426,3 +426,35 @@ def test_rate_control_topic_without_a_header_first_is_reported(
     )
     os.killpg(player.process.pid, signal.SIGINT)
     assert player.process.wait(30) == 0
+
+
+def test_pause_playback_service_pauses_and_resumes_as_ros1s(
+    make_node: Callable[..., Node], play: Callable[..., Play], tmp_path: Path
+) -> None:
+    bag = write_bag(tmp_path / "svc.bag", [0.0, 0.01, 0.02, 3600.0])
+    node = make_node("listener")
+    listener = Listener(node, "/chatter")
+    player = play("--pause", "-q", "-d", "0", bag)
+    wait_for_publisher(listener)
+
+    def service() -> str | None:
+        services = node.master.call("getSystemState")[2]
+        return next((name for name, _ in services if name.endswith("/pause_playback")), None)
+
+    wait_for(lambda: service() is not None, what="the player's pause_playback service")
+    name = service()
+    assert name is not None and name.startswith("/play_")
+    client = node.service_client(name, get_service_class("std_srvs/SetBool"))
+
+    def call(data: bool) -> tuple[bool, str]:
+        answer = client.call(client.request_class(data=data))
+        return answer.success, answer.message
+
+    assert call(True) == (False, "Bag is already paused.")
+    assert listener.got == []
+    assert call(False) == (True, "Playback is now resumed")
+    assert listener.wait(3) == [f"/chatter:{i}" for i in range(3)]
+    assert call(True) == (True, "Playback is now paused")  # in the hour before the last one
+    assert call(True) == (False, "Bag is already paused.")
+    assert player.interrupt() == 0
+    assert listener.got == [f"/chatter:{i}" for i in range(3)]

@@ -2,8 +2,9 @@
 
 Prints what ROS 1's player prints: the bags it opens, the wait after advertising, the keys,
 and (unless ``-q``) a status line rewritten in place. On a terminal, space pauses and resumes,
-``s`` steps one message while paused and ``t`` turns pausing on ``--pause-topics`` off and on.
-``topic:=other`` arguments remap topics.
+``s`` steps one message while paused and ``t`` turns pausing on ``--pause-topics`` off and on;
+anywhere, the ``~pause_playback`` service pauses and resumes. ``topic:=other`` arguments remap
+topics.
 """
 
 from __future__ import annotations
@@ -289,6 +290,7 @@ def _writer(env: Environment) -> Any:
 
 
 def _run(player: Player, options: optparse.Values, env: Environment) -> int:
+    player.serve_pause()
     player.advertise()
     if not options.quiet:
         env.stdout.write("\n")  # ROS 1's status line's room, which -q does without
