@@ -124,6 +124,7 @@ class Publisher(_Topic):
     ) -> None:
         super().__init__(name, data_class)
         self.latch = latch
+        self.headers = dict(headers or {})
         self.queue_size = queue_size
         self.impl: NodePublisher | None = None
         if queue_size is None:
@@ -133,7 +134,11 @@ class Publisher(_Topic):
     def _attach(self, node: Node) -> None:
         assert self.data_class is not None
         impl = node.advertise(
-            self._requested_name, self.data_class, queue_size=self.queue_size, latch=self.latch
+            self._requested_name,
+            self.data_class,
+            queue_size=self.queue_size,
+            latch=self.latch,
+            headers=self.headers,
         )
         with self._lock:
             if not self._closed:

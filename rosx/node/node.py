@@ -297,16 +297,20 @@ class Node:
         *,
         queue_size: int | None = None,
         latch: bool = False,
+        headers: Mapping[str, str] | None = None,
     ) -> Publisher:
         """Publish ``topic`` with messages of ``data_class`` (registered with the master).
 
         ``queue_size``: per subscriber, drop-oldest; ``0`` unbounded; ``None`` blocks the
         publishing thread while a subscriber is far behind, as rospy's synchronous publishing.
+        ``headers``: fields added to the connection header subscribers get from now on.
         """
         info = PublicationInfo(
             self.resolve(topic), data_class._type, data_class._md5sum, data_class._full_text, latch
         )
         publication = self._publication(info, queue_size, data_class._has_header)
+        if headers:
+            publication.add_headers(headers)
         return Publisher(self, publication, data_class)
 
     def advertise_raw(

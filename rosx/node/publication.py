@@ -48,6 +48,8 @@ from rosx.wire.header import encode_header
 from rosx.wire.tcpros import Publication as PublicationInfo
 
 if TYPE_CHECKING:
+    from collections.abc import Mapping
+
     from rosx.msg.codec.message import Message
     from rosx.node.local import LocalLink
     from rosx.transport.loop_thread import LoopThread
@@ -165,9 +167,30 @@ class Publication:
             info = self.info
             with self._lock:
                 self.info = PublicationInfo(
-                    info.topic, info.type, info.md5sum, info.message_definition, latching=True
+                    info.topic,
+                    info.type,
+                    info.md5sum,
+                    info.message_definition,
+                    latching=True,
+                    headers=info.headers,
                 )
                 self._set_links(self.links)  # the latch needs every frame
+
+    def add_headers(self, headers: Mapping[str, str]) -> None:
+        """Add fields to the connection header of subscribers that connect from now on
+        (rospy's ``headers=``; a field already there is replaced)."""
+        with self._lock:
+            info = self.info
+            merged = dict(info.headers)
+            merged.update({str(key): str(value) for key, value in headers.items()})
+            self.info = PublicationInfo(
+                info.topic,
+                info.type,
+                info.md5sum,
+                info.message_definition,
+                latching=info.latching,
+                headers=tuple(merged.items()),
+            )
 
     # -- any thread --------------------------------------------------------------------------
 

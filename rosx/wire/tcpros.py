@@ -37,15 +37,20 @@ _PUBLISHER_REQUIRED = ("md5sum", "type")
 
 
 class Publication(Record):
-    """What a publisher offers on one topic, as its connection header states it."""
+    """What a publisher offers on one topic, as its connection header states it.
 
-    __match_args__ = ("topic", "type", "md5sum", "message_definition", "latching")
+    ``headers`` are fields the publisher adds to that header (rospy's ``headers=``), over the
+    standard ones if they share a name.
+    """
+
+    __match_args__ = ("topic", "type", "md5sum", "message_definition", "latching", "headers")
     __slots__ = __match_args__
     topic: str
     type: str
     md5sum: str
     message_definition: str
     latching: bool
+    headers: tuple[tuple[str, str], ...]
 
     def __init__(
         self,
@@ -54,6 +59,7 @@ class Publication(Record):
         md5sum: str,
         message_definition: str = "",
         latching: bool = False,
+        headers: tuple[tuple[str, str], ...] = (),
     ) -> None:
         super().__init__(
             topic=topic,
@@ -61,6 +67,7 @@ class Publication(Record):
             md5sum=md5sum,
             message_definition=message_definition,
             latching=latching,
+            headers=headers,
         )
 
 
@@ -162,16 +169,16 @@ def subscriber_header(
 
 def publisher_header(publication: Publication, *, callerid: str) -> dict[str, str]:
     """The header a publisher sends back to an accepted subscriber."""
-    return _sorted(
-        {
-            "callerid": callerid,
-            "topic": publication.topic,
-            "md5sum": publication.md5sum,
-            "type": publication.type,
-            "message_definition": publication.message_definition,
-            "latching": "1" if publication.latching else "0",
-        }
-    )
+    fields = {
+        "callerid": callerid,
+        "topic": publication.topic,
+        "md5sum": publication.md5sum,
+        "type": publication.type,
+        "message_definition": publication.message_definition,
+        "latching": "1" if publication.latching else "0",
+    }
+    fields.update(publication.headers)
+    return _sorted(fields)
 
 
 def accept_subscriber(

@@ -212,3 +212,16 @@ def test_whole_exchange_over_bytes(how: str) -> None:
     assert isinstance(reply, PublisherAccepted)
     assert reply.latching
     assert received[1:] == [b"\x05\x00\x00\x00hello"]
+
+
+def test_publisher_header_adds_the_publishers_own_fields_over_the_standard_ones() -> None:
+    cookies = Publication(
+        "/chatter",
+        "std_msgs/String",
+        CHATTER.md5sum,
+        CHATTER.message_definition,
+        headers=(("cookies", "oreo"), ("latching", "1")),
+    )
+    header = publisher_header(cookies, callerid="/talker")
+    assert (header["cookies"], header["latching"], header["callerid"]) == ("oreo", "1", "/talker")
+    assert list(header) == sorted(header)
