@@ -125,6 +125,7 @@ class Publisher(_Topic):
         super().__init__(name, data_class)
         self.latch = latch
         self.headers = dict(headers or {})
+        self.subscriber_listener = subscriber_listener
         self.queue_size = queue_size
         self.impl: NodePublisher | None = None
         if queue_size is None:
@@ -144,6 +145,8 @@ class Publisher(_Topic):
             if not self._closed:
                 self.impl = impl
                 self.resolved_name = self.name = impl.name
+                if self.subscriber_listener is not None:
+                    impl.publication.add_watcher(_ListenerWatcher(self, self.subscriber_listener))
                 return
         impl.unregister()
 
@@ -266,15 +269,48 @@ class Subscriber(_Topic):
 
 
 class SubscribeListener:
-    """rospy's hook for subscriber (dis)connections; accepted, not called by this runtime."""
+    """rospy's hook for subscriber (dis)connections (``Publisher(subscriber_listener=...)``).
+
+    Each call runs on a thread of its own, as rospy's run on the thread of the connection.
+    """
 
     def peer_subscribe(
-        self, topic_name: str, topic_publish: Callable[..., object], peer_publish: object
+        self,
+        topic_name: str,
+        topic_publish: Callable[..., object],
+        peer_publish: Callable[[Any], object],
     ) -> None:
-        """A subscriber connected."""
+        """A subscriber connected: ``topic_publish`` publishes to all, ``peer_publish`` to it
+        alone."""
 
     def peer_unsubscribe(self, topic_name: str, num_peers: int) -> None:
-        """A subscriber left."""
+        """A subscriber left; ``num_peers`` remain."""
+
+
+class _ListenerWatcher:
+    """A `SubscribeListener` as the node's publication tells it of its subscribers."""
+
+    def __init__(self, publisher: Publisher, listener: Any) -> None:
+        self.publisher = publisher
+        self.listener = listener
+
+    def subscribed(self, publish_one: Callable[[Message], None]) -> None:
+        topic = self.publisher.resolved_name
+        self._run(self.listener.peer_subscribe, topic, self.publisher.publish, publish_one)
+
+    def unsubscribed(self, remaining: int) -> None:
+        self._run(self.listener.peer_unsubscribe, self.publisher.resolved_name, remaining)
+
+    @staticmethod
+    def _run(hook: Callable[..., object], *args: object) -> None:
+        def call() -> None:
+            try:
+                hook(*args)
+            except Exception:
+                if not state.CLIENT.is_shutdown():
+                    logerr("bad subscriber listener: %s\n%s", hook, traceback.format_exc())
+
+        threading.Thread(target=call, name="rosx-subscribe-listener", daemon=True).start()
 
 
 def wait_for_message(topic: str, topic_type: type[Message], timeout: float | None = None) -> Any:

@@ -48,12 +48,23 @@ from rosx.wire.header import encode_header
 from rosx.wire.tcpros import Publication as PublicationInfo
 
 if TYPE_CHECKING:
-    from collections.abc import Mapping
+    from collections.abc import Callable, Mapping
+    from typing import Protocol
 
     from rosx.msg.codec.message import Message
     from rosx.node.local import LocalLink
     from rosx.transport.loop_thread import LoopThread
     from rosx.wire.tcpros import SubscriberAccepted
+
+    class PeerWatcher(Protocol):
+        """What `Publication.add_watcher` takes: told of subscribers as they come and go."""
+
+        def subscribed(self, publish_one: Callable[[Message], None]) -> None:
+            """A subscriber connected; ``publish_one`` publishes to it alone."""
+
+        def unsubscribed(self, remaining: int) -> None:
+            """A subscriber left; ``remaining`` are still connected."""
+
 
 #: The transport name ``getBusInfo`` reports for a subscriber of this process (roscpp's).
 INTRAPROCESS = "INTRAPROCESS"
@@ -155,6 +166,9 @@ class Publication:
         #: The one subscriber's stream when it is the only one to send to and nothing keeps
         #: the frame (no latch): `publish` then sends it the shortest way.
         self._sole: OutgoingStream | None = None
+        #: Told of each subscriber that connects, with a way to publish to it alone, and of
+        #: each that leaves, with how many remain (`add_watcher`; rospy's SubscribeListener).
+        self._watchers: tuple[PeerWatcher, ...] = ()
 
     @property
     def latching(self) -> bool:
@@ -312,6 +326,30 @@ class Publication:
         """Subscribers currently connected (in this process or not)."""
         return len(self.links) + len(self.local_links)
 
+    def add_watcher(self, watcher: PeerWatcher) -> None:
+        """Tell ``watcher`` of the subscribers that connect and leave from now on: it is
+        called on the thread that saw the change, and must not wait."""
+        with self._lock:
+            self._watchers = (*self._watchers, watcher)
+
+    def _publish_to(self, stream: OutgoingStream, msg: Message) -> None:
+        """Send ``msg`` to one subscriber only."""
+        if not self.closed:
+            frame = serialize_frame(msg)
+            stream.send(frame)
+            with self._lock:
+                self.bytes_published += len(frame)
+
+    def _subscribed(self, publish_one: Callable[[Message], None]) -> None:
+        for watcher in self._watchers:
+            watcher.subscribed(publish_one)
+
+    def _unsubscribed(self) -> None:
+        if self._watchers:
+            remaining = self.connection_count()
+            for watcher in self._watchers:
+                watcher.unsubscribed(remaining)
+
     # -- the loop ----------------------------------------------------------------------------
 
     def accept(self, sock: socket.socket, accepted: SubscriberAccepted) -> SubscriberLink:
@@ -327,6 +365,8 @@ class Publication:
             if self.latched is not None:
                 stream.send(self.latched)
             self._set_links((*self.links, link))
+        if self._watchers:
+            self._subscribed(lambda msg: self._publish_to(stream, msg))
         return link
 
     def attach_local(self, link: LocalLink) -> None:
@@ -337,11 +377,16 @@ class Publication:
             elif self.latched is not None:
                 link.deliver(self.latched[4:])
             self.local_links = (*self.local_links, link)
+        if self._watchers:
+            self._subscribed(lambda msg: link.deliver(LocalMessage(clone(msg))))
 
     def detach_local(self, link: LocalLink) -> None:
         """Stop serving a subscriber of this process."""
         with self._lock:
-            self.local_links = tuple(other for other in self.local_links if other is not link)
+            before = self.local_links
+            self.local_links = tuple(other for other in before if other is not link)
+        if len(self.local_links) < len(before):
+            self._unsubscribed()
 
     def _set_links(self, links: tuple[SubscriberLink, ...]) -> None:
         # Under the lock; `_nearby` and `_sole` follow the links (and the latch), read
@@ -353,7 +398,10 @@ class Publication:
 
     def _closed_stream(self, stream: OutgoingStream) -> None:
         with self._lock:
-            self._set_links(tuple(link for link in self.links if link.stream is not stream))
+            before = self.links
+            self._set_links(tuple(link for link in before if link.stream is not stream))
+        if len(self.links) < len(before) and not self.closed:
+            self._unsubscribed()
 
     def close(self) -> None:
         """Disconnect every subscriber; further publishing does nothing."""

@@ -446,3 +446,38 @@ def test_large_and_small_messages_arrive_whole_and_in_order(
     wait_for(lambda: len(got) == len(texts))
     assert [m.data for m in got] == texts
     assert all(type(m.data) is str for m in got)
+
+
+class Greeter:
+    """A publication's watcher: greets each new subscriber alone, notes who leaves."""
+
+    def __init__(self) -> None:
+        self.events: list[str] = []
+
+    def subscribed(self, publish_one: Callable[[Any], None]) -> None:
+        self.events.append("came")
+        publish_one(String(data=f"welcome, number {self.events.count('came')}"))
+
+    def unsubscribed(self, remaining: int) -> None:
+        self.events.append(f"left, {remaining} remain")
+
+
+def test_a_watcher_hears_of_subscribers_and_publishes_to_one_alone(
+    make_node: Callable[..., Node],
+) -> None:
+    talker = make_node("talker")
+    pub = talker.advertise("/greet", String, queue_size=10)
+    greeter = Greeter()
+    pub.publication.add_watcher(greeter)
+    first: list[str] = []
+    second: list[str] = []
+    make_node("first").subscribe("/greet", String, lambda m: first.append(m.data))
+    wait_for(lambda: first == ["welcome, number 1"], what="the first greeting")
+    later = make_node("second").subscribe("/greet", String, lambda m: second.append(m.data))
+    wait_for(lambda: second == ["welcome, number 2"], what="the second greeting")
+    pub.publish(String(data="to all"))
+    wait_for(lambda: first[-1:] == second[-1:] == ["to all"], what="the message to all")
+    assert first == ["welcome, number 1", "to all"]
+    later.unregister()
+    wait_for(lambda: greeter.events[-1:] == ["left, 1 remain"], what="the second to leave")
+    assert greeter.events == ["came", "came", "left, 1 remain"]
