@@ -181,3 +181,21 @@ def test_advanced_publish_fills_messages_from_arguments(runs: Runs) -> None:
         "r: 1.0\ng: 2.0\nb: 3.0\na: 4.0\n---\nr: 0.0\ng: 0.0\nb: 0.0\na: 1.0\n---\n",
         "r: 0.0\ng: 0.0\nb: 0.0\na: 1.0\n---\nr: 1.0\ng: 2.0\nb: 3.0\na: 4.0\n---\n",
     )
+
+
+def test_a_subscribe_listener_greets_each_subscriber(runs: Runs) -> None:
+    with runs.node("rospy_tutorials", "listener_subscribe_notify.py") as talker:
+        wait_for(lambda: "hello world 0" in lines(talker), what="the talker")
+        echo = runs_tool(runs, "rostopic", "echo", "-n", "3", "/chatter")
+        wait_for(lambda: "I have no friends" in lines(talker), what="the echo to leave")
+    heard = [line for line in echo.splitlines() if line.startswith("data: ")]
+    assert 'data: "Hey everyone, we have a new friend!"' in heard
+    assert 'data: "greetings. welcome to topic /chatter"' in heard
+    said = [line for line in lines(talker) if not line.startswith("hello world")]
+    assert said == [
+        "a peer subscribed to topic [/chatter]",
+        "Hey everyone, we have a new friend!",
+        "greetings. welcome to topic /chatter",
+        "a peer unsubscribed from topic [/chatter]",
+        "I have no friends",
+    ]
