@@ -175,6 +175,43 @@ class PackageFinder(importlib.abc.MetaPathFinder):
         return _spec(fullname, _Loader(fullname, None), package=True) if known else None
 
 
+#: The Python helpers ROS 1 ships beside a package's generated modules, by module name: the
+#: rosx module that serves each.
+HELPERS = {"sensor_msgs.point_cloud2": "rosx.client.point_cloud2"}
+
+
+class _HelperLoader(importlib.abc.Loader):
+    """A helper module: a new module of that name with the names of rosx's."""
+
+    def __init__(self, source: str) -> None:
+        self.source = source
+
+    def exec_module(self, module: types.ModuleType) -> None:
+        import importlib  # noqa: PLC0415
+
+        served = importlib.import_module(self.source)
+        module.__doc__ = served.__doc__
+        for name in dir(served):
+            if not name.startswith("__"):
+                setattr(module, name, getattr(served, name))
+
+
+class HelperFinder(importlib.abc.MetaPathFinder):
+    """Serves `HELPERS` when nothing else provides them (last), so a ROS 1 installation's
+    own helper modules keep working."""
+
+    def find_spec(
+        self,
+        fullname: str,
+        path: Sequence[str] | None,
+        target: types.ModuleType | None = None,
+    ) -> importlib.machinery.ModuleSpec | None:
+        source = HELPERS.get(fullname)
+        if source is None:
+            return None
+        return importlib.machinery.ModuleSpec(fullname, _HelperLoader(source))
+
+
 def install() -> None:
     """Put the finders in place (once a process)."""
     finders = sys.meta_path
@@ -182,6 +219,8 @@ def install() -> None:
         finders.insert(0, TypeModuleFinder())
     if not any(isinstance(f, PackageFinder) for f in finders):
         finders.append(PackageFinder())
+    if not any(isinstance(f, HelperFinder) for f in finders):
+        finders.append(HelperFinder())
 
 
-__all__ = ["PackageFinder", "TypeModule", "TypeModuleFinder", "install"]
+__all__ = ["HELPERS", "HelperFinder", "PackageFinder", "TypeModule", "TypeModuleFinder", "install"]
