@@ -199,3 +199,15 @@ def test_a_subscribe_listener_greets_each_subscriber(runs: Runs) -> None:
         "a peer unsubscribed from topic [/chatter]",
         "I have no friends",
     ]
+
+
+def test_publish_pointcloud2_builds_its_cloud_with_the_helper(runs: Runs) -> None:
+    with runs.node("rospy_tutorials", "publish_pointcloud2.py"):
+        echo = runs_tool(runs, "rostopic", "echo", "-n", "1", "--noarr", "/points2")
+    body = echo.split('  frame_id: "map"\n', 1)[1]
+    assert body == (
+        "height: 1\nwidth: 10000\n"
+        'fields: "<array type: sensor_msgs/PointField, length: 4>"\n'
+        "is_bigendian: False\npoint_step: 16\nrow_step: 160000\n"
+        'data: "<array type: uint8, length: 160000>"\nis_dense: False\n---\n'
+    )

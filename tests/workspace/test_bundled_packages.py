@@ -95,12 +95,11 @@ def test_rospack_depends_beginner_tutorials_is_the_tutorials_list(tmp_path: Path
 
 def test_rosls_shows_the_tutorial_packages_as_noetic_installs_them() -> None:
     assert rosx("rosls", "roscpp_tutorials").out == "cmake\nlaunch\npackage.xml\nsrv\n"
-    # Noetic's, but for 010_publish_pointcloud2.
     assert rosx("rosls", "rospy_tutorials").out.split() == [
         "001_talker_listener", "002_headers", "003_listener_with_user_data",
         "004_listener_subscribe_notify", "005_add_two_ints", "006_parameters",
         "007_connection_header", "008_on_shutdown", "009_advanced_publish",
-        "cmake", "msg", "package.xml", "srv",
+        "010_publish_pointcloud2", "cmake", "msg", "package.xml", "srv",
     ]  # fmt: skip
     assert rosx("rosls", "std_msgs").out == "msg\npackage.xml\n"
 
