@@ -23,6 +23,21 @@ PointField = get_message_class("sensor_msgs/PointField")
 XYZ_BYTES = "0000803f0000004000004040000080400000a0400000c07f"
 
 
+def run_script(script: Path) -> object:
+    """Run ``script`` as ``rosx rosrun`` runs one; the JSON it prints."""
+    done = subprocess.run(
+        [sys.executable, "-m", "rosx_commands", "run-script", str(script)],
+        env=clean_environ(),
+        cwd=script.parent,
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
 def test_create_cloud_xyz32_is_an_unorganized_little_endian_cloud() -> None:
     cloud = point_cloud2.create_cloud_xyz32(Header(frame_id="map"), [(1, 2, 3), (4, 5, math.nan)])
     assert cloud._type == "sensor_msgs/PointCloud2"
@@ -68,17 +83,7 @@ def test_scripts_import_it_beside_sensor_msgs_msg(tmp_path: Path) -> None:
         "print(json.dumps([point_cloud2 is pc2, pc2.__name__, cloud.data.hex(),\n"
         "                  [list(p) for p in point_cloud2.read_points(cloud)]]))\n"
     )
-    done = subprocess.run(
-        [sys.executable, "-m", "rosx_commands", "run-script", str(script)],
-        env=clean_environ(),
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
-    assert done.returncode == 0, done.stderr
-    assert json.loads(done.stdout) == [
+    assert run_script(script) == [
         True,
         "sensor_msgs.point_cloud2",
         XYZ_BYTES[:24],
@@ -107,14 +112,4 @@ def test_clouds_match_ros1s_helper(tmp_path: Path) -> None:
     assert ros1.returncode == 0, ros1.stderr
     script = tmp_path / "build.py"
     script.write_text(BUILD)
-    ours = subprocess.run(
-        [sys.executable, "-m", "rosx_commands", "run-script", str(script)],
-        env=clean_environ(),
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
-    assert ours.returncode == 0, ours.stderr
-    assert json.loads(ours.stdout) == json.loads(ros1.stdout)
+    assert run_script(script) == json.loads(ros1.stdout)
