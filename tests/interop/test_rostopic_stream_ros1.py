@@ -6,6 +6,7 @@ import re
 import subprocess
 import xmlrpc.client
 from collections.abc import Iterator
+from typing import Any
 
 import pytest
 
@@ -343,6 +344,14 @@ def test_rosx_pub_once_reaches_the_rosout_node(graph: str) -> None:
     """ROS 1's rosout is roscpp, which drops a publisher's connection as soon as the master
     says the publisher left: the message of a ``rostopic pub -1`` that leaves before its 3 s
     must still reach it, and so ``/rosout_agg``."""
+
+    def rosout_subscribed() -> bool:
+        state: Any = xmlrpc.client.ServerProxy(graph).getSystemState("/test")
+        return ["/rosout", ["/rosout"]] in state[2][1]
+
+    # A core just started may not have subscribed its rosout yet, and a message published
+    # before that is ROS 1's to lose too.
+    wait_for(rosout_subscribed, what="the core's rosout subscribed to /rosout")
     ours, out = pub_once_to_rospy(
         graph,
         AGG_LISTENER,
