@@ -57,7 +57,12 @@ def test_pose_x_rises_while_the_turtle_moves(
             assert len(moving) > 10 and (np.diff(moving) >= 0).all()  # rising, never back
             assert (np.diff(times) >= 0).all()
             deadline = time.monotonic() + WAIT
-            while pane.frames == 0 or pane.plot._datasets[0].y.max() < still + 1.0:
+            # The drawn data and the axis that fits it are two updates: wait for both.
+            while (
+                pane.frames == 0
+                or pane.plot._datasets[0].y.max() < still + 1.0
+                or pane.plot._y_max < still + 1.0
+            ):
                 assert time.monotonic() < deadline, "the plot did not draw the rise"
                 await pilot.pause(0.05)
             drawn = pane.plot._datasets[0]
