@@ -2,7 +2,9 @@
 
 - `create`: ``catkin_create_pkg`` (with catkin_pkg's ``templates/``).
 - `build`, `types`, `errors`: ``catkin_make``: packages found, types built, ``devel/`` written.
-- `shell`: the shell functions (``roscd``, ``rosls``, ROS 1's command names) and setup files.
+- `shell`: what ``rosx shell-init`` prints (``roscd``, ``rosls``, ROS 1's command names) and
+  the setup files.
+- `path_commands`: ROS 1's command names as small programs on ``PATH``, for ``rosx shell-init``.
 - `executables`: how ``rosrun`` finds a package's executable.
 - `locate`: where ``roscd`` goes.
 
