@@ -96,13 +96,16 @@ def test_the_bag_layers_shim_directory_costs_no_bag_module() -> None:
         ["shell-init", "bash"],
     ],
 )
-def test_workspace_tools_do_not_pay_for_typer(argv: list[str]) -> None:
+def test_workspace_tools_do_not_pay_for_typer(argv: list[str], tmp_path: Path) -> None:
+    environ = {"XDG_CACHE_HOME": str(tmp_path)}  # where shell-init writes its programs
     loaded = _modules_after(
         "import io\nfrom rosx_commands.context import Environment\nfrom rosx_commands.main import run_tool\n"
-        f"run_tool({argv!r}, Environment(stdout=io.StringIO(), stderr=io.StringIO(), environ={{}}))"
+        f"run_tool({argv!r}, Environment(stdout=io.StringIO(), stderr=io.StringIO(), environ={environ!r}))"
     )
     assert not {m for m in loaded if m.split(".")[0] in ("typer", "pydantic", "rich", *HEAVY)}
     assert "dataclasses" not in loaded and "textual" not in loaded
+    if argv[0] == "shell-init":  # the programs on PATH were written, at that cost
+        assert list(tmp_path.glob("rosx/bin-*/rostopic"))
 
 
 def test_rosbag_info_loads_no_tui_numpy_or_typer() -> None:

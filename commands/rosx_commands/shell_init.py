@@ -4,7 +4,9 @@
 ``setup.bash`` exports (``ROS_DISTRO``, ``ROS_PACKAGE_PATH``…), makes ``roscore``, ``rosrun``,
 ``rostopic``, ``catkin_make``… run rosx's tools, defines ``roscd`` and ``rosls`` and adds tab
 completion, so a lab sheet's commands can be typed exactly as printed (see
-`rosx.workspace.shell`).
+`rosx.workspace.shell`). The command names are small programs in the user's cache folder, put
+on ``PATH`` (`rosx.workspace.path_commands`); where they cannot be written, shell functions,
+with a note on stderr.
 """
 
 from __future__ import annotations
@@ -33,5 +35,29 @@ def shell_init(argv: Sequence[str], env: Environment) -> int:
         env.err(f"rosx shell-init: error: unknown shell {shell!r} (one of: {', '.join(SHELLS)})")
         return ExitStatus.USAGE
     commands = [name for name in ROS_COMMANDS if name in TOOLS]
-    env.stdout.write(code(self_command(), shell, commands))
+    rosx = self_command()
+    folder = _written_folder(env, rosx, commands)
+    env.stdout.write(code(rosx, shell, commands, folder))
     return ExitStatus.OK
+
+
+def _written_folder(env: Environment, rosx: str, commands: Sequence[str]) -> str | None:
+    """The folder of the command programs, written; None (with a note) where it cannot be."""
+    from rosx.workspace.path_commands import command_folder, write_commands  # noqa: PLC0415
+
+    folder = command_folder(env.environ, rosx)
+    if folder is None:
+        env.err(
+            "rosx shell-init: no cache folder (set HOME or XDG_CACHE_HOME); "
+            "ROS commands are shell functions in this shell"
+        )
+        return None
+    try:
+        write_commands(folder, rosx, commands)
+    except OSError as error:
+        env.err(
+            f"rosx shell-init: cannot write {folder} ({error.strerror or error}); "
+            "ROS commands are shell functions in this shell"
+        )
+        return None
+    return str(folder)

@@ -1,14 +1,16 @@
-"""Shell code: the functions of ``rosx shell-init`` and a workspace's ``devel/setup.*`` files.
+"""Shell code: what ``rosx shell-init`` prints and a workspace's ``devel/setup.*`` files.
 
 A process cannot change its shell's directory, so ``roscd`` (and ``rosls``) are shell functions,
 as in ROS 1 (rosbash defines them when a ROS setup file is sourced). They ask rosx where to go
 (``rosx roscd --where TARGET``) and go there. A ``rosx`` function sends ``rosx roscd`` and
 ``rosx rosls`` to them, so the commands of a lab sheet work with ``rosx`` in front too.
 
-`shell_init` adds functions with ROS 1's command names (``roscore``, ``rosrun``, ``rostopic``…)
-that run rosx's tools, so commands can be typed as ROS 1 prints them. A workspace's setup files
-(`setup_sh`) define only what ROS 1's do (``roscd``, ``rosls``), so a shell that also uses a
-ROS 1 installation keeps its ROS 1 commands.
+`shell_init` makes ROS 1's command names (``roscore``, ``rosrun``, ``rostopic``…) run rosx's
+tools, so commands can be typed as ROS 1 prints them. As in ROS 1 they are programs on ``PATH``
+(written by `rosx.workspace.path_commands`), so ``timeout``, ``watch``, ``xargs``, ``nohup`` and
+scripts run them too; where that folder cannot be written, they are shell functions instead.
+A workspace's setup files (`setup_sh`) define only what ROS 1's do (``roscd``, ``rosls``), so a
+shell that also uses a ROS 1 installation keeps its ROS 1 commands.
 
 Everything is POSIX sh that bash and zsh also run. For bash and zsh, tab completion of every
 ROS command (`rosx.workspace.completion`) comes with it, and ``rosx shell-init`` and the setup
@@ -26,8 +28,8 @@ from rosx.workspace.environment import base_exports, prepend_path
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
-#: ROS 1 command names that `shell_init` defines as functions running rosx's tools (those of
-#: them that rosx has: the caller passes which).
+#: ROS 1 command names that `shell_init` makes run rosx's tools (those of them that rosx has:
+#: the caller passes which).
 ROS_COMMANDS = (
     "roscore",
     "rosrun",
@@ -93,18 +95,36 @@ def _command_function(name: str) -> str:
     return f'{name}() {{ _rosx {name} "$@"; }}\n'
 
 
-def shell_init(rosx: str, shell: str, commands: Sequence[str] = ROS_COMMANDS) -> str:
+def shell_init(
+    rosx: str, shell: str, commands: Sequence[str] = ROS_COMMANDS, folder: str | None = None
+) -> str:
     """What ``eval "$(rosx shell-init SHELL)"`` runs: Noetic's environment (`base_exports`),
-    ``roscd``/``rosls``, a function per ROS command of ``commands``, completion."""
+    ``roscd``/``rosls``, ROS 1's command names of ``commands``, completion.
+
+    Args:
+        rosx: how the shell runs rosx.
+        shell: ``bash``, ``zsh`` or ``sh``.
+        commands: the ROS 1 command names to provide.
+        folder: the folder holding a program per name of ``commands``
+            (`rosx.workspace.path_commands`), put in front of ``PATH`` once; None: no such
+            folder, the names become shell functions.
+    """
     head = (
         f"# rosx shell integration for {shell}: Noetic's environment, ROS 1's command names,\n"
         "# roscd, rosls and tab completion.\n"
         f'# Load it with:  eval "$(rosx shell-init {shell})"\n'
     )
+    names = _command_names(shell, commands, folder)
+    return head + base_exports() + navigation_functions(rosx, shell) + names
+
+
+def _command_names(shell: str, commands: Sequence[str], folder: str | None) -> str:
+    if folder is not None:
+        # Functions of an earlier shell-init in this shell would hide the programs.
+        return f"unset -f {' '.join(commands)} 2>/dev/null || :\n" + prepend_path("PATH", folder)
     # POSIX sh allows no "-" in a function's name; bash and zsh do.
     names = [n for n in commands if shell != "sh" or "-" not in n]
-    functions = "".join(_command_function(name) for name in names)
-    return head + base_exports() + navigation_functions(rosx, shell) + functions
+    return "".join(_command_function(name) for name in names)
 
 
 def setup_sh(*, source: str, devel: str, shims: Sequence[str], rosx: str) -> str:

@@ -384,7 +384,8 @@ def test_completion_asks_the_master(master: str, make_node: Callable[..., Node])
 
 @pytest.mark.parametrize("shell", ["bash", "zsh"])
 def test_tab_completion_in_the_shell(workspace: Path, shell: str) -> None:
-    """The shell function that shell-init installs fills the shell's completion."""
+    """The shell function that shell-init installs fills the shell's completion, also of the
+    command names that are programs on PATH."""
     import shutil
 
     if shutil.which(shell) is None:
@@ -396,12 +397,14 @@ def test_tab_completion_in_the_shell(workspace: Path, shell: str) -> None:
             "COMP_WORDS=(rosed beginner_tutorials pack); COMP_CWORD=2; _rosx_complete;"
             " printf '%s\\n' \"${COMPREPLY[@]}\"\n"
             "complete -p rosrun roscd\n"
+            "type -t rosrun\n"
         )
         expected = [
             "beginner_tutorials/",
             "package.xml",
             "complete -o default -F _rosx_complete rosrun",
             "complete -o nospace -F _rosx_complete roscd",
+            "file",
         ]
     else:
         script = (
@@ -411,15 +414,17 @@ def test_tab_completion_in_the_shell(workspace: Path, shell: str) -> None:
             "words=(roscd begin); CURRENT=2; _rosx_complete\n"
             "words=(rosed beginner_tutorials pack); CURRENT=3; _rosx_complete\n"
             "print -r -- $_comps[rostopic]\n"
+            "whence -w rostopic\n"
         )
         expected = [
             "compadd -Q -S  -- beginner_tutorials/",
             "compadd -Q -- package.xml",
             "_rosx_complete",
+            "rostopic: command",
         ]
     done = subprocess.run(
         [shell, "-c", script],
-        env={**env_of(workspace), "HOME": str(workspace)},
+        env={**env_of(workspace), "HOME": str(workspace.parent), "XDG_CACHE_HOME": ""},
         capture_output=True,
         text=True,
         timeout=60,

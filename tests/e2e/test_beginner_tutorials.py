@@ -131,8 +131,14 @@ class Terminal:
         self.home = home
         self.port = free_port()
         self.env = clean_environ(HOME=str(home), ROS_MASTER_URI=f"http://localhost:{self.port}")
-        # The test run's own variables (CI's ROS 1 reference, ROS1_*) are no user's either.
-        for name in ("CMAKE_PREFIX_PATH", "PYTHONPATH", "ROSLISP_PACKAGE_DIRECTORIES"):
+        # The test run's own variables (CI's ROS 1 reference, ROS1_*) are no user's either;
+        # without XDG_CACHE_HOME, shell-init writes its programs under this HOME.
+        for name in (
+            "CMAKE_PREFIX_PATH",
+            "PYTHONPATH",
+            "ROSLISP_PACKAGE_DIRECTORIES",
+            "XDG_CACHE_HOME",
+        ):
             self.env.pop(name, None)
         for name in [k for k in self.env if k.startswith("ROS1_")]:
             self.env.pop(name)
@@ -481,10 +487,12 @@ def test_the_beginner_tutorials(terminal: Terminal) -> None:  # noqa: PLR0915 - 
         # rosx has no rosdep: the database roswtf looks for exists for Debian's roswtf.
         (home / ".ros" / "rosdep" / "sources.cache").mkdir(parents=True)
         (home / ".ros" / "rosdep" / "sources.cache" / "index").touch()
+        # Debian's roswtf runs the program `rospack export …`: Debian's, as in a ROS 1 shell
+        # (shell-init's PATH would give it rosx's, which has no `export`).
         theirs = t.run(
             "roscd beginner_tutorials\n"
-            "PYTHONPATH= ROS_PACKAGE_PATH=$ROS_PACKAGE_PATH:/usr/share /usr/bin/roswtf 2>&1 |"
-            " grep -v 'rosdep view is empty'"
+            "PATH=/usr/bin:$PATH PYTHONPATH= ROS_PACKAGE_PATH=$ROS_PACKAGE_PATH:/usr/share"
+            " /usr/bin/roswtf 2>&1 | grep -v 'rosdep view is empty'"
         )
         ours = t.run(
             "roscd beginner_tutorials\nPYTHONPATH= ROS_PACKAGE_PATH=$ROS_PACKAGE_PATH:/usr/share"

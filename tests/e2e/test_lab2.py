@@ -87,6 +87,7 @@ def lab(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Lab]:
     env["PATH"] = f"{bin_dir}:{env.get('PATH', '/usr/bin:/bin')}"
     env.pop("PYTHONPATH", None)
     env.pop("PWD", None)
+    env.pop("XDG_CACHE_HOME", None)  # shell-init's programs go to this HOME's cache folder
     core = [sys.executable, "-m", "rosx_commands", "roscore", "-p", str(port)]
     sim = [sys.executable, "-m", "rosx_turtle", "turtlesim_node", "--headless"]
     with running(core, env):

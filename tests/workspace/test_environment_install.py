@@ -23,6 +23,7 @@ def shell(name: str, script: str, cwd: Path, **extra: str) -> subprocess.Complet
     env = clean_environ(HOME=str(cwd), **extra)
     env.pop("CMAKE_PREFIX_PATH", None)
     env.pop("ROSLISP_PACKAGE_DIRECTORIES", None)
+    env.pop("XDG_CACHE_HOME", None)  # shell-init writes to HOME's cache folder, in tmp
     for key in [k for k in env if k.startswith("ROS1_")]:  # the test run's ROS 1 reference
         env.pop(key)
     return subprocess.run(

@@ -1,5 +1,5 @@
 """``rosx rosrun``, ``rosx rospack``, ``rosx roscd`` and ``rosx shell-init``: finding packages
-and executables with ROS 1's texts and exit statuses, and the shell functions."""
+and executables with ROS 1's texts and exit statuses, and the commands shell-init provides."""
 
 from __future__ import annotations
 
@@ -166,7 +166,7 @@ def test_roscd_where_and_its_errors(workspace: Path, tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize("shell", ["bash", "zsh"])
-def test_shell_init_defines_the_ros_commands(workspace: Path, shell: str) -> None:
+def test_shell_init_defines_the_ros_commands(workspace: Path, shell: str, tmp_path: Path) -> None:
     if shutil.which(shell) is None:
         pytest.skip(f"{shell} is not installed")
     script = (
@@ -178,7 +178,7 @@ def test_shell_init_defines_the_ros_commands(workspace: Path, shell: str) -> Non
     )
     done = subprocess.run(
         [shell, "-c", script],
-        env=env_of(workspace),
+        env={**env_of(workspace), "XDG_CACHE_HOME": str(tmp_path / "cache")},
         capture_output=True,
         text=True,
         timeout=60,
