@@ -35,6 +35,8 @@ if TYPE_CHECKING:
 
 #: A peer has this long to send its whole header.
 HEADER_TIMEOUT = 30.0
+#: Seconds before listening again after an accept failed (out of file descriptors, say).
+ACCEPT_PAUSE = 0.05
 
 
 class TcprosServer:
@@ -60,7 +62,7 @@ class TcprosServer:
         sock.setblocking(False)
         self._sock = sock
         self.port = sock.getsockname()[1]
-        self._spawn(self._accept_loop(sock))
+        self._listen(sock)
         return self.port
 
     def start_unix(self, address: str) -> None:
@@ -68,27 +70,38 @@ class TcprosServer:
         sock = unixros.listen(address)
         self._unix = sock
         self.unix_address = address
-        self._spawn(self._accept_loop(sock))
+        self._listen(sock)
 
     def _spawn(self, coro: Awaitable[None]) -> None:
         task: asyncio.Task[None] = self._io.loop.create_task(coro)  # type: ignore[arg-type]
         self._tasks.add(task)
         task.add_done_callback(self._tasks.discard)
 
-    async def _accept_loop(self, listener: socket.socket) -> None:
-        loop = self._io.loop
-        while True:
+    # Accepting is a reader callback of the loop, not a task awaiting `loop.sock_accept`: a
+    # connection that arrives as the server closes would then complete an accept whose
+    # future was cancelled, and asyncio prints that error's traceback (CPython 3.10-3.13).
+
+    def _listen(self, listener: socket.socket) -> None:
+        self._io.loop.add_reader(listener.fileno(), self._accept, listener)
+
+    def _accept(self, listener: socket.socket) -> None:
+        """Take every connection waiting on ``listener``. On the loop."""
+        while listener.fileno() >= 0:
             try:
-                sock, _ = await loop.sock_accept(listener)
-            except asyncio.CancelledError:
+                sock, _ = listener.accept()
+            except (BlockingIOError, InterruptedError):
                 return
             except OSError:
-                if listener.fileno() < 0:
-                    return
-                await asyncio.sleep(0.05)  # out of file descriptors, say: do not spin
-                continue
+                # Out of file descriptors, say: listen again a little later, do not spin.
+                self._io.loop.remove_reader(listener.fileno())
+                self._io.loop.call_later(ACCEPT_PAUSE, self._resume, listener)
+                return
             sock.setblocking(False)
             self._spawn(self._handshake(sock))
+
+    def _resume(self, listener: socket.socket) -> None:
+        if listener.fileno() >= 0:
+            self._listen(listener)
 
     async def _handshake(self, sock: socket.socket) -> None:
         reader = FrameReader(DEFAULT_MAX_HEADER_SIZE)
@@ -134,11 +147,10 @@ class TcprosServer:
 
     def close(self) -> None:
         """Stop listening and drop connections still in their handshake. On the loop."""
-        if self._sock is not None:
-            sock, self._sock = self._sock, None
-            sock.close()
-        if self._unix is not None:
-            unix, self._unix = self._unix, None
-            unix.close()
+        for listener in (self._sock, self._unix):
+            if listener is not None and listener.fileno() >= 0:
+                self._io.loop.remove_reader(listener.fileno())
+                listener.close()
+        self._sock = self._unix = None
         for task in list(self._tasks):
             task.cancel()
