@@ -44,12 +44,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from bench.bench_pubsub import (  # noqa: E402 -- after the path is set
-    API_ROSPY,
-    API_ROSX,
-    ROS1_PYTHON,
-    start_master,
-)
+from bench import interpreter  # noqa: E402 -- after the path is set
+from bench.bench_pubsub import API_ROSPY, API_ROSX, start_master  # noqa: E402
+from bench.interpreter import ROS1_PYTHON  # noqa: E402
 
 # What publisher and subscriber share: the topic's class and the callback that records each
 # message's place in its burst and latency (linear.x holds the stamp, linear.y the place; -1
@@ -274,11 +271,13 @@ def main() -> None:
         "--one-process", action="store_true", help="each subscriber in its publisher's process"
     )
     parser.add_argument("--rounds", type=int, default=5, help="rounds the run is cut into")
+    interpreter.add_option(parser)
     args = parser.parse_args()
     if args.rounds < 1 or args.bursts < args.rounds:
         parser.error("--rounds: from 1 to the number of bursts")
     if args.against is not None and not (args.against / "rosx" / "node").is_dir():
         parser.error(f"--against: no rosx checkout at {args.against}")
+    interpreter.run_on(args.python)
     roots: list[tuple[str, Path | None]] = []
     if Path(ROS1_PYTHON).exists():
         roots.append(("rospy", None))

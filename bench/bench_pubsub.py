@@ -41,7 +41,10 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-ROS1_PYTHON = os.environ.get("ROS1_PYTHON", "/usr/bin/python3")
+sys.path.insert(0, str(ROOT))
+
+from bench import interpreter  # noqa: E402 -- after the path is set
+from bench.interpreter import ROS1_PYTHON  # noqa: E402
 
 # The worker scripts are the same for both libraries: `api` makes a node, a publisher, a
 # subscriber and the message classes, with rospy or with rosx.node.
@@ -639,7 +642,9 @@ def main() -> None:
     parser.add_argument(
         "--fast-rounds", type=int, default=1, help="rounds of the floods and fan-out cases"
     )
+    interpreter.add_option(parser)
     args = parser.parse_args()
+    interpreter.run_on(args.python)
     scale = 0.2 if args.quick else 1.0
     small, latency, images = int(200_000 * scale), int(3000 * scale), int(1000 * scale)
     warmup = latency // 6

@@ -31,6 +31,7 @@ from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
+from bench import interpreter
 from tests.support.procs import free_port, port_open, running, wait_for
 from tests.support.ros1 import ROS1_PYTHON, ros1_available, ros1_environ
 
@@ -151,11 +152,16 @@ def main() -> int:
     parser.add_argument("--runs", type=int, default=11)
     parser.add_argument("--master", choices=["ros1", "rosx", "both"], default="both")
     parser.add_argument("--only", default="", help="only the commands containing this text")
+    interpreter.add_option(parser)
     options = parser.parse_args()
     if not ros1_available():
         print('ROS 1 reference not installed: eval "$(../shared/tools/ros1-reference)"')
         return 1
-    rosx = shutil.which("rosx") or str(Path(sys.executable).parent / "rosx")
+    interpreter.run_on(options.python)
+    # The console script of the Python that runs this bench: the one `--python` chose.
+    rosx = str(Path(sys.executable).parent / "rosx")
+    if not Path(rosx).exists():
+        rosx = shutil.which("rosx") or rosx
     kinds = ["ros1", "rosx"] if options.master == "both" else [options.master]
     # A script's "#!/usr/bin/env python3" is then Debian's Python, as on a ROS 1 machine.
     base = ros1_environ(PATH=f"{Path(ROS1_PYTHON).parent}{os.pathsep}{os.environ['PATH']}")
