@@ -6,8 +6,8 @@ optimization; a Python built by pyenv (this machine's 3.11.7) links ``libpython`
 library, without either, and runs the same code at about half the speed (`bench_codec.py`: a
 Twist serialized by rosx in 0.51 µs there, 0.27 µs on Debian's). So by default rosx runs on
 ROS 1's own interpreter, in a virtual environment made from it with this checkout installed
-(editable), as pipx installs rosx on Debian and Ubuntu: the figures then compare the
-libraries, not the interpreters.
+(editable, with the test extras some benches import), as pipx installs rosx on Debian and
+Ubuntu: the figures then compare the libraries, not the interpreters.
 
 ``--python current`` keeps the Python the bench was started with; ``--python PATH`` names one.
 The environment is kept in ``$XDG_CACHE_HOME/rosx-bench`` (else ``~/.cache/rosx-bench``) and
@@ -82,7 +82,7 @@ def _environment(base: str) -> Path:
     venv = Path(cache, "rosx-bench", f"venv-{key}")
     python = venv / "bin" / "python"
     mine = str(ROOT / "rosx" / "__init__.py")
-    probe = [str(python), "-c", f"import rosx, sys; sys.exit(rosx.__file__ != {mine!r})"]
+    probe = [str(python), "-c", f"import rosx, pytest, sys; sys.exit(rosx.__file__ != {mine!r})"]
     if python.exists():
         found = subprocess.run(probe, capture_output=True, cwd="/", check=False)
         if found.returncode == 0:
@@ -90,7 +90,7 @@ def _environment(base: str) -> Path:
     print(f"(making a virtual environment of {base} with rosx in {venv})", file=sys.stderr)
     for step in (
         [base, "-m", "venv", "--clear", str(venv)],
-        [str(python), "-m", "pip", "install", "-q", "-e", str(ROOT)],
+        [str(python), "-m", "pip", "install", "-q", "-e", f"{ROOT}[test]"],
     ):
         done = subprocess.run(step, capture_output=True, text=True, check=False)
         if done.returncode != 0:
