@@ -14,7 +14,8 @@ with rosx under this Python, and prints:
   socket again with the receiving thread given the short time slice rosx's readers ask for
   (`rosx.node.slices`), the floor under rosx's own design;
 * 1 MiB messages (``sensor_msgs/Image``) and 10 MiB ``sensor_msgs/PointCloud2``: bytes/s
-  delivered, several rounds;
+  delivered, several rounds; and the floor under them, a bare Python sender and receiver
+  moving frames of that size over a Unix socket (the kernel's copies, nothing else);
 * fan-out and fan-in: one publisher to 10 subscriber processes and 10 publishers to one, Twist
   and 1 MiB images: delivered msgs/s or bytes/s summed over subscribers, and the slowest
   subscriber's rate;
@@ -291,6 +292,37 @@ print(json.dumps({'p50': lat[len(lat) // 2] * 1e6, 'p99': lat[int(len(lat) * 0.9
 """
 
 
+# The floor under the large-message cases: a bare Python sender process and receiver, no
+# library, over a Unix socket with rosx's send buffer; each frame read whole into one buffer
+# (the kernel's two copies, no serializing or decoding). Rate from the first frame read to
+# the last, as the subscribers measure theirs.
+FLOOR_BULK = """
+import json, os, socket, sys, time
+from rosx.node.unixros import SEND_BUFFER
+size, count = int(sys.argv[1]), int(sys.argv[2])
+sender, receiver = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
+sender.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, SEND_BUFFER)
+if os.fork() == 0:
+    receiver.close()
+    frame = bytes(size)
+    for _ in range(count):
+        sender.sendall(frame)
+    os._exit(0)
+sender.close()
+view = memoryview(bytearray(size))
+first = 0.0
+for i in range(count):
+    got = 0
+    while got < size:
+        got += receiver.recv_into(view[got:])
+    if i == 0:
+        first = time.perf_counter()
+span = time.perf_counter() - first
+os.wait()
+print(json.dumps({'bytes_rate': size * (count - 1) / span}))
+"""
+
+
 def free_port() -> int:
     with socket.socket() as sock:
         sock.bind(("127.0.0.1", 0))
@@ -385,6 +417,22 @@ def run_floor(family: str, count: int, period: float, warmup: int) -> dict[str, 
     no library."""
     done = subprocess.run(
         [sys.executable, "-c", FLOOR, family, str(count), str(period), str(warmup)],
+        env=dict(os.environ, PYTHONPATH=str(ROOT)),
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
+    )
+    result: dict[str, float] = json.loads(done.stdout.strip().splitlines()[-1])
+    return result
+
+
+def run_bulk_floor(kind: str, count: int) -> dict[str, float]:
+    """The floor under the large-message cases (``kind`` ``image`` or ``cloud``): bare Unix
+    sockets moving frames of that size, no library."""
+    size = {"image": 1 << 20, "cloud": 10 << 20}[kind]
+    done = subprocess.run(
+        [sys.executable, "-c", FLOOR_BULK, str(size), str(count)],
         env=dict(os.environ, PYTHONPATH=str(ROOT)),
         capture_output=True,
         text=True,
@@ -580,13 +628,40 @@ MEDIAN_FIELDS = (
 )
 
 
+def merged_rounds(runs: dict[str, list[dict[str, float]]], key: str) -> dict[str, dict[str, float]]:
+    """Each library's figures over its rounds: the medians of `MEDIAN_FIELDS`, and the rounds'
+    values of ``key`` (and of the p99, for latency)."""
+    merged: dict[str, dict[str, float]] = {}
+    for lib, results in runs.items():
+        res = dict(results[-1])
+        for field in MEDIAN_FIELDS:
+            if field in res:
+                res[field] = median([r[field] for r in results])
+        if key == "p50" and not lib.startswith("floor-"):
+            res["p99_rounds"] = [r["p99"] for r in results]  # type: ignore[assignment]
+        scale_key = 2**30 if key == "bytes_rate" else 1
+        res["rounds"] = [  # type: ignore[assignment]
+            round(r[key] / scale_key, 2) if key == "bytes_rate" else round(r[key]) for r in results
+        ]
+        merged[lib] = res
+    return merged
+
+
 def print_rows(rows: list[Row]) -> None:
     """Print the two-process cases (``rosx-tcp``: rosx over TCPROS, for reference)."""
     for title, by_lib, key in rows:
         print(title)
         ros, rx = by_lib["rospy"], by_lib["rosx"]
         for lib, res in by_lib.items():
-            if lib.startswith("floor-"):  # bare sockets: latency only
+            if lib.startswith("floor-") and key == "bytes_rate":
+                rate = res["bytes_rate"] / 2**30
+                print(
+                    f"  {lib}: {rate:.2f} GiB/s"
+                    f" (median of {len(res['rounds'])}: {res['rounds']}),"  # type: ignore[arg-type]
+                    f" rosx {rx['bytes_rate'] / res['bytes_rate']:.2f} x of it"
+                )
+                continue
+            if lib.startswith("floor-"):  # bare sockets: latency
                 print(
                     f"  {lib}: latency p50 {res['p50']:.0f} us p99 {res['p99']:.0f} us "
                     f"(median of {len(res['rounds'])}: {res['rounds']}), "  # type: ignore[arg-type]
@@ -780,11 +855,16 @@ def main() -> None:
             libs: tuple[str, ...] = ("rospy", "rosx")
             if name in ("latency", "image"):
                 libs = (*libs, "rosx-tcp")
+            if name == "image":
+                libs = (*libs, "floor-unix")
             if name == "latency":
                 libs = (*libs, "floor-unix", "floor-unix-slice", "floor-tcp")
             runs: dict[str, list[dict[str, float]]] = {lib: [] for lib in libs}
             for _ in range(rounds if name in ("latency", "image") else fast_rounds):
                 for lib, results in runs.items():
+                    if lib.startswith("floor-") and name == "image":
+                        results.append(run_bulk_floor(kind, count))
+                        continue
                     if lib.startswith("floor-"):
                         results.append(run_floor(lib[6:], count, period, warmup))
                         continue
@@ -802,21 +882,7 @@ def main() -> None:
                             subscribers=nsubs,
                         )
                     )
-            merged: dict[str, dict[str, float]] = {}
-            for lib in libs:
-                res = dict(runs[lib][-1])
-                for field in MEDIAN_FIELDS:
-                    if field in res:
-                        res[field] = median([r[field] for r in runs[lib]])
-                if key == "p50" and not lib.startswith("floor-"):
-                    res["p99_rounds"] = [r["p99"] for r in runs[lib]]  # type: ignore[assignment]
-                scale_key = 2**30 if key == "bytes_rate" else 1
-                res["rounds"] = [  # type: ignore[assignment]
-                    round(r[key] / scale_key, 2) if key == "bytes_rate" else round(r[key])
-                    for r in runs[lib]
-                ]
-                merged[lib] = res
-            rows.append((title, merged, key))
+            rows.append((title, merged_rounds(runs, key), key))
     finally:
         proc.terminate()
         proc.wait()
