@@ -415,24 +415,19 @@ def run_case(
 def run_floor(family: str, count: int, period: float, warmup: int) -> dict[str, float]:
     """The floor under the latency cases: bare sockets (``unix``, ``unix-slice`` or ``tcp``),
     no library."""
-    done = subprocess.run(
-        [sys.executable, "-c", FLOOR, family, str(count), str(period), str(warmup)],
-        env=dict(os.environ, PYTHONPATH=str(ROOT)),
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=True,
-    )
-    result: dict[str, float] = json.loads(done.stdout.strip().splitlines()[-1])
-    return result
+    return run_script(FLOOR, family, count, period, warmup)
 
 
 def run_bulk_floor(kind: str, count: int) -> dict[str, float]:
     """The floor under the large-message cases (``kind`` ``image`` or ``cloud``): bare Unix
     sockets moving frames of that size, no library."""
-    size = {"image": 1 << 20, "cloud": 10 << 20}[kind]
+    return run_script(FLOOR_BULK, {"image": 1 << 20, "cloud": 10 << 20}[kind], count)
+
+
+def run_script(script: str, *argv: object) -> dict[str, float]:
+    """What ``script`` (run by this Python, this checkout importable) prints last, as JSON."""
     done = subprocess.run(
-        [sys.executable, "-c", FLOOR_BULK, str(size), str(count)],
+        [sys.executable, "-c", script, *map(str, argv)],
         env=dict(os.environ, PYTHONPATH=str(ROOT)),
         capture_output=True,
         text=True,
