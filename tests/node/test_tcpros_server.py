@@ -68,6 +68,12 @@ def on_loop(io: LoopThread, call: Callable[[], T]) -> T:
     return io.run(run(), timeout=10)
 
 
+async def turns(count: int) -> None:
+    """Let the loop run ``count`` more turns."""
+    for _ in range(count):
+        await asyncio.sleep(0)
+
+
 def test_every_waiting_connection_is_taken_over(io: LoopThread, taker: Taker) -> None:
     server = TcprosServer(io, taker)
     port = on_loop(io, lambda: server.start("127.0.0.1"))
@@ -102,8 +108,7 @@ def test_a_connection_arriving_as_the_server_closes_is_dropped_quietly(
     try:
         on_loop(io, connect_then_close)
         # A few more turns of the loop, for anything the close left scheduled.
-        for _ in range(5):
-            io.run(asyncio.sleep(0.01), timeout=10)
+        io.run(turns(5), timeout=10)
         assert [r.getMessage() for r in caplog.records if r.levelno >= logging.ERROR] == []
         assert taker.taken == []
         # The connection never accepted is reset with the listener.
