@@ -7,7 +7,7 @@ affected, since ROS 1 hashes neither comments nor layout.
 
 Importing rosbags' store costs a command about 60 ms (hundreds of dataclasses), more than the
 rest of ``rosmsg show`` or of a rospy script's start-up. So the texts, once built, are kept in
-the user's cache folder (``$XDG_CACHE_HOME/rosx``, else ``~/.cache/rosx``) as one
+rosx's cache folder (`rosx.cache`: ``$XDG_CACHE_HOME/rosx``, else ``~/.cache/rosx``) as one
 `marshal` file per rosbags install and Python version, named after and tagged with the path,
 size and time of rosbags' store module and Python's version: virtual environments sharing the
 folder each keep their own, and another rosbags or Python builds its file anew. Writing one
@@ -22,6 +22,8 @@ import contextlib
 import os
 from functools import cache
 from pathlib import Path
+
+from rosx.cache import cache_folder
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -82,11 +84,11 @@ def _cache_path(tag: Tag) -> Path | None:
     """Where the texts of ``tag``'s rosbags and Python are kept (None: no usable folder)."""
     import zlib  # noqa: PLC0415
 
-    folder = os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache")  # noqa: PTH111
-    if not Path(folder).is_absolute():
+    folder = cache_folder(os.environ)
+    if folder is None:
         return None
     key = zlib.crc32(repr(tag).encode())
-    return Path(folder, "rosx", f"{_CACHE_STEM}-py{tag[3]}.{tag[4]}-{key:08x}.marshal")
+    return folder / f"{_CACHE_STEM}-py{tag[3]}.{tag[4]}-{key:08x}.marshal"
 
 
 def _read_cache(path: Path, tag: Tag) -> dict[str, str] | None:

@@ -6,12 +6,12 @@ a program finds them: ``timeout -s INT 3 rostopic hz …``, ``watch rosnode list
 `write_commands` writes one program per name, a ``#!/bin/sh`` line and
 ``exec <rosx> NAME "$@"``, and ``rosx shell-init`` puts their folder in front of ``PATH``.
 
-The folder (`command_folder`) is in the user's cache folder (``$XDG_CACHE_HOME/rosx``, else
-``~/.cache/rosx``, where `rosx.msg.standard` keeps its cache too), named after a checksum of how
-rosx is run (``~/.cache/rosx/bin-1a2b3c4d/``): each install (virtual environment) has its own,
-and every shell of one install shares it. A file is written only when it is missing or different,
-under a temporary name then renamed, so a program starting meanwhile runs the old file or the
-new one, never half of one; files of names no longer given are removed.
+The folder (`command_folder`) is in rosx's cache folder (`rosx.cache`:
+``$XDG_CACHE_HOME/rosx``, else ``~/.cache/rosx``), named after a checksum of how rosx is run
+(``~/.cache/rosx/bin-1a2b3c4d/``): each install (virtual environment) has its own, and every
+shell of one install shares it. A file is written only when it is missing or different, under a
+temporary name then renamed, so a program starting meanwhile runs the old file or the new one,
+never half of one; files of names no longer given are removed.
 
 Everything takes the environment as a mapping; nothing here reads `os.environ`.
 """
@@ -22,6 +22,8 @@ import contextlib
 import os
 from pathlib import Path
 from typing import TYPE_CHECKING
+
+from rosx.cache import cache_folder
 
 if TYPE_CHECKING:
     from collections.abc import Iterable, Mapping
@@ -35,13 +37,10 @@ def command_folder(environ: Mapping[str, str], rosx: str) -> Path | None:
     environment names no usable cache folder."""
     import zlib  # noqa: PLC0415 - only shell-init needs it
 
-    cache = environ.get("XDG_CACHE_HOME", "")
-    if not Path(cache).is_absolute():  # the XDG spec: a relative path is to be ignored
-        home = environ.get("HOME") or os.path.expanduser("~")  # noqa: PTH111 - HOME may be unset
-        if not Path(home).is_absolute():
-            return None
-        cache = str(Path(home, ".cache"))
-    return Path(cache, "rosx", f"bin-{zlib.crc32(rosx.encode()):08x}")
+    folder = cache_folder(environ)
+    if folder is None:
+        return None
+    return folder / f"bin-{zlib.crc32(rosx.encode()):08x}"
 
 
 def command_script(rosx: str, name: str) -> str:

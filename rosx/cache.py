@@ -1,0 +1,29 @@
+"""rosx's folder in the user's cache: ``$XDG_CACHE_HOME/rosx``, else ``~/.cache/rosx``.
+
+The XDG Base Directory rules: a relative ``XDG_CACHE_HOME`` is ignored. The standard message
+types' texts (`rosx.msg.standard`) and the programs of ``rosx shell-init``
+(`rosx.workspace.path_commands`) are kept there.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+TYPE_CHECKING = False  # not typing's: a short command here must not import it
+if TYPE_CHECKING:
+    from collections.abc import Mapping
+
+
+def cache_folder(environ: Mapping[str, str]) -> Path | None:
+    """rosx's cache folder for the environment ``environ``; None when it names no absolute one."""
+    cache = environ.get("XDG_CACHE_HOME", "")
+    if not os.path.isabs(cache):  # noqa: PTH117 - no Path made for a value thrown away
+        home = environ.get("HOME") or os.path.expanduser("~")  # noqa: PTH111 - HOME may be unset
+        if not os.path.isabs(home):  # noqa: PTH117
+            return None
+        cache = os.path.join(home, ".cache")  # noqa: PTH118
+    return Path(cache, "rosx")
+
+
+__all__ = ["cache_folder"]
