@@ -53,7 +53,7 @@ with Node('bench_talker') as node:
     began = time.perf_counter()
     for i in range(count):
         pub.publish(msg)
-    while any(l.stream.queued for l in pub.publication.links):
+    while not pub.delivered_to():
         time.sleep(0.001)
     print(time.perf_counter() - began, flush=True)
     time.sleep(0.5)

@@ -59,20 +59,6 @@ DRAIN_TIMEOUT = 30.0
 _WARN_PERIOD = 5.0
 
 
-def _pending_bytes(sock: Any) -> int:
-    """Bytes waiting in ``sock``'s receive buffer (0 when unknown)."""
-    if sock is None:
-        return 0
-    try:
-        import fcntl  # noqa: PLC0415
-        import termios  # noqa: PLC0415
-
-        raw = fcntl.ioctl(sock.fileno(), termios.FIONREAD, b"\0\0\0\0")
-    except (ImportError, OSError, ValueError):
-        return 0
-    return int.from_bytes(raw, "little")
-
-
 class RecordOptions:
     """What ``rosbag record`` was asked to do (see the module's contract)."""
 
@@ -210,26 +196,14 @@ class Recorder:
         """
         self._closing = True
         subscribers = list(self._subscribers.values())
-        receivers = [sub.subscription.receiver for sub in subscribers]
-        # What had reached this host when asked to stop: the bytes each socket holds.
-        targets = []
-        for sub in subscribers:
-            for stream in list(sub.subscription.streams.values()):
-                targets.append((stream, stream.bytes_received + _pending_bytes(stream.sock)))
+        # What had reached this host when asked to stop (read, or in each socket's buffer).
+        drains = [sub.drain() for sub in subscribers]
         deadline = time.monotonic() + DRAIN_TIMEOUT
-
-        def drained() -> bool:
-            return all(r.received <= r.handled for r in receivers) and all(
-                stream.closed or stream.bytes_received >= target for stream, target in targets
-            )
-
-        while time.monotonic() < deadline and not drained():
+        while time.monotonic() < deadline and not all(drain.done() for drain in drains):
             time.sleep(0.01)
         for sub in subscribers:
-            subscription = sub.subscription
-            for stream in list(subscription.streams.values()):
-                subscription.receiver.detach(stream)
-        while time.monotonic() < deadline and any(r.received > r.handled for r in receivers):
+            sub.detach()
+        while time.monotonic() < deadline and not all(sub.caught_up() for sub in subscribers):
             time.sleep(0.01)
         for sub in subscribers:
             with contextlib.suppress(Exception):

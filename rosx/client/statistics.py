@@ -23,8 +23,7 @@ from rosx.client.params import get_param
 from rosx.node.stats import StatisticsWindow, WindowReport, WindowSettings
 
 if TYPE_CHECKING:
-    from rosx.client.topics import Publisher
-    from rosx.node.subscription import Subscription
+    from rosx.node.handles import Publisher, Subscriber
 
 #: Topics whose subscriptions are never measured.
 UNMEASURED = ("/clock", "/statistics")
@@ -59,25 +58,24 @@ def settings() -> WindowSettings:
     )
 
 
-def _statistics_publisher() -> Publisher:
+def _statistics_publisher() -> Publisher | None:
     global _publisher  # noqa: PLW0603 - one /statistics publisher per process, made on first use
-    from rosx.client.topics import Publisher  # noqa: PLC0415 - topics imports this module
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - on the first report
 
     node = state.CLIENT.node
+    if node is None:  # shut down meanwhile
+        return None
     with _lock:
         if _publisher is None or _publisher[0] is not node:
-            _publisher = (
-                node,
-                Publisher(STATISTICS_TOPIC, get_message_class(_TYPE), queue_size=10),
-            )
+            cls = get_message_class(_TYPE)
+            _publisher = (node, node.advertise(STATISTICS_TOPIC, cls, queue_size=10))
         return _publisher[1]
 
 
 class SubscriptionStatistics:
     """The windows of one subscription, one per publishing node; called with each message."""
 
-    def __init__(self, subscription: Subscription, node_name: str, window: WindowSettings) -> None:
+    def __init__(self, subscription: Subscriber, node_name: str, window: WindowSettings) -> None:
         self.subscription = subscription
         self.node_name = node_name
         self.window = window
@@ -101,7 +99,9 @@ class SubscriptionStatistics:
             stamp, seq = header.stamp.to_nsec(), header.seq
         report = window.arrived(now, self.subscription.bytes_from(publisher), stamp, seq)
         if report is not None:
-            _statistics_publisher().publish(self._message(publisher, report))
+            statistics = _statistics_publisher()
+            if statistics is not None:
+                statistics.publish(self._message(publisher, report))
 
     def _message(self, publisher: str, r: WindowReport) -> Any:
         from rosx.client.timing import Duration, Time  # noqa: PLC0415
@@ -109,7 +109,7 @@ class SubscriptionStatistics:
 
         d = Duration.from_nsec
         return get_message_class(_TYPE)(
-            topic=self.subscription.topic,
+            topic=self.subscription.name,
             node_pub=publisher,
             node_sub=self.node_name,
             window_start=Time.from_nsec(r.window_start),
@@ -126,11 +126,12 @@ class SubscriptionStatistics:
         )
 
 
-def watch(subscription: Subscription, node_name: str) -> None:
-    """Measure ``subscription`` (a node's new subscription) if statistics are enabled."""
-    if subscription.topic in UNMEASURED or not enabled():
+def watch(subscriber: Subscriber, node_name: str) -> None:
+    """Measure the topic of ``subscriber`` (a node's first subscriber of it) if statistics are
+    enabled."""
+    if subscriber.name in UNMEASURED or not enabled():
         return
-    subscription.add_monitor(SubscriptionStatistics(subscription, node_name, settings()))
+    subscriber.add_monitor(SubscriptionStatistics(subscriber, node_name, settings()))
 
 
 __all__ = ["STATISTICS_TOPIC", "SubscriptionStatistics", "enabled", "settings", "watch"]

@@ -146,7 +146,7 @@ class Publisher(_Topic):
                 self.impl = impl
                 self.resolved_name = self.name = impl.name
                 if self.subscriber_listener is not None:
-                    impl.publication.add_watcher(_ListenerWatcher(self, self.subscriber_listener))
+                    impl.add_watcher(_ListenerWatcher(self, self.subscriber_listener))
                 return
         impl.unregister()
 
@@ -231,8 +231,8 @@ class Subscriber(_Topic):
             queue_size=self.queue_size,
             tcp_nodelay=self.tcp_nodelay,
         )
-        if impl.subscription.callback_count == 1:  # the node's first subscriber of the topic
-            statistics.watch(impl.subscription, node.name)
+        if impl.callback_count == 1:  # the node's first subscriber of the topic
+            statistics.watch(impl, node.name)
         with self._lock:
             if not self._closed:
                 self.impl = impl

@@ -4,6 +4,12 @@ Several handles may share one topic in a node, as in rospy: publishers of a topi
 `Publication` (and its connections); subscribers share its `Subscription` (its connections,
 its queue and the threads that run their callbacks). The topic is unregistered from the master
 when its last handle is.
+
+A handle is the door to its topic or service for tools and libraries: what they need of the
+connections (who has been sent what, stopping a subscription without losing what arrived) is a
+method here, so nothing above the node runtime handles links, streams or sockets. Each handle
+is given its release by the node that made it (a closure), so it calls nothing private of the
+node.
 """
 
 from __future__ import annotations
@@ -14,24 +20,34 @@ from rosx.node.publication import serialize_frame
 from rosx.wire.framing import length_prefix
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+    from typing import Any
+
     from rosx.msg.codec.message import Message
     from rosx.node.node import Node
-    from rosx.node.publication import Publication
+    from rosx.node.publication import PeerWatcher, Publication
     from rosx.node.receiver import Entry
     from rosx.node.service import ServiceServer
-    from rosx.node.subscription import Subscription
+    from rosx.node.subscription import Drain, Subscription
 
 
 class Publisher:
     """Publishes one topic; `publish` may be called from any thread."""
 
-    def __init__(self, node: Node, publication: Publication, data_class: type[Message]) -> None:
+    def __init__(
+        self,
+        node: Node,
+        publication: Publication,
+        data_class: type[Message],
+        release: Callable[[], None],
+    ) -> None:
         self.node = node
         self.publication = publication
         self.name = publication.topic
         self.type = publication.info.type
         self.data_class = data_class
         self.closed = False
+        self._release = release
 
     def publish(self, msg: Message) -> None:
         """Send ``msg`` to every subscriber (serialized once). Does nothing once unregistered.
@@ -53,11 +69,21 @@ class Publisher:
         """Subscribers currently connected."""
         return self.publication.connection_count()
 
+    def delivered_to(self) -> set[str]:
+        """The subscribers (caller ids) that have every message published so far: a socket's
+        are with the kernel, which delivers them even after this node closes the connection."""
+        return self.publication.delivered_to()
+
+    def add_watcher(self, watcher: PeerWatcher) -> None:
+        """Tell ``watcher`` of the subscribers that connect and leave from now on (rospy's
+        ``SubscribeListener``); it is called on the thread that saw the change."""
+        self.publication.add_watcher(watcher)
+
     def unregister(self) -> None:
         """Stop publishing through this handle (the topic goes when its last handle does)."""
         if not self.closed:
             self.closed = True
-            self.node._release_publication(self.publication)
+            self._release()
 
 
 class Subscriber:
@@ -69,6 +95,7 @@ class Subscriber:
         subscription: Subscription,
         entry: Entry,
         data_class: type[Message] | None,
+        release: Callable[[], None],
     ) -> None:
         self.node = node
         self.subscription = subscription
@@ -77,33 +104,63 @@ class Subscriber:
         self.type = subscription.type
         self.data_class = data_class
         self.closed = False
+        self._release = release
 
     def get_num_connections(self) -> int:
         """Publishers currently connected."""
         return self.subscription.connection_count()
 
+    @property
+    def callback_count(self) -> int:
+        """Callbacks of the topic's subscribers in this node (this one included)."""
+        return self.subscription.callback_count
+
+    def add_monitor(self, callback: Callable[[Any], object]) -> None:
+        """Have ``callback`` see every message of the topic before the subscribers' callbacks
+        do; it goes with the topic's last subscriber."""
+        self.subscription.add_monitor(callback)
+
+    def bytes_from(self, callerid: str) -> int:
+        """Bytes received so far from the publisher node ``callerid``."""
+        return self.subscription.bytes_from(callerid)
+
+    def drain(self) -> Drain:
+        """What has reached this host for the topic so far (read, or in a socket's buffer):
+        its ``done()`` is true once the callbacks have had it all."""
+        return self.subscription.drain()
+
+    def detach(self) -> None:
+        """Stop reading the topic's connections; what was read still reaches the callbacks
+        (`caught_up` says when), and `unregister` follows."""
+        self.subscription.detach()
+
+    def caught_up(self) -> bool:
+        """Whether the callbacks have run for every message of the topic read so far."""
+        return self.subscription.caught_up()
+
     def unregister(self) -> None:
         """Stop this callback (the topic is unsubscribed when its last subscriber goes)."""
         if not self.closed:
             self.closed = True
-            self.node._release_subscriber(self)
+            self._release()
 
 
 class ServiceHandle:
     """A service this node provides."""
 
-    def __init__(self, node: Node, server: ServiceServer) -> None:
+    def __init__(self, node: Node, server: ServiceServer, release: Callable[[], None]) -> None:
         self.node = node
         self.server = server
         self.name = server.name
         self.uri = server.uri
         self.closed = False
+        self._release = release
 
     def shutdown(self) -> None:
         """Stop providing the service and unregister it from the master."""
         if not self.closed:
             self.closed = True
-            self.node._release_service(self.server)
+            self._release()
 
     unregister = shutdown
 

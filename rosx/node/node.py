@@ -54,6 +54,7 @@ if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
 
     from rosx.msg.codec.message import Message, ServiceDefinition
+    from rosx.node.receiver import Entry
     from rosx.transport.loop_thread import LoopThread
     from rosx.wire.framing import FrameReader
 
@@ -311,7 +312,9 @@ class Node:
         publication = self._publication(info, queue_size, data_class._has_header)
         if headers:
             publication.add_headers(headers)
-        return Publisher(self, publication, data_class)
+        return Publisher(
+            self, publication, data_class, lambda: self._release_publication(publication)
+        )
 
     def advertise_raw(
         self,
@@ -327,7 +330,8 @@ class Node:
         announced with the given type, md5sum and definition (what ``rosbag play`` replays)."""
         info = PublicationInfo(self.resolve(topic), msg_type, md5sum, message_definition, latch)
         raw = cast("type[Message]", RawMessage)  # publishes RawMessage objects as they are
-        return Publisher(self, self._publication(info, queue_size, False), raw)
+        publication = self._publication(info, queue_size, False)
+        return Publisher(self, publication, raw, lambda: self._release_publication(publication))
 
     def _publication(
         self, info: PublicationInfo, queue_size: int | None, has_header: bool
@@ -410,7 +414,13 @@ class Node:
                 )
                 self.subscriptions[name] = subscription
         entry = subscription.add(callback, Subscription.decoder(data_class))
-        handle = Subscriber(self, subscription, entry, data_class)
+        handle = Subscriber(
+            self,
+            subscription,
+            entry,
+            data_class,
+            lambda: self._release_subscriber(subscription, entry),
+        )
         if new:
             mark = subscription.updates
             uris = self.master.call("registerSubscriber", name, subscription.type, self.uri)
@@ -434,9 +444,8 @@ class Node:
         assert self._aclient is not None
         return reply_value(await self._aclient.call(uri, method, *params))
 
-    def _release_subscriber(self, handle: Subscriber) -> None:
-        subscription = handle.subscription
-        subscription.remove(handle.entry)
+    def _release_subscriber(self, subscription: Subscription, entry: Entry) -> None:
+        subscription.remove(entry)
         with self._lock:
             if subscription.callback_count or (
                 self.subscriptions.get(subscription.topic) is not subscription
@@ -483,7 +492,7 @@ class Node:
         self.master.call("registerService", resolved, server.uri, self.uri)
         if self._shutdown.is_set():  # shut down meanwhile: do not leave it registered
             self._call_quietly("unregisterService", resolved, server.uri)
-        return ServiceHandle(self, server)
+        return ServiceHandle(self, server, lambda: self._release_service(server))
 
     def _release_service(self, server: ServiceServer) -> None:
         with self._lock:

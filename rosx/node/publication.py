@@ -326,6 +326,22 @@ class Publication:
         """Subscribers currently connected (in this process or not)."""
         return len(self.links) + len(self.local_links)
 
+    def delivered_to(self) -> set[str]:
+        """The subscribers (caller ids) that have the messages published so far.
+
+        A socket subscriber has them once its connection carried the header and a message and
+        has nothing left queued: the bytes are then with the kernel, which delivers them even
+        after this process closes the connection. A subscriber of this process has them once
+        one message was queued for it.
+        """
+        delivered = {
+            link.callerid
+            for link in self.links
+            if link.stream.frames_sent >= 2 and not link.stream.queued
+        }
+        delivered.update(link.callerid for link in self.local_links if link.frames_received)
+        return delivered
+
     def add_watcher(self, watcher: PeerWatcher) -> None:
         """Tell ``watcher`` of the subscribers that connect and leave from now on: it is
         called on the thread that saw the change, and must not wait."""

@@ -22,6 +22,10 @@ The contract (ROS wiki ROS/Slave_API ``publisherUpdate``, ROS/TCPROS):
 * A typed subscription decodes frames with its message class; a raw one (AnyMsg: type and
   md5sum ``*``) hands over `RawMessage` objects holding the bytes and what the publisher's
   header says about their type.
+* Stopping without losing what has arrived (``rosbag record``): `Subscription.drain` notes what
+  has reached this host so far (read, or still in each socket's buffer) and says when the
+  callbacks have had it all; `Subscription.detach` then stops reading, and
+  `Subscription.caught_up` says when what was read has been handled.
 """
 
 from __future__ import annotations
@@ -38,6 +42,7 @@ RETIRE_GRACE = 2.0
 
 if TYPE_CHECKING:
     import asyncio
+    import socket
     from collections.abc import Awaitable, Callable
     from concurrent.futures import Executor
 
@@ -108,6 +113,41 @@ def message_decoder(
     # How: a reader may run the two lines above itself (`rosx.node.receiver`).
     setattr(decode, "fresh", fresh)  # noqa: B010 - an attribute on a function
     return decode
+
+
+def _pending_bytes(sock: socket.socket | None) -> int:
+    """Bytes waiting in ``sock``'s receive buffer (0 when unknown, or without a socket)."""
+    if sock is None:
+        return 0
+    try:
+        import fcntl  # noqa: PLC0415 - POSIX only; asked when a recording stops, not before
+        import termios  # noqa: PLC0415 - as fcntl
+
+        raw = fcntl.ioctl(sock.fileno(), termios.FIONREAD, b"\0\0\0\0")
+    except (ImportError, OSError, ValueError):
+        return 0
+    return int.from_bytes(raw, "little")
+
+
+class Drain:
+    """What had reached this host for one subscription when it was made (`Subscription.drain`).
+
+    `done` is true once every connection has been read that far (or has ended) and the
+    callbacks have run for everything read.
+    """
+
+    def __init__(self, subscription: Subscription) -> None:
+        self._subscription = subscription
+        self._targets = [
+            (stream, stream.bytes_received + _pending_bytes(stream.sock))
+            for stream in list(subscription.streams.values())
+        ]
+
+    def done(self) -> bool:
+        """Whether the callbacks have had everything that had arrived."""
+        return self._subscription.caught_up() and all(
+            stream.closed or stream.bytes_received >= target for stream, target in self._targets
+        )
 
 
 class Subscription:
@@ -204,6 +244,23 @@ class Subscription:
         return sum(
             s.bytes_received for s in self.streams.values() if s.header.get("callerid") == callerid
         )
+
+    def drain(self) -> Drain:
+        """What has reached this host so far, to wait for (`Drain.done`)."""
+        return Drain(self)
+
+    def detach(self) -> None:
+        """Stop reading every connection; what was read still reaches the callbacks."""
+        for stream in list(self.streams.values()):
+            if isinstance(stream, local.LocalLink):
+                self.io.call_soon(stream.close)  # what it delivered is queued already
+            else:
+                self.receiver.detach(stream)
+
+    def caught_up(self) -> bool:
+        """Whether the callbacks have run for every message read so far."""
+        receiver = self.receiver
+        return receiver.received <= receiver.handled
 
     def _callback_failed(self, exc: BaseException, callback: Callable[[Any], object]) -> None:
         if self._on_error is not None:

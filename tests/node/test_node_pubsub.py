@@ -481,3 +481,42 @@ def test_a_watcher_hears_of_subscribers_and_publishes_to_one_alone(
     later.unregister()
     wait_for(lambda: greeter.events[-1:] == ["left, 1 remain"], what="the second to leave")
     assert greeter.events == ["came", "came", "left, 1 remain"]
+
+
+def test_delivered_to_names_the_subscribers_that_have_every_message(
+    make_node: Callable[..., Node],
+) -> None:
+    a, b = make_node("deliver_pub"), make_node("deliver_sub")
+    got: list[float] = []
+    sub = b.subscribe("/delivered", Twist, lambda m: got.append(m.linear.x))
+    pub = a.advertise("/delivered", Twist, queue_size=10)
+    wait_for(connected(pub, sub))
+    assert pub.delivered_to() == set()  # connected, sent nothing yet
+    pub.publish(twist(1))
+    wait_for(lambda: pub.delivered_to() == {"/deliver_sub"}, what="the delivery")
+    wait_for(lambda: got == [1.0])
+
+
+def test_drain_then_detach_hands_over_all_that_arrived(make_node: Callable[..., Node]) -> None:
+    a, b = make_node("drain_pub"), make_node("drain_sub")
+    gate = threading.Event()
+    got: list[float] = []
+
+    def held(msg: Any) -> None:
+        gate.wait(10)
+        got.append(msg.linear.x)
+
+    sub = b.subscribe("/drained", Twist, held, queue_size=None)
+    pub = a.advertise("/drained", Twist, queue_size=None)
+    wait_for(connected(pub, sub))
+    for i in range(50):
+        pub.publish(twist(i))
+    wait_for(lambda: pub.delivered_to() == {"/drain_sub"}, what="the messages sent")
+    drain = sub.drain()  # everything is with this host: read, or in the socket's buffer
+    assert not drain.done()  # the first callback is held
+    gate.set()
+    wait_for(drain.done, what="the drain")
+    sub.detach()
+    wait_for(sub.caught_up, what="the callbacks")
+    assert got == [float(i) for i in range(50)]
+    wait_for(lambda: sub.get_num_connections() == 0, what="the connection to end")

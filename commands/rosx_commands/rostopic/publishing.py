@@ -198,7 +198,7 @@ class Publishing:
             if current - asked >= _MASTER_POLL:
                 known = self._known_subscribers()
                 asked = current
-            if known and known <= self._delivered():
+            if known and known <= self.publisher.delivered_to():
                 return
             remaining = deadline - time.monotonic()
             if remaining <= 0 or not self.session.sleep(min(0.01, remaining)):
@@ -213,14 +213,6 @@ class Publishing:
         me = self.publisher.node.name
         topic = self.publisher.name
         return {node for name, nodes in subscribers if name == topic for node in nodes} - {me}
-
-    def _delivered(self) -> set[str]:
-        """Subscribers whose connection has carried the header and a message, none queued."""
-        return {
-            link.callerid
-            for link in self.publisher.publication.links
-            if link.stream.frames_sent >= 2 and not link.stream.queued
-        }
 
     def _say(self, text: str) -> None:
         self.env.stdout.write(text + "\n")
