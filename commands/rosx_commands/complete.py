@@ -122,8 +122,11 @@ def _walk_files(line: _Line, package: str) -> list[Path]:
 
 
 def _executables(line: _Line, package: str) -> list[str]:
+    """What ``rosrun PACKAGE`` can run: rosx's programs and the package's executable files."""
+    from rosx.workspace.programs import program_names  # noqa: PLC0415 - rosrun's line only
+
     found = [p.name for p in _walk_files(line, package) if p.is_file() and os.access(p, os.X_OK)]
-    return sorted(set(found))
+    return sorted({*found, *program_names(package)})
 
 
 def _files(line: _Line, package: str, suffixes: tuple[str, ...] = ()) -> list[str]:
@@ -218,7 +221,9 @@ def _rosrun(line: _Line) -> list[str]:
     if line.cword == start:
         if line.current.startswith("-"):
             return ["--prefix", "--debug"]
-        return list(line.index.packages)
+        from rosx.workspace.programs import provided_packages  # noqa: PLC0415 - rosrun only
+
+        return sorted({*line.index.packages, *provided_packages()})
     if line.cword == start + 1:
         return _executables(line, line.word(start))
     return []

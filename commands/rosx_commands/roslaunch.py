@@ -417,7 +417,8 @@ def _roslaunch(argv: list[str], env: Environment) -> int:
     try:
         files, cli_args = resolve_launch_arguments(args, index)
     except LaunchError as error:
-        raise _rlexception(str(error)) from None
+        hint = _not_found_hint(args, index) if env.stderr_isatty else None
+        raise _rlexception(str(error) + (f"\n{hint}" if hint else "")) from None
     _validate(parser, opts, files)
     port = _port(parser, opts["port"])
     if opts["child_name"]:
@@ -442,6 +443,48 @@ def _roslaunch(argv: list[str], env: Environment) -> int:
     finally:
         for path in [*temporary, *([pid_file] if pid_file else [])]:
             path.unlink(missing_ok=True)
+
+
+def _not_found_hint(args: Sequence[str], index: PackageIndex) -> str | None:
+    """For a launch file not found (on a terminal): the package or file meant, or that rosx
+    does not provide the package (`rosx_commands.hints`), or the launch files it has."""
+    from rosx.names.typos import rejoined  # noqa: PLC0415 - a launch file not found
+    from rosx_commands.hints import (  # noqa: PLC0415 - a launch file not found
+        close_name,
+        known_packages,
+        unknown_package_line,
+    )
+
+    words = [a for a in args if ":=" not in a]
+    if len(words) < 2 or words[0] == "-" or words[0].endswith((".launch", ".test", ".xml")):
+        return None
+    package = words[0]
+
+    def launch_files(package: str) -> list[str]:
+        found = {
+            path.name
+            for directory in index.directories(package)
+            for path in directory.rglob("*")
+            if path.suffix in (".launch", ".test", ".xml") and path.name != "package.xml"
+        }
+        return sorted(found)
+
+    def retyped(fixed: list[str]) -> str:
+        package, *rest = fixed
+        rest = rejoined(rest, launch_files(package)) or rest
+        return " ".join(["roslaunch", package, *rest])
+
+    if package not in known_packages(index):
+        return unknown_package_line(words, index, retyped, "roslaunch")
+    names = launch_files(package)
+    fixed = rejoined(words[1:], names)
+    if fixed is None:
+        close = close_name(words[1], names)
+        fixed = [close, *words[2:]] if close else None
+    if fixed is not None:
+        return f"[roslaunch] Did you mean {fixed[0]}? ({' '.join(['roslaunch', package, *fixed])})"
+    listing = ", ".join(names) if names else "none"
+    return f"[roslaunch] the launch files of {package}: {listing}"
 
 
 def roslaunch(argv: Sequence[str], env: Environment) -> int:

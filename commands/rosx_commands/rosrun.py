@@ -8,11 +8,15 @@ and statuses are rosrun's: usage and 0 with fewer than two arguments, rospack's
 executable) and 3 for a missing executable; on a terminal, then, the executable most likely
 meant (``turtlesim node`` typed for ``turtlesim_node``).
 
+The programs rosx provides itself (`rosx.workspace.programs`: turtlesim's ``turtlesim_node``,
+roscpp_tutorials' ``talker``, ``rosrun rqt_graph rqt_graph``…) are rosx's whatever else
+``ROS_PACKAGE_PATH`` holds under the package's name. For an unknown package, on a terminal, a
+line after rospack's names the package meant or says that rosx does not provide it
+(`rosx_commands.hints`).
+
 Then, as rosrun ``exec``s the program, this process becomes it, except that a Python script
 runs with rosx's Python and ``rospy`` whatever its ``#!`` line says (``rosx run-script``), and
-that the programs rosx provides itself (turtlesim's ``turtlesim_node``, ``turtle_teleop_key``,
-``draw_square``, ``mimic``; roscpp_tutorials' ``talker``, ``listener``, ``add_two_ints_server``,
-``add_two_ints_client``; ``rosrun rostopic rostopic`` and the other ROS tools) run here.
+that rosx's own Python programs run in this process.
 """
 
 from __future__ import annotations
@@ -21,11 +25,14 @@ import os
 import shlex
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from rosx_commands.cli import run_command
 from rosx_commands.context import Environment, ExitStatus
 from rosx_commands.invocation import script_command
+
+if TYPE_CHECKING:
+    from rosx.packages.index import PackageIndex
 
 USAGE = """\
 Usage: rosrun [--prefix cmd] [--debug] PACKAGE EXECUTABLE [ARGS]
@@ -33,23 +40,6 @@ Usage: rosrun [--prefix cmd] [--debug] PACKAGE EXECUTABLE [ARGS]
   an executable named EXECUTABLE in the PACKAGE tree.
   If it finds it, it will run it with ARGS.
 """
-
-#: ``rosrun PACKAGE EXECUTABLE`` of ROS 1's tools → the rosx tool of that name.
-_TOOL_EXECUTABLES = {
-    ("rostopic", "rostopic"): "rostopic",
-    ("rosnode", "rosnode"): "rosnode",
-    ("rosmsg", "rosmsg"): "rosmsg",
-    ("rosmsg", "rossrv"): "rossrv",
-    ("rosservice", "rosservice"): "rosservice",
-    ("rosparam", "rosparam"): "rosparam",
-    ("roslaunch", "roslaunch"): "roslaunch",
-    ("rqt_graph", "rqt_graph"): "rqt_graph",
-    ("rqt_console", "rqt_console"): "rqt_console",
-    ("rqt_logger_level", "rqt_logger_level"): "rqt_logger_level",
-    ("rqt_plot", "rqt_plot"): "rqt_plot",
-    ("rqt_topic", "rqt_topic"): "rqt_topic",
-    ("rqt_gui", "rqt_gui"): "rqt",
-}
 
 
 class Launch(NamedTuple):
@@ -59,42 +49,47 @@ class Launch(NamedTuple):
     environ: dict[str, str]
 
 
-def _provided(
-    package: str, executable: str, args: list[str], env: Environment
-) -> Callable[[], int] | None:
-    """A program rosx runs in this process for ``rosrun PACKAGE EXECUTABLE``, if any."""
-    if package in ("turtlesim", "roscpp_tutorials"):
-        from rosx_turtle.executables import PROGRAMS, load  # noqa: PLC0415
-
-        if executable in PROGRAMS[package]:
-            return lambda: load(executable, package)(args, env)
-    from rosx_commands.main import TOOLS, run_tool  # noqa: PLC0415
-
-    tool = _TOOL_EXECUTABLES.get((package, executable))
-    if tool is not None and tool in TOOLS:
-        return lambda: run_tool([tool, *args], env)
-    return None
-
-
 def _suggest(
     package: str, executable: str, rest: list[str], directory: Path, env: Environment
 ) -> None:
     """On a terminal, after rosrun's error: the executable the user most likely meant."""
     if not env.stderr_isatty:
         return  # off a terminal the output stays ROS 1's, for scripts that read it
-    from rosx.workspace.executables import executable_names, suggestion  # noqa: PLC0415
+    from rosx.workspace.executables import suggestion  # noqa: PLC0415 - a name not found
 
-    known = executable_names(directory)
-    if package == "turtlesim":
-        from rosx_turtle.executables import EXECUTABLES  # noqa: PLC0415
-
-        known += EXECUTABLES
-    meant = suggestion(executable, rest, known)
+    meant = suggestion(executable, rest, _program_names(package, directory))
     if meant is None:
         return
-    args = rest[1:] if meant == f"{executable}_{rest[0] if rest else ''}" else rest
+    words = meant.count("_") - executable.count("_")
+    joined = "_".join([executable, *rest[:words]]) == meant
+    args = rest[words:] if joined else rest
     command = " ".join(["rosrun", package, meant, *args])
     env.err(f"[rosrun] Did you mean {meant}? ({command})")
+
+
+def _program_names(package: str, directory: Path | None) -> list[str]:
+    """What ``rosrun PACKAGE <name>`` can run: rosx's programs and the package's files."""
+    from rosx.workspace.executables import executable_names  # noqa: PLC0415 - hints only
+    from rosx.workspace.programs import program_names  # noqa: PLC0415 - hints only
+
+    found = executable_names(directory) if directory is not None else []
+    return sorted({*program_names(package), *found})
+
+
+def _unknown_package(words: list[str], index: PackageIndex, env: Environment) -> None:
+    """On a terminal, after rospack's error: the package meant, or what rosx lacks."""
+    if not env.stderr_isatty:
+        return  # off a terminal the output stays ROS 1's, for scripts that read it
+    from rosx.names.typos import rejoined  # noqa: PLC0415 - a package not found
+    from rosx_commands.hints import unknown_package  # noqa: PLC0415 - a package not found
+
+    def retyped(fixed: list[str]) -> str:
+        package, *rest = fixed
+        programs = _program_names(package, index.packages.get(package))
+        rest = (rejoined(rest, programs) or rest) if rest and rest[0] not in programs else rest
+        return " ".join(["rosrun", package, *rest])
+
+    unknown_package(words, index, env, retyped, "rosrun")
 
 
 def _choose(paths: list[Path], env: Environment) -> Path | None:
@@ -141,10 +136,9 @@ def _options(argv: list[str]) -> tuple[list[str], bool, list[str]] | None:
 
 def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
     """What ``rosrun ARGV…`` does: a program to become, one to run here, or an exit status."""
-    from rosx.client.script import shim_environ  # noqa: PLC0415
     from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
-    from rosx.workspace.executables import find_executables, is_python_script  # noqa: PLC0415
-    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
+    from rosx.workspace.executables import find_executables  # noqa: PLC0415 - not for -h
+    from rosx.workspace.programs import bundled_program  # noqa: PLC0415 - not for -h
 
     options = _options(argv)
     if options is None:
@@ -154,13 +148,17 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
     if executable.endswith("/"):
         env.out(f"Invalid filename:  {executable}")
         return ExitStatus.ERROR
-    provided = _provided(package, executable, rest, env)
-    if provided is not None:
-        return provided
+    bundled = bundled_program(package, executable)
+    if bundled is not None:
+        if debug:
+            env.out(f"[rosrun] Looking in rospack dir: {bundled.parent}")
+        return _start(bundled, prefix, rest, debug, env)
+    index = PackageIndex.from_environ(env.environ)
     try:
-        directory = PackageIndex.from_environ(env.environ).find(package)
+        directory = index.find(package)
     except PackageNotFoundError as error:
         env.err(str(error))
+        _unknown_package([package, executable, *rest], index, env)
         return ExitStatus.USAGE
     if debug:
         env.out(f"[rosrun] Looking in rospack dir: {directory}")
@@ -185,12 +183,26 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
         if picked is None:
             return ExitStatus.NOT_FOUND
         chosen = picked
-    path = chosen
-    environ = shim_environ(env.environ, shim_dirs())
-    command = [*script_command(), str(path)] if is_python_script(path) else [str(path)]
+    return _start(chosen, prefix, rest, debug, env)
+
+
+def _start(
+    path: Path, prefix: list[str], rest: list[str], debug: bool, env: Environment
+) -> Launch | Callable[[], int]:
+    """How ``path`` runs with ``rest``: a program to become, or, for one of rosx's own Python
+    programs without a ``--prefix``, the same run in this process (no second start-up)."""
+    from rosx.client.script import run_script, shim_environ  # noqa: PLC0415 - found a program
+    from rosx.workspace.executables import is_python_script  # noqa: PLC0415 - found a program
+    from rosx.workspace.programs import is_bundled_file  # noqa: PLC0415 - found a program
+    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415 - found a program
+
+    python = is_python_script(path)
+    command = [*script_command(), str(path)] if python else [str(path)]
     if debug:
         env.out(f"[rosrun] Running {' '.join([*prefix, *command, *rest])}")
-    return Launch([*prefix, *command, *rest], environ)
+    if python and not prefix and is_bundled_file(path):
+        return lambda: run_script(str(path), rest, stderr=env.stderr, shim_dirs=shim_dirs())
+    return Launch([*prefix, *command, *rest], shim_environ(env.environ, shim_dirs()))
 
 
 def _rosrun(argv: list[str], env: Environment) -> int:

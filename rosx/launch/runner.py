@@ -60,7 +60,8 @@ from rosx.master.client import MasterClient, MasterError, MasterUnreachable
 from rosx.names.resolution import ns_join
 from rosx.transport.address import advertised_host, http_uri, is_local_host
 from rosx.workspace import logdir
-from rosx.workspace.executables import bundled_program, is_python_script
+from rosx.workspace.executables import is_python_script
+from rosx.workspace.programs import bundled_program
 
 if TYPE_CHECKING:
     from collections.abc import Mapping, Sequence

@@ -7,10 +7,7 @@ also lists the same-named files that are not executable, which rosrun reports. L
 ``catkin_find --libexec``) it looks first in an installed package's ``lib/PKG`` folder. For a
 name not found, `suggestion` picks the executable the user most likely meant.
 
-`bundled_program` finds the programs of the packages rosx ships (turtlesim's ``turtlesim_node``,
-``mimic``…, roscpp_tutorials' in ``lib/roscpp_tutorials``, rospy_tutorials' scripts):
-they are rosx's whatever else ``ROS_PACKAGE_PATH`` holds under the same package
-name, as ``rosx rosrun turtlesim …`` runs rosx's turtlesim. ``roslaunch`` starts them from there.
+Which programs rosx itself provides is `rosx.workspace.programs`'s to say.
 
 `is_python_script` tells the scripts rosx runs with its own Python and ``rospy``, whatever their
 ``#!`` line says: a ``#!`` line naming python, or no ``#!`` line and a ``.py`` name.
@@ -92,28 +89,17 @@ def executable_names(package_dir: Path) -> list[str]:
 
 def suggestion(name: str, following: list[str], known: list[str]) -> str | None:
     """The executable a user most likely meant by ``name`` among ``known``: ``name`` joined to
-    the next argument by ``_`` (a space typed for an underscore, as in ``turtlesim node``), else
-    the closest name, if one is close."""
-    if following and f"{name}_{following[0]}" in known:
-        return f"{name}_{following[0]}"
+    the next arguments by ``_`` (spaces typed for underscores, as in ``turtle teleop key``),
+    else the closest name, if one is close."""
+    from rosx.names.typos import joined  # noqa: PLC0415 - only for a name not found
+
+    found = joined([name, *following], set(known))
+    if found is not None:
+        return found[0]
     import difflib  # noqa: PLC0415 - only for a name not found
 
     close = difflib.get_close_matches(name, known, n=1, cutoff=0.6)
     return close[0] if close else None
-
-
-def bundled_program(package: str, name: str) -> Path | None:
-    """The executable ``name`` of the package ``package`` that rosx ships, if it has one."""
-    if "/" in name:
-        return None
-    from rosx.packages.crawl import bundled_libexec, bundled_packages  # noqa: PLC0415
-
-    # As catkin's rosrun: the package's libexec folder (``lib/<package>``) first.
-    for directory in (bundled_libexec(package), bundled_packages().get(package)):
-        found = find_executables(directory, name).executables if directory else []
-        if found:
-            return found[0]
-    return None
 
 
 def is_python_script(path: Path) -> bool:
@@ -130,7 +116,6 @@ def is_python_script(path: Path) -> bool:
 
 __all__ = [
     "Search",
-    "bundled_program",
     "executable_names",
     "find_executables",
     "is_python_script",

@@ -7,7 +7,8 @@
 - `teleop`: turtle_teleop_key (`run_teleop`); `keyboard`: the terminal in raw mode.
 - `tutorials`: draw_square and mimic.
 - `roscpp`, `console`, `program`, `env`: what these programs share as roscpp-like nodes.
-- `executables`: the programs by name (``python -m rosx_turtle NAME``).
+- `executables`: ``python -m rosx_turtle NAME`` runs a program by name (the files in ``bin/``,
+  as rosrun does).
 
 Importing this package imports nothing else; numpy loads with the engine only.
 """

@@ -7,5 +7,5 @@
 
 Each prints roscpp's console lines (`rosx_turtle.console`) and takes roscpp's remapping
 arguments (`rosx_turtle.roscpp`); ``rosrun roscpp_tutorials <name>`` runs them
-(`rosx_turtle.executables`).
+(from their files in rosx's ``lib/roscpp_tutorials``).
 """

@@ -1,0 +1,183 @@
+"""The programs rosx provides: the one answer rosrun, roslaunch, completion and the hints ask.
+
+rosx ships ROS packages as Noetic installs them (`rosx.packages.crawl.PREFIX`): a package's
+files in ``share/<package>/``, its programs in ``lib/<package>/<program>`` (catkin's libexec
+folder: small Python files that start rosx's implementation, as
+``lib/roscpp_tutorials/talker``) or as executable scripts in the package folder itself
+(rospy_tutorials' ``talker.py``, turtlesim's ``bin/``). What rosx provides is read from that
+tree and nowhere else, so a package bundled tomorrow is provided at once, with no list to edit:
+
+- `bundled_program`: the file ``rosrun PACKAGE PROGRAM`` and a launch file's ``<node>`` start.
+  rosx's program wins over a same-named package on ``ROS_PACKAGE_PATH`` (a system's ROS 1
+  under ``/usr/share``): rosx's turtlesim is the one drawn in the terminal, and a C++
+  program of that package would not be rosx's.
+- `program_names`: the programs of a bundled package (completion, the typo hints).
+- `provided_packages` / `is_provided`: the packages rosx has (a ``share/`` folder with a
+  ``package.xml``, or programs in ``lib/``).
+- `lacking`: for a package rosx does not provide, the line that says so and, for the packages
+  a ROS course reaches for next (Gazebo, the TurtleBot3 packages, move_base…), what rosx has
+  instead (`COUNTERPARTS`), named only when it is there.
+- `is_bundled_file`: whether a program is one of rosx's own files (rosrun runs those in its
+  own process rather than starting Python again).
+"""
+
+from __future__ import annotations
+
+import os
+from functools import cache
+from pathlib import Path
+from typing import TYPE_CHECKING, NamedTuple
+
+from rosx.packages import crawl
+from rosx.packages.crawl import BUNDLED_MODULES, bundled_libexec, bundled_packages
+from rosx.workspace.executables import executable_names, find_executables
+
+if TYPE_CHECKING:
+    from collections.abc import Collection
+
+
+def bundled_program(package: str, name: str) -> Path | None:
+    """The program ``name`` of the package ``package`` that rosx ships, if it has one."""
+    if "/" in name or not name:
+        return None
+    # As catkin's rosrun: the package's libexec folder (``lib/<package>``) first.
+    for directory in (bundled_libexec(package), bundled_packages().get(package)):
+        found = find_executables(directory, name).executables if directory else []
+        if found:
+            return found[0]
+    return None
+
+
+def program_names(package: str) -> list[str]:
+    """The names of the programs rosx ships for ``package``, sorted (none if it has none)."""
+    names: set[str] = set()
+    for directory in (bundled_libexec(package), bundled_packages().get(package)):
+        if directory is not None:
+            names.update(executable_names(directory))
+    return sorted(names)
+
+
+@cache
+def provided_packages() -> tuple[str, ...]:
+    """The ROS packages rosx provides: bundled folders, and packages with programs in ``lib/``."""
+    try:
+        with os.scandir(crawl.PREFIX / "lib") as listing:
+            with_programs = {entry.name for entry in listing if entry.is_dir()}
+    except OSError:
+        with_programs = set()
+    return tuple(sorted(with_programs | set(bundled_packages())))
+
+
+def is_provided(package: str) -> bool:
+    """Whether rosx provides the package ``package`` (`provided_packages`)."""
+    return package in provided_packages()
+
+
+@cache
+def _bundled_roots() -> tuple[str, ...]:
+    import importlib.util  # noqa: PLC0415 - only to run a bundled program in-process
+
+    roots = [str(crawl.PREFIX.resolve())]
+    for module in BUNDLED_MODULES:
+        spec = importlib.util.find_spec(module)
+        if spec is not None and spec.origin is not None:
+            roots.append(str(Path(spec.origin).resolve().parent))
+    return tuple(root + os.sep for root in roots)
+
+
+def is_bundled_file(path: Path) -> bool:
+    """Whether ``path`` is one of the files rosx ships (not a user's or a system's program)."""
+    return str(path.resolve()).startswith(_bundled_roots())
+
+
+class Counterpart(NamedTuple):
+    """What rosx offers in place of a package it lacks: a command, shown only when the
+    program it runs is there (``requires``: a bundled ``(package, program)``, or a rosx tool
+    as ``("rosx", TOOL)``)."""
+
+    command: str
+    requires: tuple[str, str]
+
+
+_STAGE = Counterpart("rosx rosrun stage_ros stageros WORLD", ("stage_ros", "stageros"))
+_RVIZ = Counterpart("rosx rviz", ("rosx", "rviz"))
+_RQT = Counterpart("rosx rqt", ("rosx", "rqt"))
+
+#: Well-known ROS 1 packages that rosx does not provide, by name or by name prefix (ending in
+#: ``*``): what it offers instead, in order of preference.
+COUNTERPARTS: dict[str, tuple[Counterpart, ...]] = {
+    "gazebo_ros": (_STAGE,),
+    "gazebo_ros_pkgs": (_STAGE,),
+    "gazebo_plugins": (_STAGE,),
+    "gazebo": (_STAGE,),
+    "turtlebot3_gazebo": (_STAGE,),
+    "turtlebot3_fake": (_STAGE,),
+    "turtlebot3_bringup": (_STAGE,),
+    "turtlebot3_teleop": (
+        Counterpart(
+            "rosx rosrun teleop_twist_keyboard teleop_twist_keyboard.py",
+            ("teleop_twist_keyboard", "teleop_twist_keyboard.py"),
+        ),
+    ),
+    "turtlebot3_navigation": (_STAGE,),
+    "turtlebot3_slam": (_STAGE,),
+    "turtlebot3_*": (_STAGE,),
+    "stage": (_STAGE,),
+    "move_base": (_STAGE,),
+    "amcl": (_STAGE,),
+    "gmapping": (_STAGE,),
+    "slam_gmapping": (_STAGE,),
+    "navigation": (_STAGE,),
+    "rviz_visual_tools": (_RVIZ,),
+    "rqt_tf_tree": (Counterpart("rosx rqt_tf_tree", ("rosx", "rqt_tf_tree")),),
+    "rqt_bag": (Counterpart("rosx rosbag info BAG", ("rosx", "rosbag")),),
+    "rqt_publisher": (Counterpart("rosx rostopic pub TOPIC TYPE", ("rosx", "rostopic")),),
+    "rqt_service_caller": (Counterpart("rosx rosservice call SERVICE", ("rosx", "rosservice")),),
+    "rqt_reconfigure": (Counterpart("rosx rosparam set NAME VALUE", ("rosx", "rosparam")),),
+    "rqt_*": (_RQT,),
+}
+
+
+def _counterparts(package: str) -> tuple[Counterpart, ...]:
+    found = COUNTERPARTS.get(package)
+    if found is not None:
+        return found
+    for pattern, counterparts in COUNTERPARTS.items():
+        if pattern.endswith("*") and package.startswith(pattern[:-1]):
+            return counterparts
+    return ()
+
+
+def _available(counterpart: Counterpart, tools: Collection[str]) -> bool:
+    owner, name = counterpart.requires
+    if owner == "rosx":
+        return name in tools
+    return bundled_program(owner, name) is not None
+
+
+def lacking(package: str, tools: Collection[str] = ()) -> str | None:
+    """The line saying that rosx does not provide ``package``, with what it has instead; None
+    when rosx provides it.
+
+    Args:
+        package: the package asked for.
+        tools: the rosx commands there are (``rosx TOOL``), for the counterparts that are tools.
+    """
+    if is_provided(package):
+        return None
+    offered = [c.command for c in _counterparts(package) if _available(c, tools)]
+    if offered:
+        return f"[rosx] {package} is not part of rosx; rosx has instead: {' or '.join(offered)}"
+    return f"[rosx] {package} is not part of rosx ('rosx --help' lists the packages it provides)"
+
+
+__all__ = [
+    "COUNTERPARTS",
+    "Counterpart",
+    "bundled_program",
+    "is_bundled_file",
+    "is_provided",
+    "lacking",
+    "program_names",
+    "provided_packages",
+]
