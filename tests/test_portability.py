@@ -42,7 +42,7 @@ POSIX_KEYWORDS = frozenset({"preexec_fn"})
 
 #: The modules allowed to use POSIX-only names, and why they need them.
 GUARDED = {
-    "rosx/bag/recorder.py": "FIONREAD (fcntl, termios) to see how far a recorder lags",
+    "rosx/node/subscription.py": "FIONREAD (fcntl, termios): what a drained subscription waits for",
     "commands/rosx_commands/rosbag/play.py": "space and s keys read in cbreak mode (termios, tty)",
     "turtle/rosx_turtle/keyboard.py": "turtle_teleop_key's raw keys (termios)",
     "rosx/launch/monitor.py": "roslaunch stops each node's process group (killpg, SIGKILL)",
