@@ -1,0 +1,1 @@
+"""Stage's world files: `worldfile` (sans-I/O syntax), `model` (the `World`), `images`, `load`."""
