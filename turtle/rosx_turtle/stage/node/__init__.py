@@ -1,0 +1,1 @@
+"""stageros: `stageros.StageNode` (the node) and `run.run_stageros` (the program)."""
