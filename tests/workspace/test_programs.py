@@ -9,6 +9,7 @@ rosx" line for it disappears by itself.
 from __future__ import annotations
 
 import io
+import shutil
 import subprocess
 import sys
 from collections.abc import Iterator
@@ -144,6 +145,8 @@ def _terminal() -> tuple[Environment, io.StringIO]:
 def test_a_package_bundled_is_provided_everywhere_with_no_list_to_edit(
     prefix: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
+    shutil.rmtree(prefix / "share" / "stage_ros", ignore_errors=True)  # bundled anew below
+    _forget_the_tree()
     env, err = _terminal()
     assert plan(["stage_ros", "stageros", "w.world"], env) == 2
     assert err.getvalue() == (
@@ -220,8 +223,8 @@ def test_roslaunch_of_what_rosx_lacks_says_so_after_ros1s_error() -> None:
     assert err.getvalue().splitlines() == [
         "RLException: [turtlebot3_world.launch] is neither a launch file in package "
         "[turtlebot3_gazebo] nor is [turtlebot3_gazebo] a launch file name",
-        "[rosx] turtlebot3_gazebo is not part of rosx ('rosx --help' lists the packages it "
-        "provides)",
+        "[rosx] turtlebot3_gazebo is not part of rosx; rosx has instead: "
+        "rosx rosrun stage_ros stageros WORLD",
     ]
     env, err = _terminal()
     assert roslaunch(["turtlesim", "multisim.lauch"], env) == 1
