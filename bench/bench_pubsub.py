@@ -44,7 +44,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from bench import interpreter  # noqa: E402 -- after the path is set
+from bench import interpreter, roscpp_program  # noqa: E402 -- after the path is set
 from bench.interpreter import ROS1_PYTHON  # noqa: E402
 
 # The worker scripts are the same for both libraries: `api` makes a node, a publisher, a
@@ -235,6 +235,74 @@ print(json.dumps(result), flush=True)
 """
 )
 
+# Ping-pong: a pinger publishes a Twist on /ping stamped with ``time.time()``; the ponger's
+# callback publishes it back on /pong; the pinger's callback records half the round trip and
+# publishes the next ping (callback to callback, no other thread), COUNT times, the first
+# WARMUP left out. Probes (place -1) first, until one comes back: both connections are up.
+PING = """
+import sys, time, json, threading
+count, warmup, name = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
+make_node(name)
+cls = msg_class('geometry_msgs/Twist')
+pub = publisher('/ping', cls, 100)
+one_way = []
+state = {'sent': 0}
+answered = threading.Event()
+done = threading.Event()
+msg = cls()
+clock = time.time
+def send(place):
+    msg.linear.y = place
+    msg.linear.x = clock()
+    pub.publish(msg)
+def cb(echo):
+    now = clock()
+    place = int(echo.linear.y)
+    if place < 0:
+        answered.set()
+        return
+    if place != state['sent']:
+        return
+    if place >= warmup:
+        one_way.append((now - echo.linear.x) / 2)
+    if place + 1 == count:
+        done.set()
+        return
+    state['sent'] = place + 1
+    send(place + 1)
+sub = subscriber('/pong', cls, cb, 100)
+deadline = time.monotonic() + 30
+while not answered.is_set() and time.monotonic() < deadline:
+    msg.linear.y = -1
+    pub.publish(msg)
+    answered.wait(0.1)
+time.sleep(0.5)
+send(0)
+done.wait(120)
+one_way.sort()
+result = {'received': state['sent'] + 1}
+if one_way:
+    result['p50'] = one_way[len(one_way) // 2] * 1e6
+    result['p99'] = one_way[min(len(one_way) - 1, int(len(one_way) * 0.99))] * 1e6
+    result['samples'] = len(one_way)
+print(json.dumps(result), flush=True)
+import os
+os._exit(0)
+"""
+
+PONG = """
+import sys, time
+make_node(sys.argv[1])
+cls = msg_class('geometry_msgs/Twist')
+pub = publisher('/pong', cls, 100)
+sub = subscriber('/ping', cls, pub.publish, 100)
+print('ready', flush=True)
+time.sleep(600)  # until the bench stops it
+"""
+
+#: The Python workers by role (`spawn_worker`); the C++ worker has the same roles.
+WORKERS = {"pub": PUBLISHER, "sub": SUBSCRIBER, "ping": PING, "pong": PONG}
+
 
 # The floor: a bare Python sender and a Python thread blocked in ``recv_into``, no library, the
 # same pacing and stamps as the latency cases (a 52-byte frame per message). ``unix-slice``: the
@@ -348,6 +416,36 @@ def start_master() -> tuple[subprocess.Popen[bytes], str]:
     raise SystemExit("the master did not start")
 
 
+def spawn_worker(lib: str, role: str, master: str, *argv: object) -> subprocess.Popen[str]:
+    """Start one worker process: ``role`` ``pub``, ``sub``, ``ping`` or ``pong`` (`WORKERS`)
+    of ``lib``: ``rospy`` (ROS 1's Python), ``rosx`` (this Python), ``rosx-tcp`` (rosx over
+    TCPROS, ``ROSX_UNIXROS=0``, instead of Unix sockets) or ``roscpp`` (the C++ worker of
+    `bench.roscpp_program`, which takes the same arguments and prints the same lines)."""
+    env = dict(os.environ, ROS_MASTER_URI=master, PYTHONPATH=str(ROOT))
+    if lib == "roscpp":
+        binary = roscpp_program.program()
+        if binary is None:
+            raise SystemExit("roscpp: the C++ worker could not be built")
+        command = [str(binary), role]
+    else:
+        python = ROS1_PYTHON if lib == "rospy" else sys.executable
+        api = API_ROSPY if lib == "rospy" else API_ROSX
+        command = [python, "-c", api + WORKERS[role]]
+    if lib == "rospy":
+        env["ROS_PACKAGE_PATH"] = "/usr/share"
+    if lib == "rosx-tcp":
+        env["ROSX_UNIXROS"] = "0"
+    return subprocess.Popen(
+        [*command, *map(str, argv)],
+        stdin=subprocess.DEVNULL,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.DEVNULL,
+        env=env,
+        cwd=ROOT,
+        text=True,
+    )
+
+
 def run_case(
     lib: str,
     master: str,
@@ -360,37 +458,24 @@ def run_case(
     *,
     publishers: int = 1,
     subscribers: int = 1,
+    sub_lib: str | None = None,
 ) -> dict[str, float]:
-    """Run publisher and subscriber processes; with several subscribers, ``rate`` and
-    ``bytes_rate`` are their sum and ``slowest`` the lowest subscriber's ``rate``. ``lib``
-    ``rosx-tcp`` is rosx over TCPROS (``ROSX_UNIXROS=0``) instead of Unix sockets."""
-    python = ROS1_PYTHON if lib == "rospy" else sys.executable
-    api = API_ROSPY if lib == "rospy" else API_ROSX
-    env = dict(os.environ, ROS_MASTER_URI=master, PYTHONPATH=str(ROOT))
-    if lib == "rospy":
-        env["ROS_PACKAGE_PATH"] = "/usr/share"
-    if lib == "rosx-tcp":
-        env["ROSX_UNIXROS"] = "0"
+    """Run publisher and subscriber processes of ``lib`` (`spawn_worker`; the subscribers of
+    ``sub_lib`` if given); with several subscribers, ``rate`` and ``bytes_rate`` are their sum
+    and ``slowest`` the lowest subscriber's ``rate``."""
 
-    def spawn(script: str, *argv: object) -> subprocess.Popen[str]:
-        return subprocess.Popen(
-            [python, "-c", api + script, *map(str, argv)],
-            stdout=subprocess.PIPE,
-            stderr=subprocess.DEVNULL,
-            env=env,
-            cwd=ROOT,
-            text=True,
-        )
+    def spawn(role: str, *argv: object) -> subprocess.Popen[str]:
+        return spawn_worker(sub_lib or lib if role == "sub" else lib, role, master, *argv)
 
     subs = [
-        spawn(SUBSCRIBER, count, json.dumps(sub_queue), kind, warmup, publishers, f"bench_sub{i}")
+        spawn("sub", count, json.dumps(sub_queue), kind, warmup, publishers, f"bench_sub{i}")
         for i in range(subscribers)
     ]
     for sub in subs:
         assert sub.stdout is not None
         sub.stdout.readline()  # "ready"
     pubs = [
-        spawn(PUBLISHER, count, json.dumps(pub_queue), period, kind, subscribers, f"bench_pub{i}")
+        spawn("pub", count, json.dumps(pub_queue), period, kind, subscribers, f"bench_pub{i}")
         for i in range(publishers)
     ]
     try:
