@@ -1,8 +1,9 @@
-"""The parsed form of ROS 1 message and service definitions.
+"""The parsed form of ROS 1 message, service and action definitions.
 
 A `MsgSpec` is what a `.msg` file says once its type names are resolved: constants, then fields,
 each field type fully qualified (``geometry_msgs/Vector3``, ``std_msgs/Header``) unless it is a
-built-in. Services are a request and a response spec under one name. These are plain values; the
+built-in. Services are a request and a response spec under one name; actions the seven messages
+genaction makes of an ``.action`` file (`ACTION_SUFFIXES`). These are plain values; the
 parser builds them, the type store holds them, and the codec, md5 and YAML code read them.
 """
 
@@ -142,3 +143,41 @@ class SrvSpec(Record):
     @property
     def short_name(self) -> str:
         return self.full_name.partition("/")[2]
+
+
+#: The messages of an action ``X``, by the suffix of their names (``XAction``, ``XActionGoal`` …),
+#: in the order genaction lists them.
+ACTION_SUFFIXES = (
+    "Action",
+    "ActionGoal",
+    "ActionResult",
+    "ActionFeedback",
+    "Goal",
+    "Result",
+    "Feedback",
+)
+
+
+class ActionSpec(Record):
+    """An action type: ``messages`` are its seven messages, in the order of `ACTION_SUFFIXES`."""
+
+    __match_args__ = ("full_name", "messages", "text")
+    __slots__ = __match_args__
+    full_name: str
+    messages: tuple[MsgSpec, ...]
+    text: str
+
+    def __init__(self, full_name: str, messages: tuple[MsgSpec, ...], text: str) -> None:
+        super().__init__(full_name=full_name, messages=messages, text=text)
+
+    @property
+    def package(self) -> str:
+        return self.full_name.partition("/")[0]
+
+    @property
+    def short_name(self) -> str:
+        return self.full_name.partition("/")[2]
+
+    def message(self, suffix: str) -> MsgSpec:
+        """The message named ``<action><suffix>`` (``suffix`` one of `ACTION_SUFFIXES`)."""
+        return self.messages[ACTION_SUFFIXES.index(suffix)]

@@ -1,12 +1,14 @@
-"""One type store: every message and service type rosx knows, found lazily by name.
+"""One type store: every message, service and action type rosx knows, found lazily by name.
 
 Sources, first match wins per type:
 
 1. packages on the package path (``ROS_PACKAGE_PATH``): their ``msg/*.msg`` and ``srv/*.srv``,
-   the first package of a name on the path winning, as with rospack;
+   and the seven messages genaction makes of each ``action/*.action`` (``XAction``,
+   ``XActionGoal`` …, `rosx.msg.parser.parse_action`), the first package of a name on the path
+   winning, as with rospack;
 2. the packages shipped with rosx (`rosx.packages.crawl`): the standard packages' original
    ``.msg`` and ``.srv`` files (comments included, for ``rosmsg show -r``), the tutorials' and
-   turtlesim's types;
+   turtlesim's types, actionlib's and its tutorials' actions;
 3. rosbags' ROS 1 Noetic types, for the types no file defines (their texts rebuilt from field
    lists, `rosx.msg.standard`).
 
@@ -16,7 +18,9 @@ A package on the path shadows a standard one only for the types it really has: D
 
 Packages are found through the package index (`rosx.packages.index`), the one crawl of the
 package path that ``rospack``, ``rosrun`` and ``roscd`` use too. Nothing is parsed until asked
-for; listing every type reads directory names, not files.
+for; listing every type reads directory names, not files. Within a package a ``.msg`` file
+wins over an action's message of the same name: an installed ROS 1 package holds both the
+``.action`` and genaction's ``.msg`` files, which say the same.
 """
 
 from __future__ import annotations
@@ -26,8 +30,14 @@ from collections.abc import Mapping
 from pathlib import Path
 
 from rosx.msg.md5 import full_text, message_md5, service_md5
-from rosx.msg.parser import InvalidMsgSpecError, is_valid_type_name, parse_msg, parse_srv
-from rosx.msg.spec import MsgSpec, SrvSpec
+from rosx.msg.parser import (
+    InvalidMsgSpecError,
+    is_valid_type_name,
+    parse_action,
+    parse_msg,
+    parse_srv,
+)
+from rosx.msg.spec import ACTION_SUFFIXES, ActionSpec, MsgSpec, SrvSpec
 from rosx.msg.standard import standard_text, standard_types
 from rosx.packages.crawl import bundled_packages, split_package_path
 from rosx.packages.index import PackageIndex
@@ -53,6 +63,7 @@ class TypeStore:
         self._index = PackageIndex(package_path or []) if index is None else index
         self._msgs: dict[str, MsgSpec] = {}
         self._srvs: dict[str, SrvSpec] = {}
+        self._actions: dict[str, ActionSpec] = {}
         self._md5: dict[str, str] = {}
         self._md5_pending: set[str] = set()
 
@@ -119,6 +130,24 @@ class TypeStore:
             spec = self._srvs[full_name] = parse_srv(full_name, text)
         return spec
 
+    def action(self, full_name: str) -> ActionSpec:
+        """The spec of action ``full_name`` (``pkg/Name``, from ``action/Name.action``)."""
+        spec = self._actions.get(full_name)
+        if spec is None:
+            text = self._file_text(full_name, "action") if is_valid_type_name(full_name) else None
+            if text is None:
+                package = full_name.partition("/")[0]
+                raise UnknownTypeError(full_name, "action", self._has_package(package))
+            spec = self._actions[full_name] = parse_action(full_name, text)
+        return spec
+
+    def has_action(self, full_name: str) -> bool:
+        try:
+            self.action(full_name)
+        except UnknownTypeError:
+            return False
+        return True
+
     def has_msg(self, full_name: str) -> bool:
         try:
             self.msg(full_name)
@@ -151,9 +180,9 @@ class TypeStore:
         return None
 
     def _msg_without_file(self, full_name: str) -> MsgSpec:
-        """A half of a service, else a standard type (no standard name ends with ``Request``
-        or ``Response``, so the order changes no answer; it spares every node's logger
-        services the standard types' loading)."""
+        """A half of a service, else a message of an action, else a standard type (no standard
+        name ends with ``Request`` or ``Response``, so the order changes no answer; it spares
+        every node's logger services the standard types' loading)."""
         for suffix in ("Request", "Response"):
             if full_name.endswith(suffix) and len(full_name) > len(suffix):
                 try:
@@ -161,11 +190,31 @@ class TypeStore:
                 except UnknownTypeError:
                     break
                 return service.request if suffix == "Request" else service.response
+        generated = self._action_message(full_name)
+        if generated is not None:
+            return generated
         text = standard_text(full_name) if is_valid_type_name(full_name) else None
         if text is not None:
             return parse_msg(full_name, text)
         package = full_name.partition("/")[0]
         raise UnknownTypeError(full_name, "message", self._has_package(package))
+
+    def _action_message(self, full_name: str) -> MsgSpec | None:
+        """The message ``full_name`` as an action of its package generates it, if one does.
+
+        ``XActionGoal`` is the ``ActionGoal`` of action ``X`` or the ``Goal`` of action
+        ``XAction``: the longest suffix whose action exists wins.
+        """
+        if not is_valid_type_name(full_name):
+            return None
+        for suffix in sorted(ACTION_SUFFIXES, key=len, reverse=True):
+            stem = full_name[: -len(suffix)]
+            if full_name.endswith(suffix) and not stem.endswith("/"):
+                try:
+                    return self.action(stem).message(suffix)
+                except UnknownTypeError:
+                    continue
+        return None
 
     # -- sums and texts --------------------------------------------------------------------
 
@@ -197,7 +246,8 @@ class TypeStore:
     # -- listings --------------------------------------------------------------------------
 
     def types(self, kind: str) -> list[str]:
-        """Every ``pkg/Type`` of ``kind`` (``msg`` or ``srv``), sorted."""
+        """Every ``pkg/Type`` of ``kind`` (``msg``, ``srv`` or ``action``), sorted; messages
+        include those of actions."""
         names: set[str] = set()
         for packages in (self._bundled_packages, self.path_packages):
             for package, root in packages.items():
@@ -206,6 +256,8 @@ class TypeStore:
                     names.update(f"{package}/{e.stem}" for e in directory.glob("*." + kind))
         if kind == "msg":
             names.update(standard_types())
+            for action in self.types("action"):
+                names.update(action + suffix for suffix in ACTION_SUFFIXES)
         return sorted(names)
 
     def packages(self, kind: str) -> list[str]:
