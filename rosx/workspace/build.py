@@ -2,9 +2,13 @@
 
 A workspace is a directory with ``src/`` (the source space); ``build/`` and ``devel/`` are
 made next to it. There is nothing to compile: building a package means checking its manifest
-as catkin does and loading each of its ``msg/*.msg`` and ``srv/*.srv`` types the way a node
-will (parsed, embedded types found, md5 sums computed, classes built), so a mistake is reported
-now, naming the file and the line, rather than when a script imports the type. ``devel/``
+as catkin does and loading each of its ``msg/*.msg`` and ``srv/*.srv`` types and the messages of
+its ``action/*.action`` files the way a node will (parsed, embedded types found, md5 sums
+computed, classes built), so a mistake is reported now, naming the file and the line, rather
+than when a script imports the type. The package's ``CMakeLists.txt`` chooses the files
+(``add_message_files``, ``add_service_files``, ``add_action_files`` with ``FILES``); a command
+of it that rosx does not carry out gets a CMake warning naming its file and line
+(`rosx.workspace.cmake.unsupported`), never silence. ``devel/``
 receives ``setup.sh``, ``setup.bash`` and ``setup.zsh``, which export Noetic's environment
 with the source space in front of ``ROS_PACKAGE_PATH`` (where rosx finds packages and their
 types), put rosx's ``rospy`` on ``PYTHONPATH`` and define ``roscd``/``rosls``, and ``.catkin``,
@@ -220,12 +224,16 @@ class CatkinMake:
         for manifest in ordered:
             yield f"-- +++ processing catkin package: '{manifest.name}'"
             yield f"-- ==> add_subdirectory({manifest.directory.relative_to(layout.source)})"
-            if not any((manifest.directory / kind).is_dir() for kind in ("msg", "srv")):
+            chosen = self._read_cmakelists(manifest)
+            if not any((manifest.directory / kind).is_dir() for kind in ("msg", "srv", "action")):
                 continue
             # The message system loads only for packages that have types.
-            from rosx.workspace.types import build_types  # noqa: PLC0415
+            from rosx.workspace.types import build_types, type_paths  # noqa: PLC0415
 
-            types = build_types(manifest, self._package_path())
+            for path in type_paths(manifest, chosen)["action"]:
+                yield f"-- Generating .msg files for action {manifest.name}/{path.stem} {path}"
+                yield f"Generating for action {path.stem}"
+            types = build_types(manifest, self._package_path(), chosen)
             yield (
                 f"-- {manifest.name}: {len(types.messages)} messages, "
                 f"{len(types.services)} services"
@@ -242,6 +250,45 @@ class CatkinMake:
             yield "Install the project..."
             for path in install_space(layout, ordered, self._setup_files):
                 yield f"-- Installing: {path}"
+
+    def _read_cmakelists(self, manifest: Manifest) -> dict[str, list[str] | None]:
+        """Check the package's ``CMakeLists.txt`` as far as rosx follows it: warnings for the
+        commands it does not carry out; the type files it names, by kind.
+
+        Raises:
+            BuildError: a folder or file it names does not exist (CMake's error).
+        """
+        from rosx.workspace.cmake import TYPE_FOLDERS, type_files, unsupported  # noqa: PLC0415
+
+        path = manifest.directory / "CMakeLists.txt"
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            return {}
+        where = os.path.relpath(path, self.layout.source)
+        for call, reason in unsupported(text):
+            self.warnings.append(f"CMake Warning at {where}:{call.line} ({call.name}):\n  {reason}")
+        chosen: dict[str, list[str] | None] = {}
+        for declared in type_files(text):
+            call, folder = declared.call, TYPE_FOLDERS[declared.call.name]
+            directory = manifest.directory / declared.directory
+            heading = f"CMake Error at {where}:{call.line} ({call.name}):\n  {call.name}()"
+            if not directory.is_dir():
+                raise BuildError(f"{heading} directory not found: {directory}")
+            if os.path.normpath(declared.directory) != folder:
+                self.warnings.append(
+                    f"CMake Warning at {where}:{call.line} ({call.name}):\n  rosx finds "
+                    f"{folder} files in {folder}/ only: those in {declared.directory}/ are "
+                    "not built"
+                )
+                continue
+            if declared.files is None:
+                continue
+            for name in declared.files:
+                if not (directory / name).is_file():
+                    raise BuildError(f"{heading} file not found: {directory / name}")
+            chosen[folder] = [*(chosen.get(folder) or []), *declared.files]
+        return chosen
 
     def _write(self, built: list[PackageTypes]) -> None:
         layout = self.layout

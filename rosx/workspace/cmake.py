@@ -1,11 +1,16 @@
-"""What rosx reads of a package's ``CMakeLists.txt``: its install rules and its C++ targets.
+"""What rosx reads of a package's ``CMakeLists.txt``: install rules, C++ targets, type files.
 
 rosx runs no CMake. ``catkin_make install`` still needs to know what a package installs, and
-``catkin_make`` what it would compile, so this reads the few commands that say it:
+``catkin_make`` what it would compile and generate, so this reads the few commands that say it:
 ``catkin_install_python(PROGRAMS … DESTINATION …)``, ``install(PROGRAMS|FILES|DIRECTORY …
-DESTINATION …)`` (with catkin's ``${CATKIN_PACKAGE_*_DESTINATION}`` variables), and
-``add_executable``/``add_library`` (C++ targets). Comments and quoting are handled; other
-variables and generator expressions are not evaluated: a rule using them is skipped.
+DESTINATION …)`` (with catkin's ``${CATKIN_PACKAGE_*_DESTINATION}`` variables),
+``add_executable``/``add_library`` (C++ targets), and ``add_message_files``,
+``add_service_files``, ``add_action_files`` (`type_files`). Comments and quoting are handled;
+other variables and generator expressions are not evaluated: a rule using them is skipped.
+
+Every other command is either one that cannot change what a Python workspace does (C++ build
+settings, tests, control flow: `HARMLESS`) or one rosx does not carry out: `unsupported` lists
+those with their line, so that catkin_make says so instead of ignoring them.
 """
 
 from __future__ import annotations
@@ -59,12 +64,27 @@ def _strip_comments(text: str) -> str:
     return "\n".join(lines)
 
 
-def _commands(text: str) -> list[tuple[str, list[str]]]:
+class Call(NamedTuple):
+    """One command of a ``CMakeLists.txt``: its name (lower case), arguments and line."""
+
+    name: str
+    words: list[str]
+    line: int
+
+
+def calls(text: str) -> list[Call]:
+    """The commands of the CMake ``text``, in order."""
+    stripped = _strip_comments(text)
     found = []
-    for match in _COMMAND.finditer(_strip_comments(text)):
+    for match in _COMMAND.finditer(stripped):
         words = [q if q is not None and q != "" else p for q, p in _ARGUMENT.findall(match[2])]
-        found.append((match[1].lower(), words))
+        line = stripped.count("\n", 0, match.start(1)) + 1
+        found.append(Call(match[1].lower(), words, line))
     return found
+
+
+def _commands(text: str) -> list[tuple[str, list[str]]]:
+    return [(call.name, call.words) for call in calls(text)]
 
 
 def destinations(package: str) -> dict[str, str]:
@@ -146,4 +166,110 @@ def cpp_targets(cmakelists: Path) -> list[str]:
     return targets
 
 
-__all__ = ["InstallRule", "cpp_targets", "destinations", "install_rules"]
+#: Commands rosx reads (above) or whose effect needs nothing of rosx.
+READ = frozenset(
+    {
+        "project",
+        "catkin_install_python",
+        "install",
+        "add_executable",
+        "add_library",
+        "add_message_files",
+        "add_service_files",
+        "add_action_files",
+        "generate_messages",
+    }
+)
+
+#: Commands that cannot change what a workspace of Python nodes and types does: finding
+#: dependencies and declaring the package, C++ compiling and linking (rosx compiles none),
+#: tests (catkin_make builds none), variables, messages and control flow.
+HARMLESS = frozenset(
+    {
+        "cmake_minimum_required", "cmake_policy", "find_package", "catkin_package",
+        "catkin_metapackage", "catkin_destinations", "include_directories", "link_directories",
+        "target_link_libraries", "add_dependencies", "target_include_directories",
+        "target_compile_options", "target_compile_definitions", "target_compile_features",
+        "set_target_properties", "set_property", "add_compile_options", "add_definitions",
+        "set", "unset", "list", "string", "math", "option", "message", "include",
+        "find_library", "find_path", "find_program", "pkg_check_modules",
+        "if", "elseif", "else", "endif", "foreach", "endforeach", "while", "endwhile",
+        "catkin_add_gtest", "catkin_add_nosetests", "catkin_add_executable_with_gtest",
+        "add_rostest", "add_rostest_gtest", "catkin_download_test_data", "roslint_cpp",
+        "roslint_python", "roslint_add_test", "roslaunch_add_file_check",
+    }
+)  # fmt: skip
+
+#: Why some common commands are not carried out, and what it means for the user.
+_REASONS = {
+    "add_subdirectory": "rosx reads no CMakeLists.txt but the package's own: what {0}/ adds is "
+    "not built",
+    "catkin_python_setup": "rosx does not install the package's Python modules (setup.py): "
+    "scripts of other packages cannot import them",
+    "generate_dynamic_reconfigure_options": "rosx generates no dynamic_reconfigure config modules",
+}
+
+#: The folder each kind of type file is read from; rosx's type store looks nowhere else.
+TYPE_FOLDERS = {
+    "add_message_files": "msg",
+    "add_service_files": "srv",
+    "add_action_files": "action",
+}
+
+
+def unsupported(text: str) -> list[tuple[Call, str]]:
+    """The commands of ``text`` that rosx does not carry out, each with what that means."""
+    found = []
+    for call in calls(text):
+        if call.name in READ or call.name in HARMLESS:
+            continue
+        reason = _REASONS.get(call.name, "rosx does not run this command")
+        found.append((call, reason.format(*call.words, "", "")))
+    return found
+
+
+class TypeFiles(NamedTuple):
+    """One ``add_message_files``/``add_service_files``/``add_action_files`` call: the folder,
+    and the files it names (None: every file of the kind in the folder)."""
+
+    call: Call
+    directory: str
+    files: list[str] | None
+
+
+def type_files(text: str) -> list[TypeFiles]:
+    """The type file declarations of ``text``, in order."""
+    found = []
+    for call in calls(text):
+        if call.name not in TYPE_FOLDERS:
+            continue
+        directory = TYPE_FOLDERS[call.name]
+        files: list[str] | None = None
+        words = call.words
+        for index, word in enumerate(words):
+            if word == "DIRECTORY" and index + 1 < len(words):
+                directory = words[index + 1]
+            elif word == "FILES":
+                files = []
+                for name in words[index + 1 :]:
+                    if name in ("DIRECTORY", "BASE_DIR", "NOINSTALL", "SKIP_CHECK"):
+                        break
+                    files.append(name)
+        found.append(TypeFiles(call, directory, files))
+    return found
+
+
+__all__ = [
+    "HARMLESS",
+    "READ",
+    "TYPE_FOLDERS",
+    "Call",
+    "InstallRule",
+    "TypeFiles",
+    "calls",
+    "cpp_targets",
+    "destinations",
+    "install_rules",
+    "type_files",
+    "unsupported",
+]

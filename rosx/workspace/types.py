@@ -1,8 +1,9 @@
-"""Building a package's ``msg/`` and ``srv/`` types, as ``catkin_make`` checks them.
+"""Building a package's ``msg/``, ``srv/`` and ``action/`` types, as ``catkin_make`` checks them.
 
-Each ``msg/<Type>.msg`` and ``srv/<Type>.srv`` is loaded as a node will load it: parsed, its
-embedded types found (in the workspace, on ``ROS_PACKAGE_PATH`` or among the standard types),
-its md5 sum computed and its class built. The first mistake stops the build with a report that
+Each ``msg/<Type>.msg`` and ``srv/<Type>.srv``, and the seven messages genaction makes of each
+``action/<Name>.action``, is loaded as a node will load it: parsed, its embedded types found (in
+the workspace, on ``ROS_PACKAGE_PATH`` or among the standard types), its md5 sum computed and
+its class built. The first mistake stops the build with a report that
 names the file and, where there is one, the line::
 
     Error(s) in message file '/home/u/catkin_ws/src/lab2/msg/Num.msg', line 2:
@@ -16,22 +17,27 @@ from typing import TYPE_CHECKING, NamedTuple
 
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.msg.parser import InvalidMsgSpecError, is_valid_type_name
-from rosx.msg.spec import HEADER_TYPE, PRIMITIVE_TYPES
+from rosx.msg.spec import ACTION_SUFFIXES, HEADER_TYPE, PRIMITIVE_TYPES
 from rosx.msg.store import TypeStore, UnknownTypeError
 from rosx.workspace.errors import BuildError
 
 if TYPE_CHECKING:
+    from collections.abc import Mapping
+
     from rosx.packages.manifest import Manifest
 
-_KIND_NAMES = {"msg": "message", "srv": "service"}
+_KIND_NAMES = {"msg": "message", "srv": "service", "action": "action"}
+#: The kinds of type file, in the order catkin_make builds them.
+KINDS = ("msg", "action", "srv")
 
 
 class PackageTypes(NamedTuple):
-    """The types a package defines, by full name."""
+    """The types a package defines, by full name; ``messages`` include those of ``actions``."""
 
     package: str
     messages: list[str]
     services: list[str]
+    actions: list[str] = []  # noqa: RUF012 - a NamedTuple default, never changed in place
 
     def steps(self) -> list[tuple[str, str]]:
         """``(kind, full name)`` of every type, messages first."""
@@ -74,6 +80,10 @@ def _build_one(store: TypeStore, package: str, kind: str, path: Path) -> str:
         if kind == "msg":
             store.msg(full_name)
             get_message_class(full_name, store)
+        elif kind == "action":
+            store.action(full_name)
+            for suffix in ACTION_SUFFIXES:
+                get_message_class(full_name + suffix, store)
         else:
             store.srv(full_name)
             get_service_class(full_name, store)
@@ -85,21 +95,38 @@ def _build_one(store: TypeStore, package: str, kind: str, path: Path) -> str:
     return full_name
 
 
-def build_types(manifest: Manifest, package_path: list[Path]) -> PackageTypes:
-    """Load every type of the package of ``manifest``, looking types up on ``package_path``.
+def type_paths(manifest: Manifest, chosen: Mapping[str, list[str] | None]) -> dict[str, list[Path]]:
+    """The type files of each kind (`KINDS`) that the package builds: those ``chosen`` names
+    for the kind (its CMakeLists.txt's ``FILES``), else every file of the kind's folder."""
+    found: dict[str, list[Path]] = {}
+    for kind in KINDS:
+        directory = manifest.directory / kind
+        names = chosen.get(kind)
+        if names is not None:
+            found[kind] = [directory / name for name in dict.fromkeys(names)]
+        else:
+            found[kind] = sorted(directory.glob(f"*.{kind}")) if directory.is_dir() else []
+    return found
+
+
+def build_types(
+    manifest: Manifest,
+    package_path: list[Path],
+    chosen: Mapping[str, list[str] | None] | None = None,
+) -> PackageTypes:
+    """Load the types of the package of ``manifest`` (those of `type_paths`), looking types up
+    on ``package_path``.
 
     Raises:
         BuildError: a file is not a valid definition (see the module docstring).
     """
     store = TypeStore(package_path)
-    found: dict[str, list[str]] = {"msg": [], "srv": []}
-    for kind, names in found.items():
-        directory = manifest.directory / kind
-        if not directory.is_dir():
-            continue
-        for path in sorted(directory.glob(f"*.{kind}")):
-            names.append(_build_one(store, manifest.name, kind, path))
-    return PackageTypes(manifest.name, found["msg"], found["srv"])
+    built: dict[str, list[str]] = {kind: [] for kind in KINDS}
+    for kind, paths in type_paths(manifest, chosen or {}).items():
+        for path in paths:
+            built[kind].append(_build_one(store, manifest.name, kind, path))
+    messages = built["msg"] + [a + suffix for a in built["action"] for suffix in ACTION_SUFFIXES]
+    return PackageTypes(manifest.name, messages, built["srv"], built["action"])
 
 
 __all__ = ["PackageTypes", "build_types"]
