@@ -1,0 +1,239 @@
+"""The per-frame caches of tf2's buffer: a frame's transforms to its parent over time.
+
+A `TimeCache` keeps the transforms of a moving frame for ``max_storage`` nanoseconds behind the
+newest, sorted by stamp (``bisect`` finds the two around a time); a `StaticCache` keeps one
+transform valid at every time. Both answer as tf2's ``TimeCache``/``StaticCache`` do, texts
+included: a time outside the buffered span is an extrapolation, described in tf2's words; an
+insertion older than the span or at a stamp already held is refused with tf2's
+``TF_OLD_DATA``/``TF_REPEATED_DATA`` text.
+
+A sample is a tuple ``(parent_id, tx, ty, tz, qx, qy, qz, qw)``; interpolation between two
+samples is tf2's (linear translation, slerp rotation, the same operations in the same order),
+so the numbers are ROS 1's to the last bit. Nothing here locks or does I/O: the buffer
+(`rosx.tf.core`) does the locking.
+"""
+
+from __future__ import annotations
+
+from bisect import bisect_right
+from math import acos, sin, sqrt
+
+from rosx.tf import stamps
+
+#: (parent_id, tx, ty, tz, qx, qy, qz, qw)
+Sample = tuple[int, float, float, float, float, float, float, float]
+
+_OLD_DATA = (
+    "TF_OLD_DATA ignoring data from the past (Possible reasons are listed at "
+    "http://wiki.ros.org/tf/Errors%%20explained)"
+)
+_REPEATED_DATA = "TF_REPEATED_DATA ignoring data with redundant timestamp"
+
+
+def _only_time(asked: int, held: int) -> str:
+    # tf2 0.7.6 formats this one into 116 bytes: the longest stamps lose the text's last letter.
+    return (
+        f"Lookup would require extrapolation at time {stamps.text(asked)}, "
+        f"but only time {stamps.text(held)} is in the buffer"
+    )[:115]
+
+
+def _future(asked: int, latest: int) -> str:
+    return (
+        f"Lookup would require extrapolation {stamps.text(asked - latest)}s into the future.  "
+        f"Requested time {stamps.text(asked)} but the latest data is at time "
+        f"{stamps.text(latest)}"
+    )[:162]
+
+
+def _past(asked: int, earliest: int) -> str:
+    return (
+        f"Lookup would require extrapolation {stamps.text(earliest - asked)}s into the past.  "
+        f"Requested time {stamps.text(asked)} but the earliest data is at time "
+        f"{stamps.text(earliest)}"
+    )[:162]
+
+
+def interpolate(one: Sample, two: Sample, ratio: float) -> Sample:
+    """tf2's ``TimeCache::interpolate``: ``one`` (older) to ``two`` at ``ratio``."""
+    s = 1.0 - ratio
+    parent, ax, ay, az, x1, y1, z1, w1 = one
+    _, bx, by, bz, x2, y2, z2, w2 = two
+    # Quaternion::slerp, through angleShortestPath
+    dot = x1 * x2 + y1 * y2 + z1 * z2 + w1 * w2
+    norm = sqrt((x1 * x1 + y1 * y1 + z1 * z1 + w1 * w1) * (x2 * x2 + y2 * y2 + z2 * z2 + w2 * w2))
+    # tf2 doubles the angle and halves it again, both exact; dot(-q) is exactly -dot(q);
+    # tf2Acos clamps its argument to [-1, 1].
+    cosine = -dot / norm if dot < 0 else dot / norm
+    theta = acos(cosine) if cosine < 1.0 else 0.0
+    if theta != 0.0:
+        d = 1.0 / sin(theta)
+        s0 = sin((1.0 - ratio) * theta)
+        s1 = sin(ratio * theta)
+        if dot < 0:
+            qx = (x1 * s0 + -x2 * s1) * d
+            qy = (y1 * s0 + -y2 * s1) * d
+            qz = (z1 * s0 + -z2 * s1) * d
+            qw = (w1 * s0 + -w2 * s1) * d
+        else:
+            qx = (x1 * s0 + x2 * s1) * d
+            qy = (y1 * s0 + y2 * s1) * d
+            qz = (z1 * s0 + z2 * s1) * d
+            qw = (w1 * s0 + w2 * s1) * d
+    else:
+        qx, qy, qz, qw = x1, y1, z1, w1
+    return (parent, s * ax + ratio * bx, s * ay + ratio * by, s * az + ratio * bz, qx, qy, qz, qw)
+
+
+class TimeCache:
+    """The transforms of one moving frame, ``max_storage`` ns behind the newest."""
+
+    __slots__ = ("max_storage", "samples", "stamps")
+
+    def __init__(self, max_storage: int) -> None:
+        self.max_storage = max_storage
+        #: Stamps in ns, oldest first; ``samples[i]`` is the transform at ``stamps[i]``.
+        self.stamps: list[int] = []
+        self.samples: list[Sample] = []
+
+    def get(self, time: int) -> Sample | str:
+        """The transform at ``time`` (0: the newest), or tf2's text of why there is none."""
+        stamps_ = self.stamps
+        count = len(stamps_)
+        if not count:
+            return ""
+        if not time:
+            return self.samples[-1]
+        if count == 1:
+            if stamps_[0] == time:
+                return self.samples[0]
+            return _only_time(time, stamps_[0])
+        latest = stamps_[-1]
+        if time == latest:
+            return self.samples[-1]
+        earliest = stamps_[0]
+        if time == earliest:
+            return self.samples[0]
+        if time > latest:
+            return _future(time, latest)
+        if time < earliest:
+            return _past(time, earliest)
+        i = bisect_right(stamps_, time) - 1
+        one = self.samples[i]
+        two = self.samples[i + 1]
+        if one[0] != two[0]:
+            return one
+        t1 = stamps_[i]
+        t2 = stamps_[i + 1]
+        if t1 == t2:
+            return two
+        return interpolate(one, two, stamps.to_sec(time - t1) / stamps.to_sec(t2 - t1))
+
+    def parent(self, time: int) -> int | str:
+        """The parent frame's id at ``time``, or tf2's text of why there is none."""
+        stamps_ = self.stamps
+        count = len(stamps_)
+        if not count:
+            return ""
+        if not time:
+            return self.samples[-1][0]
+        if count == 1:
+            return self.samples[0][0] if stamps_[0] == time else _only_time(time, stamps_[0])
+        latest = stamps_[-1]
+        earliest = stamps_[0]
+        if time == latest:
+            return self.samples[-1][0]
+        if time == earliest:
+            return self.samples[0][0]
+        if time > latest:
+            return _future(time, latest)
+        if time < earliest:
+            return _past(time, earliest)
+        return self.samples[bisect_right(stamps_, time) - 1][0]
+
+    def insert(self, stamp: int, sample: Sample) -> str | None:
+        """Keep ``sample`` (at ``stamp``) and drop what fell out of the span; or refuse it, with
+        tf2's text."""
+        stamps_ = self.stamps
+        if stamps_:
+            latest = stamps_[-1]
+            if latest > stamp + self.max_storage:
+                return _OLD_DATA
+            if stamp > latest:
+                stamps_.append(stamp)
+                self.samples.append(sample)
+            else:
+                i = bisect_right(stamps_, stamp)
+                if i and stamps_[i - 1] == stamp:
+                    return _REPEATED_DATA
+                stamps_.insert(i, stamp)
+                self.samples.insert(i, sample)
+        else:
+            stamps_.append(stamp)
+            self.samples.append(sample)
+        latest = stamps_[-1] - self.max_storage
+        if stamps_[0] < latest:
+            drop = 1
+            while drop < len(stamps_) and stamps_[drop] < latest:
+                drop += 1
+            del stamps_[:drop]
+            del self.samples[:drop]
+        return None
+
+    def latest(self) -> tuple[int, int]:
+        """The newest stamp and the parent then; ``(0, 0)`` when empty."""
+        if not self.stamps:
+            return 0, 0
+        return self.stamps[-1], self.samples[-1][0]
+
+    def newest_stamp(self) -> int:
+        return self.stamps[-1] if self.stamps else 0
+
+    def oldest_stamp(self) -> int:
+        return self.stamps[0] if self.stamps else 0
+
+    def __len__(self) -> int:
+        return len(self.stamps)
+
+    def clear(self) -> None:
+        self.stamps.clear()
+        self.samples.clear()
+
+
+class StaticCache:
+    """The one transform of a static frame, the same at every time (its stamp reads 0)."""
+
+    __slots__ = ("sample",)
+
+    def __init__(self) -> None:
+        self.sample: Sample = (0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+
+    def get(self, time: int) -> Sample | str:
+        return self.sample
+
+    def parent(self, time: int) -> int | str:
+        return self.sample[0]
+
+    def insert(self, stamp: int, sample: Sample) -> str | None:
+        self.sample = sample
+        return None
+
+    def latest(self) -> tuple[int, int]:
+        return 0, self.sample[0]
+
+    def newest_stamp(self) -> int:
+        return 0
+
+    def oldest_stamp(self) -> int:
+        return 0
+
+    def __len__(self) -> int:
+        return 1
+
+    def clear(self) -> None:
+        """Static transforms outlive a clear, as in tf2."""
+
+
+Cache = TimeCache | StaticCache
+
+__all__ = ["Cache", "Sample", "StaticCache", "TimeCache", "interpolate"]
