@@ -16,7 +16,6 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from rosx.node.publication import serialize_frame
 from rosx.wire.framing import length_prefix
 
 if TYPE_CHECKING:
@@ -165,4 +164,4 @@ class ServiceHandle:
     unregister = shutdown
 
 
-__all__ = ["Publisher", "ServiceHandle", "Subscriber", "serialize_frame"]
+__all__ = ["Publisher", "ServiceHandle", "Subscriber"]

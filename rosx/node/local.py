@@ -23,17 +23,21 @@ from __future__ import annotations
 
 import os
 import threading
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
+from rosx.msg.codec.clone import clone
+from rosx.msg.codec.message import serialize_frame
 from rosx.node.incoming import connection_ids
-from rosx.node.publication import INTRAPROCESS
 
 if TYPE_CHECKING:
     from collections.abc import Callable
 
     from rosx.node.publication import Publication
-    from rosx.node.receiver import LocalMessage, Receiver
+    from rosx.node.receiver import Decode, Receiver
 
+
+#: The transport name ``getBusInfo`` reports for a connection within this process (roscpp's).
+INTRAPROCESS = "INTRAPROCESS"
 
 #: Whether nodes of this process link in-process (read when a subscription connects).
 ENABLED = os.environ.get("ROSX_INTRAPROCESS", "1") != "0"
@@ -66,6 +70,54 @@ def publication_at(uri: str, topic: str) -> tuple[Publication, str] | None:
     if publication is None or publication.closed:
         return None
     return publication, name
+
+
+class LocalMessage:
+    """A message published in this process: a private copy taken when it was published.
+
+    Each callback gets a copy of its own (`rosx.msg.codec.clone`), as each would get its own
+    decoded message from a socket: the first callback takes the publish-time copy itself unless
+    it is kept (a latched message), later ones a copy made before any callback runs. A callback
+    whose class is not the message's (a raw ``AnyMsg`` subscriber) gets it serialized.
+    """
+
+    __slots__ = ("kept", "msg")
+
+    def __init__(self, msg: Any, *, kept: bool = False) -> None:
+        self.msg = msg
+        self.kept = kept
+
+    def message(self, decode: Decode, header: dict[str, str]) -> Any:
+        """What the callback of a subscription with one callback receives."""
+        msg = self.msg
+        if getattr(decode, "msg_class", None) is not msg.__class__:
+            return self.messages([decode], header)[0]
+        if self.kept:
+            msg = clone(msg)  # a latched message, kept as published
+        else:
+            self.kept = True  # the usual case: the callback takes the copy made at publish
+        msg._connection_header = header
+        return msg
+
+    def messages(self, decoders: list[Decode], header: dict[str, str]) -> list[Any]:
+        """What each of ``decoders``' callbacks receives, in order: copies made before any
+        callback runs, so that none sees what another does to its message."""
+        msg = self.msg
+        cls = msg.__class__
+        out: list[Any] = []
+        frame: bytes | None = None
+        for decode in decoders:
+            if getattr(decode, "msg_class", None) is cls:
+                copy = clone(msg) if self.kept or out else msg
+                copy._connection_header = header
+                out.append(copy)
+            else:
+                if frame is None:
+                    frame = serialize_frame(msg)[4:]
+                out.append(decode(frame, header))
+        if not self.kept:
+            self.kept = True  # handed out: a latched replay copies it
+        return out
 
 
 class LocalLink:

@@ -40,10 +40,11 @@ from typing import TYPE_CHECKING
 
 from rosx.msg.codec.clone import clone
 from rosx.msg.codec.message import Message as MessageBase
+from rosx.msg.codec.message import serialize_frame
 from rosx.node import slices, unixros
 from rosx.node.incoming import connection_ids, describe_connection
+from rosx.node.local import INTRAPROCESS, LocalMessage
 from rosx.node.outgoing import OutgoingStream, configure_nodelay
-from rosx.node.receiver import LocalMessage
 from rosx.wire.header import encode_header
 from rosx.wire.tcpros import Publication as PublicationInfo
 
@@ -66,10 +67,6 @@ if TYPE_CHECKING:
             """A subscriber left; ``remaining`` are still connected."""
 
 
-#: The transport name ``getBusInfo`` reports for a subscriber of this process (roscpp's).
-INTRAPROCESS = "INTRAPROCESS"
-
-
 def _on_this_machine(sock: socket.socket, peer: str) -> bool:
     """Whether a TCP connection's peer is this machine: a loopback address, or the connection's
     own address at both ends."""
@@ -77,13 +74,6 @@ def _on_this_machine(sock: socket.socket, peer: str) -> bool:
         return ipaddress.ip_address(peer).is_loopback or peer == sock.getsockname()[0]
     except (OSError, ValueError):
         return False
-
-
-def serialize_frame(msg: Message) -> bytes:
-    """``msg`` in the ROS 1 wire format, as one TCPROS frame (uint32 length prefix first)."""
-    if isinstance(msg, MessageBase):
-        return msg._frame()  # generated for a type of a fixed size
-    return MessageBase._frame(msg)  # a class of another library: through its `serialize`
 
 
 class SubscriberLink:

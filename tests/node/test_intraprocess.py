@@ -8,10 +8,10 @@ from collections.abc import Callable
 from typing import Any
 
 from rosx.msg.codec.classes import get_message_class
+from rosx.msg.codec.message import serialize_frame
 from rosx.node import Node, RawMessage
 from rosx.node import receiver as receiver_module
 from rosx.node.local import LocalLink
-from rosx.node.publication import serialize_frame
 from tests.support.cli import rosx_process
 from tests.support.procs import wait_for
 

@@ -19,8 +19,8 @@ from xmlrpc.server import SimpleXMLRPCServer
 import pytest
 
 from rosx.msg.codec.classes import get_message_class
+from rosx.msg.codec.message import serialize_frame
 from rosx.node import Node, rosout, subscription
-from rosx.node.publication import serialize_frame
 from rosx.transport.client import call
 from rosx.wire.framing import FrameReader
 from rosx.wire.header import decode_header, encode_header

@@ -103,28 +103,20 @@ class Message:
         return buff.getvalue()
 
     def serialize_numpy(self, buff: Writable, numpy: ModuleType) -> None:
-        """As `serialize`, taking numeric arrays as numpy arrays."""
-        from rosx.msg.codec.codegen import variant  # noqa: PLC0415 - generated on first use
-
-        variant(type(self), "serialize_numpy")(self, buff, numpy)
+        """As `serialize`, taking numeric arrays as numpy arrays (generated per type)."""
+        self.serialize(buff)
 
     def deserialize_numpy(self: _M, data: bytes, numpy: ModuleType) -> _M:
-        """As `deserialize`, giving numeric arrays (not ``uint8[]``) as numpy arrays."""
-        from rosx.msg.codec.codegen import variant  # noqa: PLC0415 - generated on first use
-
-        result: _M = variant(type(self), "deserialize_numpy")(self, data, numpy)
-        return result
+        """As `deserialize`, giving numeric arrays (not ``uint8[]``) as numpy arrays
+        (generated per type)."""
+        return self.deserialize(data)
 
     def _get_types(self) -> list[str]:
         return self._slot_types
 
     def _check_types(self, exc: BaseException | None = None) -> None:
-        """Raise `SerializationError` naming the first field that cannot be written."""
-        from rosx.msg.codec.checks import find_problem  # noqa: PLC0415 - only on the error path
-
-        problem = find_problem(self)
-        if problem is not None:
-            raise SerializationError(problem)
+        """Raise `SerializationError` naming the first field that cannot be written (each
+        generated type checks its fields; a message without fields has none to check)."""
         if exc is not None:
             raise SerializationError(str(exc))
 
@@ -162,10 +154,6 @@ class Message:
         for name, value in zip(self.__slots__, state, strict=False):
             setattr(self, name, value)
 
-    def __reduce__(self) -> tuple[Callable[..., Message], tuple[str], list[Any]]:
-        # Classes are built at run time, so a pickle names the type, not a module attribute.
-        return _restore, (self._type,), self.__getstate__()
-
     def __copy__(self: _M) -> _M:
         clone = object.__new__(type(self))
         clone.__setstate__(self.__getstate__())
@@ -185,6 +173,15 @@ class ServiceDefinition:
     _md5sum: ClassVar[str] = ""
     _request_class: ClassVar[type[Message]]
     _response_class: ClassVar[type[Message]]
+
+
+def serialize_frame(msg: Any) -> bytes:
+    """``msg`` in the ROS 1 wire format as one TCPROS frame (uint32 length prefix first): a
+    class of this codec through its generated ``_frame``, another library's through its
+    ``serialize``."""
+    if isinstance(msg, Message):
+        return msg._frame()
+    return Message._frame(msg)
 
 
 def assign_fields(msg: Message, args: tuple[Any, ...], kwds: dict[str, Any]) -> None:
@@ -240,13 +237,6 @@ def _plain_format(msg: Message) -> str:
     return f"{msg._type}({fields})"
 
 
-def _restore(type_name: str) -> Message:
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - classes imports this module
-
-    cls = get_message_class(type_name)
-    return object.__new__(cls)
-
-
 __all__ = [
     "DeserializationError",
     "Message",
@@ -255,4 +245,5 @@ __all__ = [
     "ServiceDefinition",
     "Writable",
     "assign_fields",
+    "serialize_frame",
 ]
