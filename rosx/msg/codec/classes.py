@@ -11,11 +11,15 @@ from __future__ import annotations
 
 import threading
 import weakref
+from typing import TYPE_CHECKING, Any
 
 from rosx.msg.codec.codegen import Resolver, build_message_class
 from rosx.msg.codec.message import Message, ServiceDefinition
 from rosx.msg.parser import InvalidMsgSpecError
 from rosx.msg.store import TypeStore, default_store
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
 
 #: genpy accepts ``Header`` alone for ``std_msgs/Header``.
 _ALIASES = {"Header": "std_msgs/Header"}
@@ -46,7 +50,11 @@ class _Classes:
                 if not field.is_builtin:
                     self.message(field.base_type)
             built: type[Message] = build_message_class(
-                spec, self.store.md5(name), self.store.full_text(name), self.resolver
+                spec,
+                self.store.md5(name),
+                self.store.full_text(name),
+                self.resolver,
+                {"__reduce__": _reduce},
             )
         finally:
             self.building.pop()
@@ -68,6 +76,17 @@ class _Classes:
             }
             cls = self.services[name] = type(spec.short_name, (ServiceDefinition,), namespace)
         return cls
+
+
+def _reduce(msg: Message) -> tuple[Callable[[str], Message], tuple[str], list[Any]]:
+    # Classes are built at run time, so a pickle names the type, not a module attribute.
+    return _restore, (msg._type,), msg.__getstate__()
+
+
+def _restore(type_name: str) -> Message:
+    """An empty message of type ``type_name`` (unpickling: its state is set after)."""
+    cls = get_message_class(type_name)
+    return object.__new__(cls)
 
 
 _lock = threading.RLock()

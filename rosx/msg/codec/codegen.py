@@ -5,7 +5,9 @@ As genpy does at build time, rosx writes Python source per message type and exec
 (at first use of the type): constructors that fill defaults without loops, and a codec in the
 ROS 1 wire format whose bytes are genpy's (see `serializer` and `deserializer`). The numpy
 variants (``serialize_numpy``/``deserialize_numpy``) and the variant that decodes invalid UTF-8
-with replacement characters are generated only when first needed.
+with replacement characters are generated only when first needed. Every method of a generated
+class that depends on its type is given here, to the class, so the base class
+(`rosx.msg.codec.message.Message`) never calls up into its generator.
 """
 
 from __future__ import annotations
@@ -15,7 +17,12 @@ from collections.abc import Callable
 from typing import Any
 
 from rosx.msg.codec import deserializer, serializer
-from rosx.msg.codec.message import DeserializationError, Message, assign_fields
+from rosx.msg.codec.message import (
+    DeserializationError,
+    Message,
+    SerializationError,
+    assign_fields,
+)
 from rosx.msg.codec.rostime import Duration, Time
 from rosx.msg.codec.source import Source, default_expression, python_name, python_names
 from rosx.msg.codec.wiretypes import BYTE_ARRAY_TYPES, TIME_CHARS
@@ -35,8 +42,17 @@ class Resolver:
         self.class_of = class_of
 
 
-def build_message_class(spec: MsgSpec, md5sum: str, full_text: str, resolver: Resolver) -> type:
-    """The genpy-style class of ``spec``; the classes of embedded types must be buildable."""
+def build_message_class(
+    spec: MsgSpec,
+    md5sum: str,
+    full_text: str,
+    resolver: Resolver,
+    methods: dict[str, Callable[..., Any]] | None = None,
+) -> type:
+    """The genpy-style class of ``spec``; the classes of embedded types must be buildable.
+
+    ``methods`` are added to the class as they are (the class registry's pickling support).
+    """
     src = Source(spec.full_name, _RUNTIME)
     _write_init(src, spec, resolver)
     serializer.write_serializer(src, spec, resolver.lookup, "serialize", numpy=False)
@@ -68,6 +84,10 @@ def build_message_class(spec: MsgSpec, md5sum: str, full_text: str, resolver: Re
         "__init__": code["__init__"],
         "serialize": code["serialize"],
         "deserialize": code["deserialize"],
+        "serialize_numpy": _serialize_numpy,
+        "deserialize_numpy": _deserialize_numpy,
+        "_check_types": _check_types,
+        **(methods or {}),
     }
     if framed:
         namespace["_frame"] = code["_frame"]
@@ -107,6 +127,28 @@ def variant(cls: type[Message], name: str) -> Callable[..., Any]:
             )
         function = variants[name] = src.compile()[name]
     return function
+
+
+def _serialize_numpy(self: Message, buff: Any, numpy: Any) -> None:
+    """As ``serialize``, taking numeric arrays as numpy arrays."""
+    variant(type(self), "serialize_numpy")(self, buff, numpy)
+
+
+def _deserialize_numpy(self: Message, data: bytes, numpy: Any) -> Message:
+    """As ``deserialize``, giving numeric arrays (not ``uint8[]``) as numpy arrays."""
+    result: Message = variant(type(self), "deserialize_numpy")(self, data, numpy)
+    return result
+
+
+def _check_types(self: Message, exc: BaseException | None = None) -> None:
+    """Raise `SerializationError` naming the first field that cannot be written."""
+    from rosx.msg.codec.checks import find_problem  # noqa: PLC0415 - only on the error path
+
+    problem = find_problem(self)
+    if problem is not None:
+        raise SerializationError(problem)
+    if exc is not None:
+        raise SerializationError(str(exc))
 
 
 # -- constructors ---------------------------------------------------------------------------

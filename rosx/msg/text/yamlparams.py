@@ -153,36 +153,9 @@ def radians(text: str) -> float:
 
 
 def _arithmetic(expression: str) -> float:
-    import ast  # noqa: PLC0415 - only angle expressions need it
-    import operator  # noqa: PLC0415
+    from rosx.expression import arithmetic  # noqa: PLC0415 - only angle expressions need it
 
-    binary: dict[type, Any] = {
-        ast.Add: operator.add,
-        ast.Sub: operator.sub,
-        ast.Mult: operator.mul,
-        ast.Div: operator.truediv,
-        ast.FloorDiv: operator.floordiv,
-        ast.Mod: operator.mod,
-        ast.Pow: operator.pow,
-    }
-    unary: dict[type, Any] = {ast.UAdd: operator.pos, ast.USub: operator.neg}
-
-    def value_of(node: ast.AST) -> float:
-        if isinstance(node, ast.Expression):
-            return value_of(node.body)
-        if isinstance(node, ast.Constant) and isinstance(node.value, int | float):
-            return float(node.value)
-        if isinstance(node, ast.Name) and node.id == "pi":
-            return math.pi
-        if isinstance(node, ast.BinOp) and type(node.op) in binary:
-            if isinstance(node.op, ast.Pow) and abs(value_of(node.right)) > 1024:
-                raise ValueError("exponent too large")
-            return float(binary[type(node.op)](value_of(node.left), value_of(node.right)))
-        if isinstance(node, ast.UnaryOp) and type(node.op) in unary:
-            return float(unary[type(node.op)](value_of(node.operand)))
-        raise ValueError(f"not an arithmetic expression: {expression}")
-
-    return value_of(ast.parse(expression.strip(), mode="eval"))
+    return arithmetic(expression, {"pi": math.pi})
 
 
 @cache
