@@ -11,8 +11,9 @@ The rules (wiki roslaunch/XML, "substitution args"):
   from an arg); each replacement replaces every identical ``$(…)`` of the text;
 * ``$(eval EXPR)`` must span the whole attribute; EXPR is a Python expression over the args
   (bare names), ``arg()``, ``env()``, ``optenv()``, ``find()``, ``anon()``, ``dirname()``,
-  ``true``/``false`` and `math` (`rosx.launch.evaluate` evaluates it without Python's
-  ``eval``); its value is ``str()``-ed;
+  ``true``/``false``, everything public in `math` and Python's harmless built-in functions
+  (`evaluate`, with `rosx.expression`'s interpreter instead of Python's ``eval``); its value is
+  ``str()``-ed;
 * ``$(anon id)`` gives the same name for the same id within one scope.
 
 Missing args raise `MissingArgError` (roslaunch's ``ArgException``), everything else
@@ -24,7 +25,11 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
+
+from rosx.expression import MATH, SAFE_BUILTINS
+from rosx.expression import evaluate as evaluate_expression
+from rosx.launch.values import convert_value
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
@@ -159,8 +164,6 @@ def resolve(text: str, scope: Scope, world: World) -> str:
     if "$" not in text:
         return text
     if text.startswith("$(eval ") and text.endswith(")"):
-        from rosx.launch.evaluate import evaluate  # noqa: PLC0415
-
         return evaluate(text[7:-1], scope, world)
     resolved = _pass(text, scope, world, first=True)
     return _pass(resolved, scope, world, first=False)
@@ -231,6 +234,66 @@ def dirname(scope: Scope) -> str:
     return os.path.normpath(Path(scope.filename).absolute().parent)
 
 
+class EvalError(SubstitutionError):
+    """The expression of an ``$(eval)`` cannot be evaluated; ``str()`` says why."""
+
+
+def evaluate(expression: str, scope: Scope, world: World) -> str:
+    """``str()`` of the value of ``expression`` (the text inside ``$(eval …)``).
+
+    The names are roslaunch's: the args by their bare names and ``arg(name)`` (typed as
+    ``<param>``'s "auto" type does it: ``1`` is an int, ``true`` a bool), ``env``, ``optenv``,
+    ``find``, ``anon``, ``dirname``, ``true``/``false``/``True``/``False``, `math`'s, and the
+    harmless built-in functions; any text holding ``__`` is refused, as roslaunch refuses it.
+
+    Raises:
+        MissingArgError: ``arg(name)`` of an arg without value.
+        EvalError: Anything else wrong with the expression.
+    """
+    if "__" in expression:
+        raise EvalError("$(eval ...) may not contain double underscore expressions")
+    functions: dict[str, Any] = {
+        "anon": lambda name: anon(name, scope, world),
+        "arg": lambda name: convert_value(arg(name, scope), "auto"),
+        "dirname": lambda: dirname(scope),
+        "true": True,
+        "false": False,
+        "True": True,
+        "False": False,
+        "env": world.env,
+        "optenv": world.optenv,
+        "find": world.find,
+        **MATH,
+    }
+
+    def lookup(name: str) -> Any:
+        if name in functions:
+            return functions[name]
+        if name in scope.args:
+            return convert_value(scope.args[name], "auto")
+        if name in SAFE_BUILTINS:
+            return SAFE_BUILTINS[name]
+        raise NameError(f"name '{name}' is not defined")
+
+    try:
+        return str(evaluate_expression(expression, lookup))
+    except SyntaxError as error:
+        raise EvalError(f"invalid syntax in $(eval {expression}): {error.msg}") from None
+    except SubstitutionError:
+        raise
+    except (
+        ArithmeticError,
+        ValueError,
+        TypeError,
+        LookupError,
+        AttributeError,
+        NameError,
+    ) as error:
+        raise EvalError(f"$(eval {expression}): {error}") from None
+    except RecursionError:
+        raise EvalError(f"$(eval {expression}): expression too deep") from None
+
+
 def _find(text: str, whole: str, args: list[str], world: World) -> str:
     # Only the first occurrence is replaced. The word that follows it (up to a space) is a path
     # inside the package, joined to the package's directory after one leading separator is
@@ -254,6 +317,7 @@ def _find(text: str, whole: str, args: list[str], world: World) -> str:
 
 
 __all__ = [
+    "EvalError",
     "MissingArgError",
     "MissingPackageError",
     "Scope",
@@ -263,5 +327,6 @@ __all__ = [
     "arg",
     "collect",
     "dirname",
+    "evaluate",
     "resolve",
 ]

@@ -6,8 +6,7 @@ import math
 
 import pytest
 
-from rosx.launch.evaluate import EvalError, evaluate
-from rosx.launch.substitution import MissingArgError, Scope, World, resolve
+from rosx.launch.substitution import EvalError, MissingArgError, Scope, World, evaluate, resolve
 from rosx.packages.index import PackageIndex
 
 
