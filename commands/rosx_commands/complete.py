@@ -350,7 +350,7 @@ def candidates(line: _Line) -> list[str]:
     """Every candidate for the current word (before filtering by what is typed)."""
     command = Path(line.word(0)).name
     if command == "rosx" and line.cword == 1:
-        from rosx_commands.main import TOOLS  # noqa: PLC0415
+        from rosx_commands.tools import TOOLS  # noqa: PLC0415
 
         return [*TOOLS, "roscd", "rosls"]
     if command == "rosx":

@@ -9,7 +9,7 @@ import typer
 
 import rosx
 from rosx_commands.context import CommandError, Environment, ExitStatus
-from rosx_commands.main import TOOLS, load_tool
+from rosx_commands.tools import TOOLS, load_tool
 
 #: typer carries click's UsageError (its own copy in recent releases) as BadParameter's base.
 UsageError: type[Exception] = next(

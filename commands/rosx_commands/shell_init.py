@@ -23,7 +23,7 @@ def shell_init(argv: Sequence[str], env: Environment) -> int:
     from rosx.workspace.shell import ROS_COMMANDS, SHELLS  # noqa: PLC0415
     from rosx.workspace.shell import shell_init as code  # noqa: PLC0415
     from rosx_commands.invocation import self_command  # noqa: PLC0415
-    from rosx_commands.main import TOOLS  # noqa: PLC0415
+    from rosx_commands.tools import TOOLS  # noqa: PLC0415
 
     args = list(argv)
     if args and args[0] in ("-h", "--help"):

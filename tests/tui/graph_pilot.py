@@ -14,9 +14,8 @@ from textual.widgets import Static
 from rosx.graph.fetch import fetch_state
 from rosx.graph.options import GraphOptions, Mode
 from rosx_commands.context import Environment
-from rosx_commands.rqt_graph import CALLER_ID
 from rosx_commands.rqt_graph.app import GraphApp, make_graph_app
-from rosx_commands.rqt_graph.source import LiveSource
+from rosx_commands.rqt_graph.source import CALLER_ID, LiveSource
 from rosx_commands.rqt_graph.view import APPEARED, LINKED, NODE, SELECTED, VANISHED, GraphView
 
 #: Wide enough for a three-vertex graph beside the details panel.

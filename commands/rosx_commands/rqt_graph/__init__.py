@@ -11,10 +11,7 @@ from collections.abc import Sequence
 
 from rosx_commands.cli import ToolParser, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
-
-CALLER_ID = "/rqt_graph"
-#: Seconds between two refreshes of the live view.
-REFRESH_PERIOD = 1.5
+from rosx_commands.rqt_graph.source import CALLER_ID, REFRESH_PERIOD
 
 USAGE = """usage: %prog [options]
 

@@ -33,7 +33,7 @@ from rosx.graph.options import GraphOptions, Mode, NameFilter
 from rosx.graph.text import Drawing, draw
 from rosx.graph.view import Changes, Kind, ViewGraph, changes, vanished, with_ghosts
 from rosx_commands.paneapp import PaneApp
-from rosx_commands.rqt_graph.source import GraphSource
+from rosx_commands.rqt_graph.source import CALLER_ID, REFRESH_PERIOD, GraphSource, LiveSource
 from rosx_commands.rqt_graph.view import GraphView, Marks
 
 _MODES = list(Mode)
@@ -298,9 +298,6 @@ class GraphApp(PaneApp[GraphPane]):
 
 def graph_tab(env: Any) -> GraphPane:
     """rqt_graph as a tab of ``rosx rqt``: live, with rqt_graph's defaults."""
-    from rosx_commands.rqt_graph import CALLER_ID, REFRESH_PERIOD  # noqa: PLC0415
-    from rosx_commands.rqt_graph.source import LiveSource  # noqa: PLC0415
-
     source = LiveSource(env, env.master_uri, CALLER_ID, True)
     return GraphPane(source, GraphOptions(), REFRESH_PERIOD)
 
@@ -313,9 +310,6 @@ def make_graph_app(
 
 
 def run_app(env: Any, uri: str, options: GraphOptions, period: float, bus_info: bool) -> int:
-    from rosx_commands.rqt_graph import CALLER_ID  # noqa: PLC0415
-    from rosx_commands.rqt_graph.source import LiveSource  # noqa: PLC0415
-
     app = make_graph_app(LiveSource(env, uri, CALLER_ID, bus_info), options, period)
     app.run()
     return 0

@@ -15,6 +15,10 @@ from rosx.graph.view import Kind, Vertex
 from rosx_commands.context import MASTER_TIMEOUT, Environment, ExitStatus
 from rosx_commands.errors import command_error
 
+CALLER_ID = "/rqt_graph"
+#: Seconds between two refreshes of the live view.
+REFRESH_PERIOD = 1.5
+
 
 class GraphSource(Protocol):
     def snapshot(self) -> GraphState: ...
