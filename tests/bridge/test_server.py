@@ -1,0 +1,184 @@
+"""The WebSocket shell: bad input over a real connection (a status, the server still serving this
+client and the others), 1009 for an oversized frame, the Origin check, the token, and a slow
+client that never holds up the others."""
+
+from __future__ import annotations
+
+import json
+import time
+from collections.abc import Iterator
+from typing import Any
+
+import pytest
+from websockets.exceptions import ConnectionClosed, InvalidStatus
+from websockets.sync.client import ClientConnection, connect
+from websockets.typing import Origin
+
+from rosx.bridge.app import Bridge
+from tests.bridge.conftest import Running, start_bridge
+
+
+def receive_json(ws: ClientConnection, timeout: float = 10.0) -> dict[str, Any]:
+    data = json.loads(ws.recv(timeout=timeout))
+    assert isinstance(data, dict)
+    return data
+
+
+def next_op(ws: ClientConnection, op: str, timeout: float = 10.0) -> dict[str, Any]:
+    deadline = time.monotonic() + timeout
+    while True:
+        data = receive_json(ws, max(0.01, deadline - time.monotonic()))
+        if data["op"] == op:
+            return data
+
+
+def pose_arrives(ws: ClientConnection) -> None:
+    ws.send(json.dumps({"op": "subscribe", "topic": "/turtle1/pose", "id": "pose"}))
+    assert next_op(ws, "publish")["topic"] == "/turtle1/pose"
+    ws.send(json.dumps({"op": "unsubscribe", "topic": "/turtle1/pose", "id": "pose"}))
+
+
+@pytest.fixture
+def ws(running: Running) -> Iterator[ClientConnection]:
+    with connect(running.url, max_size=None) as conn:
+        yield conn
+
+
+BAD = [
+    ('{"op": "publish", "topic": "/a"', "Invalid JSON (Expecting ',' delimiter"),
+    ("[]", "Expected a JSON object with an 'op' field but received an array"),
+    ('{"id": 1}', "Received a message without an op."),
+    ('{"op": "dance"}', "Unknown operation: dance."),
+    (
+        '{"op": "subscribe", "topic": "/x", "type": "no/Type"}',
+        "subscribe: Unknown message type no/Type",
+    ),
+    ('{"op": "advertise", "topic": "/cmd", "type": "geometry_msgs/Twist"}', None),
+    (
+        '{"op": "publish", "topic": "/cmd", "msg": {"linear": {"x": "a"}}}',
+        "publish: geometry_msgs/Twist message requires a float64 for field linear.x, but got a string",
+    ),
+    (
+        '{"op": "call_service", "service": "/nobody_serves_this"}',
+        "call_service /nobody_serves_this: service [/nobody_serves_this] unavailable",
+    ),
+]
+
+
+def test_bad_input_gets_a_status_and_the_connection_goes_on(
+    ws: ClientConnection, running: Running
+) -> None:
+    with connect(running.url) as other:
+        for frame, text in BAD:
+            ws.send(frame)
+            if text is None:
+                continue
+            status = next_op(ws, "status")
+            assert (status["level"], status["msg"][: len(text)]) == ("error", text)
+        pose_arrives(ws)
+        pose_arrives(other)
+
+
+def test_an_oversized_frame_closes_with_1009_after_a_status(master: str) -> None:
+    bridge, _ = start_bridge(master, rosapi=False, max_message=1000)
+    try:
+        url = f"ws://127.0.0.1:{bridge.port}"
+        with connect(url) as ws, connect(url) as other:
+            ws.send("x" * 5000)
+            status = receive_json(ws)
+            assert status["op"] == "status"
+            assert status["msg"].endswith("the limit is 1000 bytes (--max-message-size)")
+            with pytest.raises(ConnectionClosed) as closed:
+                ws.recv(timeout=10)
+            assert closed.value.rcvd is not None
+            assert closed.value.rcvd.code == 1009
+            other.send(json.dumps({"op": "set_level", "level": "info"}))
+            assert next_op(other, "status")["msg"] == "Status level set to info"
+    finally:
+        bridge.shutdown("test over")
+
+
+def test_a_foreign_page_is_refused_and_a_local_one_served(running: Running) -> None:
+    with pytest.raises(InvalidStatus) as refused:
+        connect(running.url, origin=Origin("https://evil.example"))
+    assert refused.value.response.status_code == 403
+    assert b"Origin https://evil.example is not allowed" in (refused.value.response.body or b"")
+    with connect(running.url, origin=Origin("http://localhost:8080")) as ws:
+        pose_arrives(ws)
+    assert any(
+        "Refused a connection from a page of https://evil.example" in line for line in running.lines
+    )
+
+
+def test_a_token_guards_the_bridge(master: str) -> None:
+    bridge, _ = start_bridge(master, rosapi=False, token="let-me-in")
+    try:
+        url = f"ws://127.0.0.1:{bridge.port}"
+        with connect(url) as ws:
+            ws.send(json.dumps({"op": "subscribe", "topic": "/rosout"}))
+            assert (
+                next_op(ws, "status")["msg"]
+                == "subscribe: not authenticated: send an 'auth' op first"
+            )
+            ws.send(json.dumps({"op": "auth", "mac": "let-me-in"}))
+            ws.send(json.dumps({"op": "set_level", "level": "info"}))
+            assert next_op(ws, "status")["msg"] == "Status level set to info"
+        with connect(url) as ws:
+            ws.send(json.dumps({"op": "auth", "mac": "wrong"}))
+            with pytest.raises(ConnectionClosed) as closed:
+                while True:
+                    ws.recv(timeout=10)
+            assert closed.value.rcvd is not None
+            assert closed.value.rcvd.code == 1008
+        with connect(url + "/?token=let-me-in") as ws:
+            ws.send(json.dumps({"op": "set_level", "level": "info"}))
+            assert next_op(ws, "status")["msg"] == "Status level set to info"
+    finally:
+        bridge.shutdown("test over")
+
+
+def test_a_slow_client_loses_its_oldest_messages_not_the_others_time(master: str) -> None:
+    bridge, _ = start_bridge(master, rosapi=False)
+    try:
+        _slow_and_fast(bridge)
+    finally:
+        bridge.shutdown("test over")
+
+
+def _slow_and_fast(bridge: Bridge) -> None:
+    from rosx.msg.codec.classes import get_message_class
+    from rosx.node import Node
+
+    url = f"ws://127.0.0.1:{bridge.port}"
+    string_class = get_message_class("std_msgs/String")
+    subscribe = {"op": "subscribe", "topic": "/bulk", "type": "std_msgs/String", "id": "s"}
+    count, pad = 3000, "x" * 10_000
+    with connect(url) as slow, connect(url, max_size=None) as fast:
+        slow.send(json.dumps({**subscribe, "queue_length": 5}))
+        fast.send(json.dumps({**subscribe, "queue_length": count}))
+        publisher = Node(
+            "bulk", master_uri=bridge.options.master_uri, environ=bridge.options.environ
+        ).start()
+        try:
+            pub = publisher.advertise("/bulk", string_class, queue_size=None)
+            deadline = time.monotonic() + 10
+            while pub.get_num_connections() < 1 and time.monotonic() < deadline:
+                time.sleep(0.01)
+            # The slow client reads nothing while 30 MB go out: its socket fills, then its queue.
+            for n in range(count):
+                pub.publish(string_class(f"{n} {pad}"))
+            seen = [int(next_op(fast, "publish")["msg"]["data"].split()[0]) for _ in range(count)]
+            assert seen == list(range(count))
+            server = bridge.server
+            assert server is not None
+            (slow_conn,) = [
+                c for c in server.connections if c.ws.remote_address == slow.local_address
+            ]
+            assert slow_conn.dropped_total() > 0
+            got: list[int] = []
+            while not got or got[-1] != count - 1:
+                got.append(int(next_op(slow, "publish")["msg"]["data"].split()[0]))
+            assert len(got) + slow_conn.dropped_total() == count
+            assert got == sorted(got)
+        finally:
+            publisher.shutdown("test over")
