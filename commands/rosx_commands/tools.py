@@ -53,6 +53,10 @@ TOOLS: dict[str, tuple[str, str]] = {
     ),
     "rqt": ("rosx_commands.rqt:rqt", "The rqt tools as tabs of one terminal app."),
     "sim": ("rosx_commands.sim:sim", "Run a master, turtlesim and teleop in one terminal UI."),
+    "rosbridge": (
+        "rosx_commands.rosbridge:rosbridge",
+        "Serve the ROS graph to browser tools (rosbridge v2, Foxglove WebSocket).",
+    ),
     "catkin_create_pkg": (
         "rosx_commands.catkin_create_pkg:catkin_create_pkg",
         "Create a new catkin package.",
