@@ -41,7 +41,7 @@ from rosx.wire.xmlrpc_http import build_request  # noqa: E402
 ROS1_PYTHON = os.environ.get("ROS1_PYTHON", "/usr/bin/python3")
 ROSMASTER = "/usr/bin/rosmaster"
 
-_ROSX_MASTER = """
+ROSX_MASTER = """
 import sys
 from rosx.core import Core
 with Core(int(sys.argv[1]), {}) as core:
@@ -74,7 +74,7 @@ def wait_ready(uri: str) -> None:
 def start_rosx() -> tuple[subprocess.Popen[bytes], str]:
     port = free_port()
     proc = subprocess.Popen(
-        [sys.executable, "-c", _ROSX_MASTER, str(port)],
+        [sys.executable, "-c", ROSX_MASTER, str(port)],
         env={**os.environ, "PYTHONPATH": str(ROOT)},
         stdout=subprocess.DEVNULL,
     )

@@ -48,6 +48,7 @@ GUARDED = {
     "rosx/launch/monitor.py": "roslaunch stops each node's process group (killpg, SIGKILL)",
     "rosx/launch/zygote.py": "roslaunch's fork server for Python nodes (fork, setsid, SIGCHLD)",
     "rosx/node/slices.py": "short time slices and hand-offs (uname, sched_getscheduler, sched_yield)",
+    "rosx/transport/descriptors.py": "the descriptor limit its servers keep a reserve under (resource)",
 }
 
 _FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)

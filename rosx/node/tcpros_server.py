@@ -9,6 +9,9 @@ that does not parse, names neither a topic nor a service, or that the handler re
 
 The same server can also listen on a Unix socket (`start_unix`, for `rosx.node.unixros`):
 connections there go through the same handshake and the same handler.
+
+Connections still waiting for their header are the idle ones `rosx.transport.descriptors` may
+close, oldest first, when the process runs short of file descriptors.
 """
 
 from __future__ import annotations
@@ -19,13 +22,14 @@ import socket
 from typing import TYPE_CHECKING
 
 from rosx.node import unixros
+from rosx.transport import descriptors
 from rosx.wire.errors import ProtocolError
 from rosx.wire.framing import DEFAULT_MAX_HEADER_SIZE, FrameReader
 from rosx.wire.header import decode_header, encode_header
 from rosx.wire.tcpros import NO_TOPIC_OR_SERVICE, connection_kind
 
 if TYPE_CHECKING:
-    from collections.abc import Awaitable, Callable
+    from collections.abc import Awaitable, Callable, Iterator
 
     from rosx.transport.loop_thread import LoopThread
 
@@ -35,8 +39,6 @@ if TYPE_CHECKING:
 
 #: A peer has this long to send its whole header.
 HEADER_TIMEOUT = 30.0
-#: Seconds before listening again after an accept failed (out of file descriptors, say).
-ACCEPT_PAUSE = 0.05
 
 
 class TcprosServer:
@@ -45,11 +47,12 @@ class TcprosServer:
     def __init__(self, io: LoopThread, handler: Handler) -> None:
         self._io = io
         self._handler = handler
-        self._sock: socket.socket | None = None
-        self._unix: socket.socket | None = None
+        self._listener: descriptors.Listener | None = None
         #: The Unix socket's address (``@name``), once listening there.
         self.unix_address: str | None = None
         self._tasks: set[asyncio.Task[None]] = set()
+        # Handshakes still waiting for their header, with when they began.
+        self._waiting: dict[asyncio.Task[None], float] = {}
         self.port = 0
 
     def start(self, bind: str, port: int = 0) -> int:
@@ -58,53 +61,42 @@ class TcprosServer:
         sock = socket.socket(family, socket.SOCK_STREAM)
         sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
         sock.bind((bind, port))
-        sock.listen(128)
+        sock.listen(descriptors.BACKLOG)
         sock.setblocking(False)
-        self._sock = sock
         self.port = sock.getsockname()[1]
         self._listen(sock)
         return self.port
 
     def start_unix(self, address: str) -> None:
         """Listen on the abstract Unix socket ``address`` too (`rosx.node.unixros`). On the loop."""
-        sock = unixros.listen(address)
-        self._unix = sock
+        self._listen(unixros.listen(address))
         self.unix_address = address
-        self._listen(sock)
+
+    def _listen(self, sock: socket.socket) -> None:
+        if self._listener is None:
+            self._listener = descriptors.Listener(self._io.loop, self._accepted)
+            descriptors.watch(self)
+        self._listener.listen(sock)
 
     def _spawn(self, coro: Awaitable[None]) -> None:
         task: asyncio.Task[None] = self._io.loop.create_task(coro)  # type: ignore[arg-type]
         self._tasks.add(task)
         task.add_done_callback(self._tasks.discard)
 
-    # Accepting is a reader callback of the loop, not a task awaiting `loop.sock_accept`: a
-    # connection that arrives as the server closes would then complete an accept whose
-    # future was cancelled, and asyncio prints that error's traceback (CPython 3.10-3.13).
+    def _accepted(self, sock: socket.socket) -> None:
+        self._spawn(self._handshake(sock))
 
-    def _listen(self, listener: socket.socket) -> None:
-        self._io.loop.add_reader(listener.fileno(), self._accept, listener)
-
-    def _accept(self, listener: socket.socket) -> None:
-        """Take every connection waiting on ``listener``. On the loop."""
-        while listener.fileno() >= 0:
-            try:
-                sock, _ = listener.accept()
-            except (BlockingIOError, InterruptedError):
-                return
-            except OSError:
-                # Out of file descriptors, say: listen again a little later, do not spin.
-                self._io.loop.remove_reader(listener.fileno())
-                self._io.loop.call_later(ACCEPT_PAUSE, self._resume, listener)
-                return
-            sock.setblocking(False)
-            self._spawn(self._handshake(sock))
-
-    def _resume(self, listener: socket.socket) -> None:
-        if listener.fileno() >= 0:
-            self._listen(listener)
+    def idle_connections(self) -> Iterator[tuple[float, Callable[[], object]]]:
+        """Connections that have not sent their header yet, with when they were accepted:
+        what `rosx.transport.descriptors` may close when descriptors run short."""
+        for task, since in self._waiting.items():
+            yield since, task.cancel
 
     async def _handshake(self, sock: socket.socket) -> None:
         reader = FrameReader(DEFAULT_MAX_HEADER_SIZE)
+        task = asyncio.current_task()
+        assert task is not None
+        self._waiting[task] = self._io.loop.time()
         try:
             header = await asyncio.wait_for(self._read_header(sock, reader), HEADER_TIMEOUT)
         except (ProtocolError, UnicodeDecodeError) as exc:
@@ -116,6 +108,8 @@ class TcprosServer:
         except asyncio.CancelledError:
             sock.close()
             return
+        finally:
+            self._waiting.pop(task, None)
         kind = connection_kind(header)
         if kind is None:
             await self._refuse(sock, NO_TOPIC_OR_SERVICE)
@@ -147,10 +141,8 @@ class TcprosServer:
 
     def close(self) -> None:
         """Stop listening and drop connections still in their handshake. On the loop."""
-        for listener in (self._sock, self._unix):
-            if listener is not None and listener.fileno() >= 0:
-                self._io.loop.remove_reader(listener.fileno())
-                listener.close()
-        self._sock = self._unix = None
+        descriptors.forget(self)
+        if self._listener is not None:
+            self._listener.close()
         for task in list(self._tasks):
             task.cancel()

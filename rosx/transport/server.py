@@ -20,7 +20,9 @@ A connection that sends nothing for `IDLE_TIMEOUT` seconds while no call of its 
 answered is closed (neither rosmaster nor ROS 1's nodes ever close one, so a master there dies
 of 1 024 forgotten connections). Clients lose nothing: rosx's clients, Python's
 ``xmlrpc.client`` (rospy, the ROS 1 tools) and roscpp's XmlRpc++ all reopen a kept-alive
-connection the server closed and send the call again.
+connection the server closed and send the call again. When the process runs short of file
+descriptors, the oldest idle connections are closed at once (`rosx.transport.descriptors`), so
+a master holding a thousand forgotten connections still answers the next call.
 """
 
 from __future__ import annotations
@@ -28,8 +30,10 @@ from __future__ import annotations
 import asyncio
 import inspect
 import logging
+import socket
 from collections.abc import Mapping
 
+from rosx.transport import descriptors
 from rosx.transport.address import http_uri
 from rosx.transport.errors import FaultError
 from rosx.wire.errors import HttpError, ProtocolError, UnencodableError
@@ -43,7 +47,7 @@ from rosx.wire.xmlrpc_http import (
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from collections.abc import Callable
+    from collections.abc import Callable, Iterator
     from typing import Any, TypeAlias
 
     Handler: TypeAlias = Callable[..., Any]
@@ -128,7 +132,7 @@ class XmlRpcServer:
         self.advertised_host = advertised_host or host
         self._requested_port = port
         self._max_body_size = max_body_size
-        self._server: asyncio.Server | None = None
+        self._listener: descriptors.Listener | None = None
         # Each connection's task and when it last received bytes (None while a call of its
         # own is being answered, which no timeout cuts short).
         self._connections: dict[asyncio.Task[None], float | None] = {}
@@ -149,33 +153,35 @@ class XmlRpcServer:
         Raises:
             OSError: the address cannot be bound (``errno.EADDRINUSE`` if the port is taken).
         """
-        self._server = await asyncio.start_server(
-            self._serve, self.host, self.port or self._requested_port, backlog=128
-        )
-        self.port = self._server.sockets[0].getsockname()[1]
+        loop = asyncio.get_running_loop()
+        listener = descriptors.Listener(loop, self._accepted)
+        for sock in descriptors.tcp_listeners(self.host, self.port or self._requested_port):
+            listener.listen(sock)
+        self._listener = listener
+        self.port = listener.sockets[0].getsockname()[1]
+        descriptors.watch(self)
         if self._sweeper is None:
-            self._sweeper = asyncio.get_running_loop().create_task(self._sweep())
+            self._sweeper = loop.create_task(self._sweep())
 
     def stop_listening(self) -> None:
         """Refuse new connections from now on; calls under way still get their replies."""
-        if self._server is not None:
-            self._server.close()
+        if self._listener is not None:
+            self._listener.close()
 
     async def close(self) -> None:
         """Stop listening and close every connection."""
-        server, self._server = self._server, None
+        listener, self._listener = self._listener, None
         sweeper, self._sweeper = self._sweeper, None
+        descriptors.forget(self)
         if sweeper is not None:
             sweeper.cancel()
-        if server is not None:
-            server.close()
+        if listener is not None:
+            listener.close()
         tasks = list(self._connections)
         for task in tasks:
             task.cancel()
         if tasks:
             await asyncio.gather(*tasks, return_exceptions=True)
-        if server is not None:
-            await server.wait_closed()
 
     # -- connections --------------------------------------------------------------------------
 
@@ -191,19 +197,35 @@ class XmlRpcServer:
                 if since is not None and since < limit:
                     task.cancel()
 
-    async def _serve(self, reader: asyncio.StreamReader, writer: asyncio.StreamWriter) -> None:
+    def idle_connections(self) -> Iterator[tuple[float, Callable[[], object]]]:
+        """Connections waiting for a call, with when they last received bytes: what
+        `rosx.transport.descriptors` may close when descriptors run short."""
+        for task, since in self._connections.items():
+            if since is not None:
+                yield since, task.cancel
+
+    def _accepted(self, sock: socket.socket) -> None:
+        loop = asyncio.get_running_loop()
+        task = loop.create_task(self._serve(sock))
+        self._connections[task] = loop.time()
+
+    async def _serve(self, sock: socket.socket) -> None:
         task = asyncio.current_task()
         assert task is not None
-        self._connections[task] = asyncio.get_running_loop().time()
+        writer: asyncio.StreamWriter | None = None
         try:
+            reader, writer = await asyncio.open_connection(sock=sock, limit=_READ_SIZE)
             await self._serve_requests(task, reader, writer)
         except (ConnectionError, TimeoutError, asyncio.CancelledError):
-            pass  # the peer went away, or the server is closing
+            pass  # the peer went away, the server is closing, or the connection was idle
         except OSError as exc:
             _log.debug("XML-RPC connection failed: %s", exc)
         finally:
             self._connections.pop(task, None)
-            writer.close()
+            if writer is not None:
+                writer.close()
+            else:
+                sock.close()
 
     async def _serve_requests(
         self,

@@ -55,15 +55,19 @@ def stop(process: subprocess.Popen[bytes] | subprocess.Popen[str], grace: float 
 def running(
     args: Sequence[str], env: dict[str, str], **kwargs: object
 ) -> Iterator[subprocess.Popen[bytes]]:
-    """Run ``args`` in its own process group for the duration of the block."""
+    """Run ``args`` in its own process group for the duration of the block (its standard
+    streams discarded unless ``kwargs`` say otherwise)."""
+    options: dict[str, object] = {
+        "stdin": subprocess.DEVNULL,
+        "stdout": subprocess.DEVNULL,
+        "stderr": subprocess.DEVNULL,
+        **kwargs,
+    }
     process = subprocess.Popen(
         list(args),
         env=env,
-        stdin=subprocess.DEVNULL,
-        stdout=subprocess.DEVNULL,
-        stderr=subprocess.DEVNULL,
         start_new_session=True,
-        **kwargs,  # type: ignore[call-overload]
+        **options,  # type: ignore[call-overload]
     )
     try:
         yield process
