@@ -19,6 +19,8 @@ from rosx.node import Node
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
 
+    from rosx.bridge.foxglove_server import FoxgloveServer
+
 
 @dataclass
 class BridgeOptions:
@@ -59,6 +61,7 @@ class Bridge:
         self.rosapi_node: Node | None = None
         self.graph: GraphSide | None = None
         self.server: BridgeServer | None = None
+        self.foxglove: FoxgloveServer | None = None
 
     def start(self) -> Bridge:
         """Start the nodes and bind the servers; returns self.
@@ -91,10 +94,29 @@ class Bridge:
             self.log(
                 f"Rosbridge WebSocket server started at ws://{_url_host(options.address)}:{self.server.port}"
             )
+            if options.foxglove_port is not None:
+                self._start_foxglove(options.foxglove_port)
         except BaseException:
             self.shutdown("start-up failed")
             raise
         return self
+
+    def _start_foxglove(self, port: int) -> None:
+        from rosx.bridge.foxglove_server import FoxgloveServer  # noqa: PLC0415 - when asked for
+
+        options = self.options
+        self.foxglove = FoxgloveServer(
+            self.node,
+            host=options.address,
+            port=port,
+            allow_origins=options.allow_origins,
+            token=options.token,
+            max_message=options.max_message,
+            log=self.log,
+        )
+        self.node.io.run(self.foxglove.start())
+        where = f"ws://{_url_host(options.address)}:{self.foxglove.port}"
+        self.log(f"Foxglove WebSocket server started at {where}")
 
     def _read_params(self) -> None:
         options, params = self.options, self.node.params
@@ -129,7 +151,7 @@ class Bridge:
 
     def shutdown(self, reason: str = "") -> None:
         """Close the servers and shut the nodes down."""
-        for server in (self.server,):
+        for server in (self.foxglove, self.server):
             if server is not None:
                 # the nodes must go down whatever the servers do
                 with contextlib.suppress(Exception):

@@ -21,7 +21,7 @@ import json
 import threading
 from collections import deque
 from concurrent.futures import ThreadPoolExecutor
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Generic, TypeVar
 from urllib.parse import parse_qs, urlsplit
 
 from websockets.asyncio.server import ServerConnection, serve
@@ -46,12 +46,14 @@ MAX_CONTROL = 10_000
 REQUEST_WORKERS = 32
 
 
-class Connection:
-    """One client: its session, its queues and its writer. Thread-safe where `Client` says."""
+S = TypeVar("S")
 
-    def __init__(
-        self, ws: ServerConnection, session: Session, loop: asyncio.AbstractEventLoop
-    ) -> None:
+
+class Connection(Generic[S]):
+    """One client: its session (a protocol's core), its queues and its writer. Thread-safe
+    where `rosx.bridge.graph_side.Client` says; the session is used under ``lock``."""
+
+    def __init__(self, ws: ServerConnection, session: S, loop: asyncio.AbstractEventLoop) -> None:
         self.ws = ws
         self.session = session
         self.lock = threading.Lock()
@@ -161,7 +163,7 @@ class BridgeServer:
         self.token = token
         self.max_message = max_message
         self.log = log
-        self.connections: set[Connection] = set()
+        self.connections: set[Connection[Session]] = set()
         self._server: Server | None = None
         self._pool = ThreadPoolExecutor(REQUEST_WORKERS, thread_name_prefix="rosx-bridge")
 
@@ -204,7 +206,7 @@ class BridgeServer:
         if token is not None and token in parse_qs(urlsplit(path).query).get("token", []):
             token = None
         session = Session(token=token, max_message=self.max_message, client=_host(ws))
-        connection = Connection(ws, session, loop)
+        connection: Connection[Session] = Connection(ws, session, loop)
         _status_before_refusal(ws, self.max_message)
         self.connections.add(connection)
         self.log(f"Client connected.  {len(self.connections)} clients total.")

@@ -1,0 +1,305 @@
+"""The Foxglove WebSocket server: the shell that moves `rosx.bridge.foxglove`'s frames.
+
+It shares the bridge's node and the rosbridge server's connection queues (`Connection`): one
+raw subscription per topic whoever subscribes, one publisher per topic clients publish. Every
+`POLL_PERIOD` seconds it reads the graph (topic types, and each new service's type, probed
+once) and lets each session advertise what changed. Foxglove clients send no ``Origin``
+unless they are pages; pages are checked as rosbridge's are. A token, when set, must come as
+``?token=`` in the URL (the protocol has no ``auth`` op); a wrong one gets HTTP 401.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+from typing import TYPE_CHECKING, Any
+from urllib.parse import parse_qs, urlsplit
+
+from websockets.asyncio.server import ServerConnection, serve
+from websockets.exceptions import ConnectionClosed
+
+from rosx.bridge import foxglove as fx
+from rosx.bridge.protocol import DEFAULT_MAX_MESSAGE
+from rosx.bridge.safety import origin_allowed
+from rosx.bridge.server import Connection
+from rosx.msg.codec.classes import get_service_class
+
+if TYPE_CHECKING:
+    from collections.abc import Callable, Sequence
+
+    from websockets.asyncio.server import Server
+    from websockets.http11 import Request, Response
+
+    from rosx.node import Node, Publisher, Subscriber
+    from rosx.node.subscription import RawMessage
+
+#: How often the graph is read for channels and services to advertise (seconds).
+POLL_PERIOD = 1.0
+
+
+class FoxgloveServer:
+    """The Foxglove WebSocket protocol over ``node`` (started, owned by the caller)."""
+
+    def __init__(
+        self,
+        node: Node,
+        *,
+        host: str = "127.0.0.1",
+        port: int = 8765,
+        allow_origins: Sequence[str] = (),
+        token: str | None = None,
+        max_message: int = DEFAULT_MAX_MESSAGE,
+        log: Callable[[str], object] = print,
+    ) -> None:
+        self.node = node
+        self.host = host
+        self.port = port
+        self.allow_origins = tuple(allow_origins)
+        self.token = token
+        self.max_message = max_message
+        self.log = log
+        self.connections: set[Connection[fx.FoxgloveSession]] = set()
+        self._server: Server | None = None
+        self._poller: asyncio.Task[None] | None = None
+        self._pool = ThreadPoolExecutor(8, thread_name_prefix="rosx-foxglove")
+        self._lock = threading.Lock()
+        self._subscribed: dict[str, tuple[Subscriber, set[Connection[fx.FoxgloveSession]]]] = {}
+        self._published: dict[str, tuple[Publisher, set[Connection[fx.FoxgloveSession]]]] = {}
+        self._service_types: dict[str, str] = {}
+        self._graph: tuple[dict[str, str], dict[str, str]] = ({}, {})
+        self._sim_time = False
+        self._clock: Subscriber | None = None
+
+    async def start(self) -> None:
+        """Bind, read the graph once, and start serving."""
+        loop = asyncio.get_running_loop()
+        self._graph = await loop.run_in_executor(self._pool, self._read_graph)
+        await loop.run_in_executor(self._pool, self._follow_clock)
+        self._server = await serve(
+            self._serve,
+            self.host,
+            self.port,
+            subprotocols=[fx.SUBPROTOCOL],  # type: ignore[list-item]
+            process_request=self._check_request,
+            max_size=self.max_message,
+            compression=None,
+            ping_interval=None,
+        )
+        self.port = next(iter(self._server.sockets)).getsockname()[1]
+        self._poller = asyncio.create_task(self._poll())
+
+    async def close(self) -> None:
+        """Close every connection and stop listening."""
+        if self._poller is not None:
+            self._poller.cancel()
+        if self._clock is not None:
+            self._clock.unregister()
+        if self._server is not None:
+            self._server.close()
+            await self._server.wait_closed()
+        self._pool.shutdown(wait=False, cancel_futures=True)
+
+    def _check_request(self, ws: ServerConnection, request: Request) -> Response | None:
+        origin = request.headers.get("Origin")
+        if not origin_allowed(origin, self.allow_origins):
+            self.log(
+                f"Refused a Foxglove connection from a page of {origin}: not an allowed origin"
+            )
+            return ws.respond(403, f"Origin {origin} is not allowed: see --allow-origin\n")
+        if self.token is not None:
+            tokens = parse_qs(urlsplit(request.path).query).get("token", [])
+            if self.token not in tokens:
+                return ws.respond(401, "This bridge needs ?token=… in its URL\n")
+        return None
+
+    def _follow_clock(self) -> None:
+        """With ``/use_sim_time`` set, ``/clock`` becomes the clients' time (``time`` frames)."""
+        self._sim_time = bool(self.node.params.get("/use_sim_time", False))
+        if not self._sim_time:
+            return
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - sim time only
+
+        def tick(clock: Any) -> None:
+            stamp = clock.clock.secs * 1_000_000_000 + clock.clock.nsecs
+            for connection in list(self.connections):
+                connection.send([connection.session.time(stamp)])
+
+        clock_class = get_message_class("rosgraph_msgs/Clock")
+        self._clock = self.node.subscribe("/clock", clock_class, tick, queue_size=1)
+
+    # -- the graph -----------------------------------------------------------------------------
+
+    def _read_graph(self) -> tuple[dict[str, str], dict[str, str]]:
+        master = self.node.master
+        topics = dict(master.topic_types())
+        _, _, services = master.call("getSystemState")
+        names = {str(row[0]) for row in services}
+        for name in names - set(self._service_types):
+            with contextlib.suppress(Exception):  # a service that does not answer: not offered
+                self._service_types[name] = self.node.probe_service(name, timeout=2.0).get(
+                    "type", ""
+                )
+        for name in set(self._service_types) - names:
+            del self._service_types[name]
+        return topics, {n: t for n, t in self._service_types.items() if t}
+
+    async def _poll(self) -> None:
+        loop = asyncio.get_running_loop()
+        while True:
+            await asyncio.sleep(POLL_PERIOD)
+            with contextlib.suppress(Exception):  # a master that is away for a moment
+                self._graph = await loop.run_in_executor(self._pool, self._read_graph)
+                for connection in list(self.connections):
+                    with connection.lock:
+                        frames = connection.session.update_graph(*self._graph)
+                    if frames:
+                        connection.send(frames)
+
+    # -- a connection ---------------------------------------------------------------------------
+
+    async def _serve(self, ws: ServerConnection) -> None:
+        loop = asyncio.get_running_loop()
+        session = fx.FoxgloveSession(name=f"rosx {self.node.name}", sim_time=self._sim_time)
+        connection: Connection[fx.FoxgloveSession] = Connection(ws, session, loop)
+        self.connections.add(connection)
+        self.log(f"Foxglove client connected.  {len(self.connections)} clients total.")
+        with connection.lock:
+            connection.send(session.hello() + session.update_graph(*self._graph))
+        writer = asyncio.create_task(connection.write())
+        try:
+            async for data in ws:
+                await loop.run_in_executor(self._pool, self._receive, connection, data)
+        except ConnectionClosed:
+            pass
+        finally:
+            writer.cancel()
+            self.connections.discard(connection)
+            await loop.run_in_executor(self._pool, self._disconnect, connection)
+            self.log(f"Foxglove client disconnected. {len(self.connections)} clients total.")
+
+    def _receive(self, connection: Connection[fx.FoxgloveSession], data: str | bytes) -> None:
+        with connection.lock:
+            reaction = connection.session.receive(data)
+        if reaction.frames:
+            connection.send(reaction.frames)
+        for event in reaction.events:
+            try:
+                self._carry_out(connection, event)
+            except Exception as exc:  # a refusal of the graph reaches the client as a status
+                connection.send([connection.session.status(fx.ERROR, f"{exc}")])
+
+    def _carry_out(self, connection: Connection[fx.FoxgloveSession], event: fx.Event) -> None:
+        if isinstance(event, fx.Subscribe):
+            self._subscribe(connection, event.topic)
+        elif isinstance(event, fx.Unsubscribe):
+            self._unsubscribe(connection, event.topic)
+        elif isinstance(event, fx.Advertise):
+            self._advertise(connection, event)
+        elif isinstance(event, fx.Unadvertise):
+            self._unadvertise(connection, event.topic)
+        elif isinstance(event, fx.PublishRaw):
+            entry = self._published.get(event.topic)
+            if entry is not None:
+                entry[0].publish_serialized(event.payload)
+        elif isinstance(event, fx.CallService):
+            self._call(connection, event)
+        elif isinstance(event, fx.GetParameters):
+            values = self._parameters(event.names)
+            connection.send([connection.session.parameter_values(values, event.id)])
+        elif isinstance(event, fx.SetParameters):
+            for name, value in event.values:
+                self.node.params.set(name, value)
+            if event.id is not None:
+                values = self._parameters(tuple(name for name, _ in event.values))
+                connection.send([connection.session.parameter_values(values, event.id)])
+
+    def _subscribe(self, connection: Connection[fx.FoxgloveSession], topic: str) -> None:
+        with self._lock:
+            entry = self._subscribed.get(topic)
+            if entry is not None:
+                entry[1].add(connection)
+                return
+            clients = {connection}
+        subscriber = self.node.subscribe(
+            topic, None, lambda raw: self._on_message(topic, clients, raw)
+        )
+        with self._lock:
+            self._subscribed[topic] = (subscriber, clients)
+
+    def _on_message(
+        self, topic: str, clients: set[Connection[fx.FoxgloveSession]], raw: RawMessage
+    ) -> None:
+        stamp = time.time_ns()
+        payload = raw._buff
+        for connection in list(clients):
+            with connection.lock:
+                frames = connection.session.deliver(topic, payload, stamp)
+            if frames:
+                connection.queue_topic(topic, frames, 100)
+
+    def _unsubscribe(self, connection: Connection[fx.FoxgloveSession], topic: str) -> None:
+        with self._lock:
+            entry = self._subscribed.get(topic)
+            if entry is None:
+                return
+            entry[1].discard(connection)
+            if entry[1]:
+                return
+            del self._subscribed[topic]
+        entry[0].unregister()
+
+    def _advertise(self, connection: Connection[fx.FoxgloveSession], event: fx.Advertise) -> None:
+        with self._lock:
+            entry = self._published.get(event.topic)
+            if entry is None:
+                publisher = self.node.advertise(event.topic, event.msg_class, queue_size=100)
+                entry = self._published[event.topic] = (publisher, set())
+            entry[1].add(connection)
+
+    def _unadvertise(self, connection: Connection[fx.FoxgloveSession], topic: str) -> None:
+        with self._lock:
+            entry = self._published.get(topic)
+            if entry is None:
+                return
+            entry[1].discard(connection)
+            if entry[1]:
+                return
+            del self._published[topic]
+        entry[0].unregister()
+
+    def _call(self, connection: Connection[fx.FoxgloveSession], call: fx.CallService) -> None:
+        session = connection.session
+        try:
+            client = self.node.service_client(call.service, get_service_class(call.type))
+            try:
+                payload = client.call_serialized(call.payload, timeout=30.0)
+            finally:
+                client.close()
+        except Exception as exc:  # whatever failed, the client gets its answer
+            connection.send([session.call_failure(call, str(exc))])
+        else:
+            connection.send([session.call_response(call, payload)])
+
+    def _parameters(self, names: tuple[str, ...]) -> dict[str, Any]:
+        params = self.node.params
+        wanted = names or tuple(params.names())
+        values = {}
+        for name in wanted:
+            with contextlib.suppress(KeyError):
+                values[name] = params.get(name)
+        return values
+
+    def _disconnect(self, connection: Connection[fx.FoxgloveSession]) -> None:
+        with connection.lock:
+            topics = set(connection.session.subscriptions.values())
+            published = set(connection.session.client_channels.values())
+        for topic in topics:
+            self._unsubscribe(connection, topic)
+        for topic in published:
+            self._unadvertise(connection, topic)
+
+
+__all__ = ["POLL_PERIOD", "FoxgloveServer"]
