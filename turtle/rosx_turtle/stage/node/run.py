@@ -15,15 +15,25 @@ from typing import TYPE_CHECKING, NamedTuple
 from rosx.node import FATAL
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
-from rosx_turtle.program import master_address, run_until_stopped
+from rosx_turtle.program import (
+    master_address,
+    run_until_stopped,
+    start_when_master_is_up,
+    stop_on_signals,
+)
 from rosx_turtle.roscpp import NodeArgs
+from rosx_turtle.tui.running import is_terminal
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
     from rosx_turtle.env import Env
     from rosx_turtle.stage.node.stageros import StageNode
+    from rosx_turtle.tui.log import LogRecord
 
+#: Asks for log lines even on a terminal, as for turtlesim_node (``rosx roslaunch`` sets it for
+#: the nodes that share its terminal).
+HEADLESS_VARIABLE = "ROSX_HEADLESS"
 #: The node's name unless ``__name:=`` says otherwise.
 DEFAULT_NAME = "stageros"
 USAGE = "stageros <worldfile>"
@@ -108,7 +118,37 @@ def run_stageros(argv: Sequence[str], env: Env | None = None) -> int:
             speed=options.speed,
         ).start()
 
-    return run_until_stopped(start, console, master_address(options.node.master_uri, env.environ))
+    address = master_address(options.node.master_uri, env.environ)
+    headless = env.environ.get(HEADLESS_VARIABLE, "") not in ("", "0")
+    if options.headless or headless or not is_terminal(env.stdout):
+        return run_until_stopped(start, console, address)
+    from rosx_turtle.stage.view.run import show_world  # noqa: PLC0415 - textual to draw
+    from rosx_turtle.tui.feed import Feed  # noqa: PLC0415
+    from rosx_turtle.tui.log import ScreenConsole  # noqa: PLC0415
+
+    logs: Feed[LogRecord] = Feed()
+    screen = ScreenConsole(logs.offer, env.environ)
+
+    def start_drawn() -> StageNode:
+        return StageNode(
+            options.node,
+            world,
+            grid,
+            environ=env.environ,
+            console=screen,
+            use_model_names=options.use_model_names,
+            speed=options.speed,
+        ).start()
+
+    with stop_on_signals() as stop:
+        node = start_when_master_is_up(start_drawn, console, address, stop)
+    if node is None:
+        return 0
+    try:
+        show_world(node, logs)
+    finally:
+        node.shutdown("user request")
+    return 0
 
 
 __all__ = ["DEFAULT_NAME", "USAGE", "Options", "UsageError", "parse_options", "run_stageros"]
