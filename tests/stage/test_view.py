@@ -7,7 +7,7 @@ import asyncio
 import numpy as np
 
 from rosx_turtle.stage.engine.grid import rasterise
-from rosx_turtle.stage.engine.simulation import StageSim
+from rosx_turtle.stage.engine.simulation import StageSim, StepReport
 from rosx_turtle.stage.view.app import make_stage_app
 from rosx_turtle.stage.view.picture import FLOOR, HIT, NOSE, WALL, WorldPainter, colour, laser_hits
 from rosx_turtle.stage.view.widget import WorldView
@@ -38,7 +38,7 @@ def test_the_window_draws_steps_and_poses() -> None:
     world = build(parse(room('pose [ 1 -2 0 90 ] name "era"'), "t.world"))
     grid = rasterise(world)
     sim = StageSim(world, grid)
-    steps: Feed = Feed()
+    steps: Feed[StepReport] = Feed()
 
     async def drive() -> None:
         app = make_stage_app(world, grid, ("era",), steps)
