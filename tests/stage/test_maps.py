@@ -1,0 +1,162 @@
+"""map_server's conventions (`rosx_turtle.maps.files`), map_server and map_saver in this process,
+and the bundled arena whose world and map are one bitmap."""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+from rosx.msg.codec.classes import get_message_class, get_service_class
+from rosx.node import Node
+from rosx.packages.crawl import PREFIX
+from rosx_turtle.console import Console
+from rosx_turtle.maps.files import (
+    MapFileError,
+    MapSpec,
+    occupancy,
+    parse_map_yaml,
+    saved_pgm,
+    saved_yaml,
+)
+from rosx_turtle.maps.saver import save_map
+from rosx_turtle.maps.server import MapServerNode, load_map
+from rosx_turtle.roscpp import NodeArgs
+from rosx_turtle.stage.world.images import format_pgm, parse_pgm
+from rosx_turtle.stage.world.load import load_world
+from tests.support.procs import wait_for
+
+ARENA = PREFIX / "share" / "turtlebot3_stage"
+
+
+def test_the_yaml_and_its_errors_in_map_servers_words() -> None:
+    spec = parse_map_yaml(
+        "image: m.pgm\nresolution: 0.05\norigin: [-1, -2.5, 0.5]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n"
+    )
+    assert spec == MapSpec("m.pgm", 0.05, (-1.0, -2.5, 0.5), False, 0.65, 0.196, "trinary")
+    assert (
+        parse_map_yaml(
+            "image: m.png\nresolution: 1\norigin: [0, 0, 0]\nnegate: 1\noccupied_thresh: 0.6\nfree_thresh: 0.2\nmode: scale\n"
+        ).mode
+        == "scale"
+    )
+    for text, message in [
+        ("image: m.pgm\n", "The map does not contain a resolution tag or it is invalid."),
+        (
+            "resolution: 1\nnegate: 0\noccupied_thresh: 0.6\nfree_thresh: 0.2\norigin: [0, 0]\nimage: a\n",
+            "The map does not contain an origin tag or it is invalid.",
+        ),
+        (
+            "resolution: 1\nnegate: 0\noccupied_thresh: 0.6\nfree_thresh: 0.2\nmode: fancy\n",
+            'Invalid mode tag "fancy".',
+        ),
+        (
+            "resolution: 1\nnegate: 0\noccupied_thresh: 0.6\nfree_thresh: 0.2\norigin: [0, 0, 0]\nimage: ''\n",
+            "The image tag cannot be an empty string.",
+        ),
+    ]:
+        with pytest.raises(MapFileError) as error:
+            parse_map_yaml(text)
+        assert str(error.value) == message
+
+
+def test_pixels_become_occupancy_as_map_server_reads_them() -> None:
+    grey = np.array([[0, 80, 127, 180, 230, 254, 255]], dtype=np.uint8)[:, :, None]
+    spec = MapSpec("m", 1.0, (0.0, 0.0, 0.0))
+    assert occupancy(grey, spec).tolist() == [[100, 100, -1, -1, 0, 0, 0]]
+    scaled = occupancy(grey, MapSpec("m", 1.0, (0.0, 0.0, 0.0), mode="scale"))
+    # occ = (255 - v) / 255; between 0.196 and 0.65: 1 + 98 * ratio, truncated.
+    assert scaled.tolist() == [
+        [
+            100,
+            100,
+            int(1 + 98 * ((128 / 255) - 0.196) / (0.65 - 0.196)),
+            int(1 + 98 * ((75 / 255) - 0.196) / (0.65 - 0.196)),
+            0,
+            0,
+            0,
+        ]
+    ]
+    negated = occupancy(grey, MapSpec("m", 1.0, (0.0, 0.0, 0.0), negate=True))
+    assert negated.tolist() == [[0, -1, -1, 100, 100, 100, 100]]
+    assert occupancy(grey, MapSpec("m", 1.0, (0.0, 0.0, 0.0), mode="raw")).view(
+        np.uint8
+    ).tolist() == [grey[0, :, 0].tolist()]
+    two_rows = np.array([[[0]], [[255]]], dtype=np.uint8).reshape(2, 1, 1)
+    assert occupancy(two_rows, spec).tolist() == [[0], [100]]  # the image's last row first
+
+
+def test_map_saver_writes_what_ros1s_writes() -> None:
+    data = np.array([0, 25, 26, 64, 65, 100, -1, 50], dtype=np.int8)
+    image = saved_pgm(data, 4, 2, 0.05)
+    assert image == b"P5\n# CREATOR: map_saver.cpp 0.050 m/pix\n4 2\n255\n" + bytes(
+        [0, 0, 205, 205, 254, 254, 205, 205]
+    )
+    assert saved_yaml("map.pgm", 0.05, -2.8, -2.45, 0.0) == (
+        "image: map.pgm\nresolution: 0.050000\norigin: [-2.800000, -2.450000, 0.000000]\n"
+        "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n\n"
+    )
+    assert parse_pgm(format_pgm(np.array([[1, 2], [3, 4]], dtype=np.uint8))).tolist() == [
+        [1, 2],
+        [3, 4],
+    ]
+
+
+def test_map_server_latches_and_serves_and_map_saver_writes_it_back(
+    master: str, make_node: Callable[..., Node], tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    out = io.StringIO()
+    console = Console(out, out, {})
+    grid = load_map(ARENA / "maps" / "turtlebot3_world.yaml", console.print)
+    server = MapServerNode(
+        NodeArgs.parse([], "map_server"), grid, environ={"ROS_MASTER_URI": master}, console=console
+    ).start()
+    try:
+        client = make_node("/probe")
+        got: list[Any] = []
+        client.subscribe("/map", get_message_class("nav_msgs/OccupancyGrid"), got.append)
+        meta: list[Any] = []
+        client.subscribe("/map_metadata", get_message_class("nav_msgs/MapMetaData"), meta.append)
+        wait_for(lambda: got and meta, what="the latched map")
+        grid_msg = got[0]
+        assert (grid_msg.header.frame_id, grid_msg.info.width, grid_msg.info.height) == (
+            "map",
+            112,
+            98,
+        )
+        assert (meta[0].width, meta[0].height) == (112, 98)
+        get_map = get_service_class("nav_msgs/GetMap")
+        served = client.service_client("/static_map", get_map).call(
+            get_map._request_class(), timeout=10
+        )
+        assert list(served.map.data) == list(grid_msg.data)
+        assert "Read a 112 X 98 map @ 0.050 m/cell" in out.getvalue()
+        monkeypatch.chdir(tmp_path)
+        assert save_map(grid_msg, "saved", 65, 25, console.print)
+        original = parse_pgm((ARENA / "maps" / "turtlebot3_world.pgm").read_bytes())
+        assert np.array_equal(parse_pgm((tmp_path / "saved.pgm").read_bytes()), original)
+        assert parse_map_yaml((tmp_path / "saved.yaml").read_text()).origin == (-2.8, -2.45, 0.0)
+    finally:
+        server.shutdown("test over")
+
+
+def test_the_arenas_world_and_map_agree() -> None:
+    world, grid = load_world(ARENA / "worlds" / "turtlebot3_world.world")
+    assert world.ignored == ()
+    spec = parse_map_yaml((ARENA / "maps" / "turtlebot3_world.yaml").read_text())
+    data = occupancy(
+        parse_pgm((ARENA / "maps" / "turtlebot3_world.pgm").read_bytes())[:, :, None], spec
+    )
+    rows, cols = np.nonzero(data >= 0)
+    x = spec.origin[0] + (cols.astype(np.float64) + 0.5) * spec.resolution
+    y = spec.origin[1] + (rows.astype(np.float64) + 0.5) * spec.resolution
+    solid = grid.solid_at(x, y)
+    agree = solid == (data[rows, cols] == 100)
+    assert agree.mean() > 0.97  # the grid is finer (0.02 m): only edge cells may differ
+    (burger,) = world.robots
+    assert burger.pose[:2] == (-2.0, -0.5)
+    assert burger.lasers[0].samples == 360

@@ -1,0 +1,131 @@
+"""``map_server MAP.yaml``: the map latched on ``map`` and ``map_metadata``, and the
+``static_map`` service (nav_msgs/GetMap), as map_server serves them; ``~frame_id`` ("map")."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from rosx.msg.codec.classes import get_message_class, get_service_class
+from rosx.node import ERROR, INFO
+from rosx.node.clock import now
+from rosx_turtle import roscpp
+from rosx_turtle.console import Console, NodeLog
+from rosx_turtle.env import ProcessEnv
+from rosx_turtle.maps.files import MapFileError, occupancy, parse_map_yaml
+from rosx_turtle.program import master_address, run_until_stopped
+from rosx_turtle.roscpp import NodeArgs
+
+if TYPE_CHECKING:
+    from collections.abc import Mapping, Sequence
+
+    from rosx.node import Node
+    from rosx_turtle.env import Env
+
+USAGE = (
+    "\nUSAGE: map_server <map.yaml>\n"
+    "  map.yaml: map description file\n"
+    "DEPRECATED USAGE: map_server <map> <resolution>\n"
+    "  map: image file to load\n"
+    "  resolution: map resolution [meters/pixel]"
+)
+
+
+def load_map(path: Path, log: Any) -> Any:
+    """The nav_msgs/OccupancyGrid of the map described at ``path``; None after logging why not."""
+    from rosx_turtle.stage.world.images import ImageError, read_channels  # noqa: PLC0415
+
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError:
+        log(ERROR, f"Map_server could not open {path}.")
+        return None
+    try:
+        spec = parse_map_yaml(text)
+    except MapFileError as exc:
+        log(ERROR, str(exc))
+        return None
+    image = Path(spec.image) if spec.image.startswith("/") else path.parent / spec.image
+    log(INFO, f'Loading map from image "{image}"')
+    try:
+        pixels = read_channels(image)
+    except ImageError as exc:
+        log(ERROR, f'failed to open image file "{image}": {exc}')
+        return None
+    grid = get_message_class("nav_msgs/OccupancyGrid")()
+    info = grid.info
+    info.height, info.width = pixels.shape[:2]
+    info.resolution = spec.resolution
+    info.origin.position.x, info.origin.position.y = spec.origin[0], spec.origin[1]
+    info.origin.orientation.z = math.sin(spec.origin[2] / 2)
+    info.origin.orientation.w = math.cos(spec.origin[2] / 2)
+    grid.data = occupancy(pixels, spec).ravel()
+    log(INFO, f"Read a {info.width} X {info.height} map @ {spec.resolution:.3f} m/cell")
+    return grid
+
+
+class MapServerNode:
+    """map_server as a library object: `start` publishes and serves the map."""
+
+    def __init__(
+        self, args: NodeArgs, grid: Any, *, environ: Mapping[str, str], console: Console | None
+    ) -> None:
+        self.args = args
+        self.grid = grid
+        self.node: Node = args.make_node(environ)
+        self._log = NodeLog(self.node, console, logger="ros.map_server")
+
+    def start(self) -> MapServerNode:
+        """Register, latch ``map`` and ``map_metadata``, serve ``static_map``."""
+        node = self.node
+        node.start()
+        self.args.set_private_params(node)
+        frame = node.params.get("~frame_id", "map")
+        stamp = now()
+        grid = self.grid
+        grid.header.frame_id = frame if isinstance(frame, str) else "map"
+        grid.header.stamp = stamp
+        grid.info.map_load_time = stamp
+        roscpp.advertise_service(
+            node, "static_map", get_service_class("nav_msgs/GetMap"), self._serve, self._log
+        )
+        metadata = node.advertise(
+            "map_metadata", get_message_class("nav_msgs/MapMetaData"), queue_size=1, latch=True
+        )
+        metadata.publish(grid.info)
+        node.advertise(
+            "map", get_message_class("nav_msgs/OccupancyGrid"), queue_size=1, latch=True
+        ).publish(grid)
+        return self
+
+    def _serve(self, request: Any) -> object:
+        self._log(INFO, "Sending map")
+        return {"map": self.grid}
+
+    def shutdown(self, reason: str = "") -> None:
+        """Leave the ROS graph."""
+        self.node.shutdown(reason)
+
+    def wait_for_shutdown(self, timeout: float | None = None) -> bool:
+        """Block until the node shuts down; False if ``timeout`` passed first."""
+        return self.node.wait_for_shutdown(timeout)
+
+
+def run_map_server(argv: Sequence[str], env: Env | None = None) -> int:
+    """Run map_server until a signal or a shutdown; the exit status (255 as ``exit(-1)``)."""
+    env = env or ProcessEnv()
+    args = NodeArgs.parse(argv, "map_server")
+    console = Console(env.stdout, env.stderr, env.environ)
+    words = list(args.argv)
+    if len(words) != 1:
+        console.print(ERROR, USAGE)
+        return 255
+    grid = load_map(Path(words[0]), console.print)
+    if grid is None:
+        return 255
+
+    def start() -> MapServerNode:
+        return MapServerNode(args, grid, environ=env.environ, console=console).start()
+
+    return run_until_stopped(start, console, master_address(args.master_uri, env.environ))
