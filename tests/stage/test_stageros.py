@@ -172,3 +172,45 @@ def test_speed_runs_the_clock_faster(make_stage: MakeStage, make_node: Callable[
     first = clock.wait()
     later = clock.wait(predicate=lambda m: m.clock.to_sec() >= first.clock.to_sec() + 2.0)
     assert later.clock.to_sec() >= first.clock.to_sec() + 2.0
+
+
+def test_a_wander_script_never_enters_an_obstacle(
+    make_stage: MakeStage, make_node: Callable[..., Node]
+) -> None:
+    """A course's first obstacle-avoidance node: forward while the way ahead is clear, else turn."""
+    from rosx.packages.crawl import PREFIX
+
+    world = (
+        PREFIX / "share" / "turtlebot3_stage" / "worlds" / "turtlebot3_world.world"
+    ).read_text()
+    world = world.replace('bitmap "../maps/', f'bitmap "{PREFIX}/share/turtlebot3_stage/maps/')
+    stage, _ = make_stage(world, speed=10.0)
+    stalls: list[bool] = []
+    stage.add_step_listener(lambda report: stalls.append(bool(report.stalled[0])))
+    client = make_node("/wander")
+    publisher = client.advertise("/cmd_vel", Twist, queue_size=1)
+    turning = {"left": 0}
+
+    def on_scan(scan: Any) -> None:
+        # The 90 beams around the front (the laser starts behind the robot, at -180°).
+        ahead = min(scan.ranges[135:225])
+        twist = Twist()
+        if ahead < 0.45:
+            twist.angular.z = 1.2
+            turning["left"] += 1
+        else:
+            twist.linear.x = 0.22
+        publisher.publish(twist)
+
+    client.subscribe("/base_scan", LaserScan, on_scan, queue_size=1)
+    odom = Inbox(client, "/base_pose_ground_truth", Odometry)
+    first = odom.wait()
+    # 60 s of simulated time.
+    last = odom.wait(
+        predicate=lambda m: m.header.stamp.to_sec() >= first.header.stamp.to_sec() + 60
+    )
+    start = (first.pose.pose.position.x, first.pose.pose.position.y)
+    end = (last.pose.pose.position.x, last.pose.pose.position.y)
+    assert math.dist(start, end) > 0.3 or turning["left"] > 0  # it moved
+    assert turning["left"] > 0  # it met a wall or a pillar and turned away
+    assert not any(stalls)  # and never bumped into one
