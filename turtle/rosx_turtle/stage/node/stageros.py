@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING, Any
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.msg.codec.rostime import Time
 from rosx.node import ERROR, INFO, WARN
+from rosx.tf.broadcaster import TransformBroadcaster
 from rosx_turtle import roscpp
 from rosx_turtle.console import Console, NodeLog
 from rosx_turtle.node.inbox import Inbox
@@ -149,7 +150,6 @@ class StageNode:
         self.odometry = get_message_class("nav_msgs/Odometry")
         self.laser_scan = get_message_class("sensor_msgs/LaserScan")
         self._transform = get_message_class("geometry_msgs/TransformStamped")
-        self._tf_message = get_message_class("tf2_msgs/TFMessage")
         self._clock_message = get_message_class("rosgraph_msgs/Clock")
         self._inbox: Inbox[StageSim] = Inbox()
         self._ios: list[_RobotIo] = []
@@ -192,7 +192,7 @@ class StageNode:
                 self.log(INFO, f"Robot {token} provided {len(robot.lasers)} rangers and 0 cameras")
                 self._ios.append(_RobotIo(self, index, robot, self.prefixes[index]))
             self.clock = node.advertise("/clock", self._clock_message, queue_size=10)
-            self.tf = node.advertise("/tf", self._tf_message, queue_size=100)
+            self.tf = TransformBroadcaster(node=node)
             self._services.append(
                 roscpp.advertise_service(
                     node,
@@ -352,7 +352,7 @@ class StageNode:
             message.intensities = scan.intensities
             io.scans[scan.laser].publish(message)
         if transforms:
-            self.tf.publish(self._tf_message(transforms=transforms))
+            self.tf.sendTransform(transforms)
         self.clock.publish(self._clock_message(clock=stamp))
 
     def _tf(
