@@ -1,7 +1,7 @@
 """Lasers: every beam of every robot cast at once through the grid, then against the robots.
 
 `cast` marches all rays together by sphere tracing: each ray advances by the grid's clearance
-at its tip (a distance that cannot skip a wall), at least half a cell, until its tip is in a
+at its tip (a distance that cannot skip a wall), at least one cell, until its tip is in a
 cell a laser sees, leaves the grid or passes its range; rays that hit are then refined by a
 few bisection steps between the last free point and the hit. Rays that finish drop out of the
 working set, so the few that graze walls cost little. `cast_bodies` intersects the rays with
@@ -28,6 +28,9 @@ if TYPE_CHECKING:
 MAX_ROUNDS = 4096
 #: Bisection steps that refine a hit (each halves the error left by the last step).
 REFINE_STEPS = 5
+#: The shortest step a ray takes, in cells: a ray grazing a wall creeps along it at this pace,
+#: and at most a corner of a cell can be cut by it (the hit is then refined by bisection).
+STEP_MIN_CELLS = 1.0
 #: A clearance is measured between cell centres: this many cells are kept as a margin.
 _MARGIN_CELLS = 1.5
 
@@ -56,7 +59,7 @@ def cast(
     t = t_enter.copy()
     last = t.copy()
     active = np.flatnonzero((t_enter <= t_exit) & (t_enter < range_max))
-    step_min = 0.5 * res
+    step_min = STEP_MIN_CELLS * res
     x0, y0 = grid.origin
     for _ in range(MAX_ROUNDS):
         if active.size == 0:
