@@ -104,7 +104,7 @@ class _Line:
 
 
 def _walk_files(line: _Line, package: str) -> list[Path]:
-    from rosx.workspace.executables import libexec_dir  # noqa: PLC0415
+    from rosx.packages.crawl import libexec_dir  # noqa: PLC0415
 
     directory = line.package_dir(package)
     if directory is None:

@@ -25,7 +25,7 @@ _ROSCP_USAGE = (
 
 
 def _files(package_dir: Path, name: str) -> list[Path]:
-    from rosx.workspace.executables import libexec_dir  # noqa: PLC0415
+    from rosx.packages.crawl import libexec_dir  # noqa: PLC0415
 
     found: list[Path] = []
     roots = [r for r in (libexec_dir(package_dir), package_dir) if r is not None]

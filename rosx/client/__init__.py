@@ -15,6 +15,9 @@ ROS 1's protocols, so it works with rosx's tools and with ROS 1's alike. Modules
 - `timing`: ``Time``, ``Duration``, ``sleep``, ``Rate``, ``Timer``.
 - `exceptions`: rospy's exceptions.
 - `modules` and `script`: how scripts import ``rospy`` and ``<package>.msg``, and run.
+- `roslib` and `rospkg`: what older scripts call of ``roslib`` (``load_manifest``, packages,
+  message classes, names) and of ``rospkg`` (``RosPack``); `ros1_names`: the module paths
+  rospy's and genpy's classes print, which the shims give rosx's.
 
 Names load on first use (as in `rosx.names`), so a tool that needs one module of this package
 (``rosx rosrun`` needs `script`) does not load the whole API.

@@ -97,3 +97,12 @@ def bundled_libexec(package: str) -> Path | None:
     """The folder of programs rosx ships for ``package`` (``lib/<package>``), if it has one."""
     folder = PREFIX / "lib" / package
     return folder if folder.is_dir() else None
+
+
+def libexec_dir(package_dir: Path) -> Path | None:
+    """Where an installed package's programs are: ``PREFIX/lib/PKG`` for a package in
+    ``PREFIX/share/PKG`` (catkin's ``CATKIN_PACKAGE_BIN_DESTINATION``), if it exists."""
+    if package_dir.parent.name != "share":
+        return None
+    folder = package_dir.parent.parent / "lib" / package_dir.name
+    return folder if folder.is_dir() else None

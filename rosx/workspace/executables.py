@@ -19,6 +19,8 @@ import os
 from pathlib import Path
 from typing import NamedTuple
 
+from rosx.packages.crawl import libexec_dir
+
 _EXECUTE_BITS = 0o111
 
 
@@ -53,15 +55,6 @@ def _runnable(path: Path) -> bool:
         return path.is_file() and bool(path.stat().st_mode & _EXECUTE_BITS)
     except OSError:
         return False
-
-
-def libexec_dir(package_dir: Path) -> Path | None:
-    """Where an installed package's programs are: ``PREFIX/lib/PKG`` for a package in
-    ``PREFIX/share/PKG`` (catkin's ``CATKIN_PACKAGE_BIN_DESTINATION``), if it exists."""
-    if package_dir.parent.name != "share":
-        return None
-    folder = package_dir.parent.parent / "lib" / package_dir.name
-    return folder if folder.is_dir() else None
 
 
 def find_executables(package_dir: Path, name: str) -> Search:
@@ -119,6 +112,5 @@ __all__ = [
     "executable_names",
     "find_executables",
     "is_python_script",
-    "libexec_dir",
     "suggestion",
 ]

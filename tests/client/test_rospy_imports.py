@@ -226,6 +226,9 @@ def test_ros1s_python_keeps_ros1s_rospy_with_the_shim_on_its_path(tmp_path: Path
     assert done.stdout.strip() == "/usr/lib/python3/dist-packages/rospy/__init__.py"
     rosbag = ros1_python_with_path("import rosbag; print(rosbag.__file__)", shims, tmp_path)
     assert rosbag.stdout.strip() == "/usr/lib/python3/dist-packages/rosbag/__init__.py"
+    for name in ("roslib", "rospkg", "genpy"):
+        other = ros1_python_with_path(f"import {name}; print({name}.__file__)", shims, tmp_path)
+        assert other.stdout.strip() == f"/usr/lib/python3/dist-packages/{name}/__init__.py"
 
 
 @pytest.mark.parametrize("module", ["rospy.exceptions"])

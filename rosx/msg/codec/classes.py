@@ -21,6 +21,8 @@ from rosx.msg.store import TypeStore, default_store
 if TYPE_CHECKING:
     from collections.abc import Callable
 
+    from rosx.msg.spec import MsgSpec
+
 #: genpy accepts ``Header`` alone for ``std_msgs/Header``.
 _ALIASES = {"Header": "std_msgs/Header"}
 
@@ -56,17 +58,31 @@ class _Classes:
                 self.resolver,
                 {"__reduce__": _reduce},
             )
+            service = self._service_of(name, spec)
+            if service is not None:  # genpy keeps a service's halves in the service's module
+                package, _, short = service.partition("/")
+                built.__module__ = f"{package}.srv._{short}"
         finally:
             self.building.pop()
         self.messages[name] = built
         return built
+
+    def _service_of(self, name: str, spec: MsgSpec) -> str | None:
+        """The service whose request or response ``spec`` is, if it is one."""
+        for suffix in ("Request", "Response"):
+            base = name.removesuffix(suffix)
+            if base != name and base.partition("/")[2] and self.store.has_srv(base):
+                halves = self.store.srv(base)
+                if spec is halves.request or spec is halves.response:
+                    return base
+        return None
 
     def service(self, name: str) -> type[ServiceDefinition]:
         cls = self.services.get(name)
         if cls is None:
             spec = self.store.srv(name)
             namespace = {
-                "__module__": f"{spec.package}.srv",
+                "__module__": f"{spec.package}.srv._{spec.short_name}",
                 "__qualname__": spec.short_name,
                 "__doc__": f"The ROS 1 service type {spec.full_name}.",
                 "_type": spec.full_name,

@@ -70,7 +70,8 @@ def build_message_class(
     code = src.compile()
     namespace: dict[str, Any] = {
         "__slots__": python_names(spec),
-        "__module__": f"{spec.package}.msg",
+        # genpy's module of the type (``geometry_msgs.msg._Twist``): what tracebacks print.
+        "__module__": f"{spec.package}.msg._{spec.short_name}",
         "__qualname__": spec.short_name,
         "__doc__": f"The ROS 1 message type {spec.full_name}.",
         "_type": spec.full_name,

@@ -13,7 +13,11 @@ except ImportError:
 
     load_next("rosgraph")
 else:
+    from rosx.client.ros1_names import use_ros1_names as _use_ros1_names
+
     from . import masterapi, names, roslogging
+
+    _use_ros1_names("rosx.client.rosgraph")  # rosgraph.masterapi.MasterError in tracebacks
 
     globals().update({name: getattr(_rosgraph, name) for name in _rosgraph.__all__})
     __all__ = list(_rosgraph.__all__)

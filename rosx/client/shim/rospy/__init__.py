@@ -11,17 +11,30 @@ from __future__ import annotations
 
 import importlib
 
-_SUBMODULES = ("exceptions", "impl", "names")
+#: rospy's modules that its ``__init__`` imports, so that ``rospy.topics.Publisher`` works.
+_SUBMODULES = (
+    "exceptions",
+    "impl",
+    "msg",
+    "msproxy",
+    "names",
+    "rostime",
+    "service",
+    "timer",
+    "topics",
+)
 
 try:
     import rosx.client as _client
     from rosx.client.modules import install as _install
+    from rosx.client.ros1_names import use_ros1_names as _use_ros1_names
 except ImportError:
     from _rosx_shim import load_next  # type: ignore[import-not-found]
 
     load_next("rospy")
 else:
     _install()
+    _use_ros1_names()  # tracebacks print rospy.exceptions.ROSInitException, as rospy's do
     globals().update({name: getattr(_client, name) for name in _client.__all__ if name != "Header"})
     __all__ = list(_client.__all__)
 
