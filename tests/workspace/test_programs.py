@@ -9,6 +9,7 @@ rosx" line for it disappears by itself.
 from __future__ import annotations
 
 import io
+import os
 import shutil
 import subprocess
 import sys
@@ -143,7 +144,7 @@ def _terminal() -> tuple[Environment, io.StringIO]:
 
 
 def test_a_package_bundled_is_provided_everywhere_with_no_list_to_edit(
-    prefix: Path, capsys: pytest.CaptureFixture[str]
+    prefix: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     shutil.rmtree(prefix / "share" / "stage_ros", ignore_errors=True)  # bundled anew below
     _forget_the_tree()
@@ -162,6 +163,11 @@ def test_a_package_bundled_is_provided_everywhere_with_no_list_to_edit(
     assert rosx("complete", "2", "rosrun", "stage_ros", "").out == "stageros\0"
     started = plan(["stage_ros", "stageros", "w.world"], env)
     assert callable(started)
+    # It runs in this process, as a script does: what it changes of the process is put back.
+    monkeypatch.setattr(sys, "path", list(sys.path))
+    monkeypatch.setattr(sys, "argv", list(sys.argv))
+    monkeypatch.setitem(sys.modules, "__main__", sys.modules["__main__"])
+    monkeypatch.setenv("PYTHONPATH", os.environ.get("PYTHONPATH", ""))
     assert started() == 0
     assert capsys.readouterr().out == "a stage\n"
     # A counterpart is named once it is there.
