@@ -2,9 +2,16 @@
 
 from __future__ import annotations
 
+import hashlib
+import json
+import os
 import secrets
-from collections.abc import Iterator
+import shutil
+import subprocess
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -52,3 +59,119 @@ def running(master: str) -> Iterator[Running]:
     finally:
         bridge.shutdown("test over")
         sim.shutdown("test over")
+
+
+#: The npm packages the JavaScript clients need: roslib (roslibjs), Lichtblick's own rosbridge
+#: client and message readers (its packages forget tslib), playwright-core for the browser
+#: page, and esbuild to bundle the page's script with roslib.
+NPM_PACKAGES = (
+    "roslib@2.1.0",
+    "ws@8",
+    "@lichtblick/roslibjs@1.0.0",
+    "@lichtblick/rosmsg@1",
+    "@lichtblick/rosmsg-serialization@1",
+    "tslib@2",
+    "playwright-core@1",
+    "esbuild@0.25",
+)
+JS = Path(__file__).parent / "js"
+
+
+def _npm_cache() -> Path:
+    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    key = hashlib.sha256(" ".join(NPM_PACKAGES).encode()).hexdigest()[:12]
+    return Path(base) / "rosx-tests" / f"npm-{key}"
+
+
+@pytest.fixture(scope="session")
+def npm_dir() -> Path:
+    """A folder with the npm packages installed and this folder's scripts beside them (the
+    page bundled); skips when node, npm or the registry cannot be had. Installed once into
+    the user's cache, so later runs only copy the scripts."""
+    node, npm = shutil.which("node"), shutil.which("npm")
+    if node is None or npm is None:
+        pytest.skip("node and npm are not installed")
+    folder = _npm_cache()
+    marker = folder / "installed"
+    if not marker.exists():
+        folder.mkdir(parents=True, exist_ok=True)
+        (folder / "package.json").write_text('{"private": true}\n')
+        done = subprocess.run(
+            [npm, "install", "--no-audit", "--no-fund", "--loglevel=error", *NPM_PACKAGES],
+            cwd=folder, capture_output=True, text=True, timeout=300, check=False,
+        )  # fmt: skip
+        if done.returncode != 0:
+            pytest.skip(f"npm install failed (registry unreachable?): {done.stderr.strip()[-200:]}")
+        marker.write_text("\n".join(NPM_PACKAGES))
+    for script in JS.iterdir():
+        shutil.copy(script, folder / script.name)
+    bundled = subprocess.run(
+        [str(folder / "node_modules/.bin/esbuild"), "page.mjs", "--bundle", "--format=esm",
+         "--platform=browser", "--outfile=page.js", "--log-level=warning",
+         "--alias:ws=./ws-browser.mjs"],
+        cwd=folder, capture_output=True, text=True, timeout=120, check=False,
+    )  # fmt: skip
+    assert bundled.returncode == 0, bundled.stderr
+    return folder
+
+
+class NodeScript:
+    """A node script's run; its JSON lines (``{"step", "value"}``) read as they come."""
+
+    def __init__(self, folder: Path, *args: str) -> None:
+        self.process = subprocess.Popen(
+            ["node", *args], cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+        )
+        self.steps: dict[str, list[Any]] = {}
+
+    def _read(self) -> bool:
+        stdout = self.process.stdout
+        assert stdout is not None
+        line = stdout.readline()
+        if not line:
+            return False
+        data = json.loads(line)
+        assert data["step"] != "error", data["value"]
+        self.steps.setdefault(data["step"], []).append(data["value"])
+        return True
+
+    def step(self, name: str) -> Any:
+        """The first value of step ``name``, waiting for it (the script stops itself on a
+        deadline; its error fails the test)."""
+        while name not in self.steps:
+            if not self._read():
+                err = self.process.stderr.read() if self.process.stderr else ""
+                raise AssertionError(f"node ended before {name!r}: {self.steps} {err[-2000:]}")
+        return self.steps[name][0]
+
+    def values(self, name: str) -> list[Any]:
+        """Every value of step ``name``, once the script has ended."""
+        while self._read():
+            pass
+        return self.steps.get(name, [])
+
+    def finish(self) -> int:
+        try:
+            return self.process.wait(timeout=30)
+        finally:
+            if self.process.poll() is None:
+                self.process.kill()
+                self.process.wait()
+            for stream in (self.process.stdout, self.process.stderr):
+                if stream is not None:
+                    stream.close()
+
+
+@pytest.fixture
+def node_script(npm_dir: Path) -> Iterator[Callable[..., NodeScript]]:
+    """Run node scripts in the npm folder; each is stopped after the test."""
+    started: list[NodeScript] = []
+
+    def run(*args: str) -> NodeScript:
+        script = NodeScript(npm_dir, *args)
+        started.append(script)
+        return script
+
+    yield run
+    for script in started:
+        script.finish()
