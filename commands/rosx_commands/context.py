@@ -58,7 +58,7 @@ class Environment:
     @property
     def master_uri(self) -> str:
         """The master the command talks to (``ROS_MASTER_URI``, or the default)."""
-        from rosx.master.client import master_uri  # noqa: PLC0415 - only tools that need it
+        from rosx.master.defaults import master_uri  # noqa: PLC0415 - only tools that need it
 
         return master_uri(self.environ)
 

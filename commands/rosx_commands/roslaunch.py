@@ -19,6 +19,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from rosx.master.defaults import DEFAULT_MASTER_PORT
 from rosx_commands.cli import ToolParser, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
 
@@ -30,7 +31,6 @@ USAGE = (
     "       %prog [options] <filename> [<filename>...] [arg_name:=value...]\n\n"
     "If <filename> is a single dash ('-'), launch XML is read from standard input."
 )
-DEFAULT_MASTER_PORT = 11311
 #: rosmaster's default number of worker threads (``-w``).
 NUM_WORKERS = 3
 

@@ -16,13 +16,11 @@ signal handler may interrupt code that holds a lock the teardown needs.
 from __future__ import annotations
 
 import atexit
-import contextlib
 import os
-import signal
 import sys
 import threading
 import warnings
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from rosx.client import state
 from rosx.client.exceptions import ROSException, ROSInitException
@@ -35,10 +33,8 @@ from rosx.names import (
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
-    from types import FrameType
 
     from rosx.client.logfile import LogFile
-    from rosx.master.client import MasterClient
     from rosx.node import Node
 
 DEBUG = 1
@@ -49,7 +45,6 @@ FATAL = 16
 
 _RETRY_PERIOD = 0.2
 _SPIN_PERIOD = 0.5
-_signal_chain: dict[int, Any] = {}
 _exit_registered = False
 
 
@@ -166,7 +161,7 @@ def _start_node(
         if state.CLIENT.requested:
             raise ROSInitException("init_node interrupted before it could complete")
         node = _make_node(name, log_level, xmlrpc_port, tcpros_port, disable_rosout)
-        if _master_answers(node.master):
+        if node.master.answers(timeout=2.0):
             try:
                 return node.start()
             except ParamArgsError as error:
@@ -186,18 +181,6 @@ def _start_node(
         state.CLIENT.shutdown_event.wait(_RETRY_PERIOD)
 
 
-def _master_answers(master: MasterClient) -> bool:
-    from rosx.transport.errors import TransportError  # noqa: PLC0415
-
-    try:
-        master.call("getPid", timeout=2.0)
-    except TransportError:
-        return False
-    except Exception:  # anything that answers is a master to register with
-        return True
-    return True
-
-
 def _line(level: int, message: str) -> str:
     from rosx.node.rosout import console_line  # noqa: PLC0415
 
@@ -213,20 +196,13 @@ def _console(level: int, line: str) -> None:
 # -- signals and exit ---------------------------------------------------------------------------
 
 
-def _on_signal(signum: int, frame: FrameType | None) -> None:
-    state.CLIENT.shutdown_in_background(f"signal-{signum}")
-    previous = _signal_chain.get(signum)
-    if callable(previous):
-        # rospy keeps Python's Ctrl-C exception from the program.
-        with contextlib.suppress(KeyboardInterrupt):
-            previous(signum, frame)
-
-
 def _register_signals() -> None:
-    for signum in (signal.SIGTERM, signal.SIGINT):
-        previous = signal.signal(signum, _on_signal)
-        if previous is not _on_signal:
-            _signal_chain[signum] = previous
+    from rosx.signals import install_signal_handlers  # noqa: PLC0415 - unless disabled
+
+    def shutdown(reason: str) -> None:
+        state.CLIENT.shutdown_in_background(reason)  # the client of the moment
+
+    install_signal_handlers(shutdown, quiet=True)  # rospy keeps Ctrl-C's exception from scripts
 
 
 def _at_exit() -> None:

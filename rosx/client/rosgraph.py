@@ -57,7 +57,7 @@ def get_master_uri(env: Mapping[str, str] | None = None, argv: Sequence[str] | N
             if len(parts) != 2 or not parts[1]:
                 raise ValueError(f"__master remapping argument '{arg}' improperly specified")
             return parts[1]
-    from rosx.master.client import DEFAULT_MASTER_URI  # noqa: PLC0415
+    from rosx.master.defaults import DEFAULT_MASTER_URI  # noqa: PLC0415
 
     return (os.environ if env is None else env).get(ROS_MASTER_URI, DEFAULT_MASTER_URI)
 

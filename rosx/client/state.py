@@ -140,7 +140,7 @@ class Client:
         """The master's URI: the node's, else ``__master:=``, else ``ROS_MASTER_URI``."""
         if self.node is not None:
             return self.node.master.uri
-        from rosx.master.client import master_uri  # noqa: PLC0415
+        from rosx.master.defaults import master_uri  # noqa: PLC0415
 
         return master_uri(os.environ, self.args.master)
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 import errno
 
 from rosx.core.params import LAUNCH_CALLER
-from rosx.master.client import MasterClient, MasterError, MasterUnreachable
+from rosx.master.client import master_is_online
 
 #: How long a master already on the port has to answer ``getPid``.
 _ANSWER_TIMEOUT = 3.0
@@ -40,7 +40,7 @@ class PortInUseError(Exception):
 def refusal(uri: str, port: int, exc: OSError) -> PortInUseError:
     """Why a master could not listen at `uri` (`exc` is what binding raised), in roscore's
     words."""
-    if exc.errno == errno.EADDRINUSE and _master_answers(uri):
+    if exc.errno == errno.EADDRINUSE and master_is_online(uri, LAUNCH_CALLER, _ANSWER_TIMEOUT):
         message = (
             "RLException: roscore cannot run as another roscore/master is already running. \n"
             "Please kill other roscore/master processes before relaunching.\n"
@@ -52,14 +52,3 @@ def refusal(uri: str, port: int, exc: OSError) -> PortInUseError:
     else:
         message = f"ERROR: Unable to start XML-RPC server: {exc.strerror or exc}"
     return PortInUseError(uri, port, another_master=False, message=message)
-
-
-def _master_answers(uri: str) -> bool:
-    master = MasterClient(uri, LAUNCH_CALLER, timeout=_ANSWER_TIMEOUT)
-    try:
-        master.call("getPid")
-    except (MasterError, MasterUnreachable):
-        return False
-    finally:
-        master.close()
-    return True

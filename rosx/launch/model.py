@@ -15,6 +15,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+from rosx.master.defaults import DEFAULT_MASTER_URI
+
 #: A parameter's value as the Parameter Server holds it: str, int, float, bool, bytes (from
 #: ``binfile``), lists and string-keyed dictionaries of those.
 ParamValue = Any
@@ -169,7 +171,7 @@ class MasterSettings:
             default) or ``restart``.
     """
 
-    uri: str = "http://localhost:11311/"
+    uri: str = DEFAULT_MASTER_URI + "/"
     auto: MasterAuto = "start"
 
 

@@ -57,6 +57,7 @@ from rosx.launch.monitor import (
     ProcessMonitor,
 )
 from rosx.master.client import MasterClient, MasterError, MasterUnreachable
+from rosx.master.defaults import master_uri as default_master_uri
 from rosx.names.resolution import ns_join
 from rosx.transport.address import advertised_host, http_uri, is_local_host
 from rosx.workspace import logdir
@@ -71,7 +72,6 @@ if TYPE_CHECKING:
     from rosx.launch.zygote import ZygoteClient
     from rosx.packages.index import PackageIndex
 
-DEFAULT_MASTER_URI = "http://localhost:11311"
 #: The environment variable every launched node gets (see the module docstring).
 HEADLESS = "ROSX_HEADLESS"
 _CALLER = "/roslaunch"
@@ -133,7 +133,7 @@ def master_uri(environ: Mapping[str, str], port: int | None) -> str:
     """The master a launch uses: ``-p PORT`` on this host, else ``ROS_MASTER_URI``."""
     if port is not None:
         return http_uri(advertised_host(environ), port)
-    return environ.get("ROS_MASTER_URI") or DEFAULT_MASTER_URI
+    return default_master_uri(environ)
 
 
 def _uri_host_port(uri: str) -> tuple[str, int]:

@@ -9,7 +9,8 @@
 - `server`: `Master` (the API behind an XML-RPC server) and `MasterThread`.
 - `client`: `MasterClient`, the one client of a master (and of nodes' Slave APIs) that the
   tools, the node runtime and the client API share; `MasterError`, `MasterUnreachable`,
-  `DEFAULT_MASTER_URI`.
+  `DEFAULT_MASTER_URI` (from `defaults`).
+- `defaults`: the master's default port and URI, and ``ROS_MASTER_URI``'s rule (`master_uri`).
 
 roscore's whole core (this master, its parameters and ``/rosout``) is `rosx.core.Core`.
 

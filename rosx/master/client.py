@@ -10,7 +10,7 @@ One client for every user: the command-line tools, the node runtime, the rospy-c
 and the graph views. Cheap to import on purpose (the blocking transport client and the reply
 parser only), so ``rosx rostopic list`` pays for nothing else.
 
-    master = MasterClient(master_uri(os.environ), "/rostopic")
+    master = MasterClient(master_uri(os.environ), "/rostopic")  # master_uri: rosx.master.defaults
     publishers, subscribers, services = master.system_state()
 """
 
@@ -23,17 +23,8 @@ from rosx.wire.reply import parse_ros_reply
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from collections.abc import Callable, Mapping, Sequence
+    from collections.abc import Callable, Sequence
     from typing import Any
-
-#: Where the master is when neither ``ROS_MASTER_URI`` nor ``__master:=`` says.
-DEFAULT_MASTER_URI = "http://localhost:11311"
-
-
-def master_uri(environ: Mapping[str, str], override: str | None = None) -> str:
-    """The master's URI: ``override`` (``__master:=``), else ``ROS_MASTER_URI``, else the
-    default."""
-    return override or environ.get("ROS_MASTER_URI") or DEFAULT_MASTER_URI
 
 
 class MasterError(Exception):
@@ -59,6 +50,16 @@ def reply_value(reply: object) -> Any:
     if not parsed.ok:
         raise MasterError(parsed.code, parsed.status)
     return parsed.value
+
+
+def master_is_online(uri: str, caller_id: str, timeout: float | None = None) -> bool:
+    """Whether the master at ``uri`` answers ``getPid`` (`MasterClient.is_online`), asked
+    once on a connection of its own."""
+    master = MasterClient(uri, caller_id, timeout=timeout)
+    try:
+        return master.is_online()
+    finally:
+        master.close()
 
 
 class MasterClient:
@@ -131,12 +132,36 @@ class MasterClient:
         # multicall wraps each successful result in a one-element list
         return [reply_value(r[0] if isinstance(r, list) and len(r) == 1 else r) for r in replies]
 
-    def is_online(self) -> bool:
-        """Whether the master answers at all (``getPid``), as ``rosgraph.Master.is_online``."""
+    # -- is a master up? ----------------------------------------------------------------------
+
+    def is_online(self, timeout: float | None = None) -> bool:
+        """Whether a master answers ``getPid`` with its pid, as ``rosgraph.Master.is_online``
+        (and roscore, before saying another master runs) asks it."""
         try:
-            self.call("getPid")
+            self.call("getPid", timeout=timeout)
         except (MasterUnreachable, MasterError):
             return False
+        return True
+
+    def check_online(self, timeout: float | None = None) -> None:
+        """Ask the master for its pid, as ROS 1's tools do before anything else.
+
+        Raises:
+            MasterUnreachable: no master answers (the tools' ``Unable to communicate with
+                master!``).
+            MasterError: it answered with a failure.
+        """
+        self.call("getPid", timeout=timeout)
+
+    def answers(self, timeout: float | None = None) -> bool:
+        """Whether anything answers ROS's API at the URI, even with a refusal: a master to
+        register with once it can, as rospy's and roscpp's nodes wait for one."""
+        try:
+            self.call("getPid", timeout=timeout)
+        except MasterUnreachable:
+            return False
+        except MasterError:
+            return True  # it answered
         return True
 
     def as_caller(self, caller_id: str) -> MasterClient:
@@ -186,3 +211,12 @@ class MasterClient:
             TransportError, FaultError: the node gave no usable answer.
         """
         return reply_value(self.client.call(uri, method, self.caller_id, *params, timeout=timeout))
+
+
+__all__ = [
+    "MasterClient",
+    "MasterError",
+    "MasterUnreachable",
+    "master_is_online",
+    "reply_value",
+]

@@ -16,6 +16,7 @@ import os
 from typing import TYPE_CHECKING, Any
 
 from rosx.master.api import MasterApi
+from rosx.master.defaults import DEFAULT_MASTER_PORT
 from rosx.master.notifier import DEFAULT_TIMEOUT, Notifier
 from rosx.transport.address import http_uri
 from rosx.transport.loop_thread import Hosted
@@ -23,9 +24,6 @@ from rosx.transport.server import XmlRpcServer
 
 if TYPE_CHECKING:
     from collections.abc import Callable
-
-#: The port roscore listens on unless told otherwise.
-DEFAULT_MASTER_PORT = 11311
 
 
 class Master:

@@ -24,7 +24,7 @@ from concurrent.futures import ThreadPoolExecutor
 from typing import TYPE_CHECKING, Any, cast
 
 from rosx.master.client import MasterClient, reply_value
-from rosx.master.client import master_uri as find_master_uri
+from rosx.master.defaults import master_uri as find_master_uri
 from rosx.names import make_global_ns, ns_join, resolve, resolve_remappings
 from rosx.node import local, rosout, unixros
 from rosx.node.errors import NodeShutdownError, ServiceError

@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import shlex
 
+from rosx.master.defaults import DEFAULT_MASTER_URI
 from rosx.packages.crawl import PREFIX
 
 DISTRO = "noetic"
-DEFAULT_MASTER_URI = "http://localhost:11311"
 
 SHARE = PREFIX / "share"
 ROS_ROOT = SHARE / "ros"

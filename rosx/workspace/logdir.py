@@ -68,18 +68,21 @@ def prepare_run_log_dir(environ: Mapping[str, str], run_id: str) -> Path:
 
 def current_run_id(environ: Mapping[str, str], timeout: float = 2.0) -> str | None:
     """The ``/run_id`` of the master at ``ROS_MASTER_URI``, or None when none answers."""
-    from rosx.transport.client import XmlRpcClient  # noqa: PLC0415
-    from rosx.transport.errors import FaultError, TransportError  # noqa: PLC0415
+    from rosx.master.client import (  # noqa: PLC0415 - the network only for roscd log
+        MasterClient,
+        MasterError,
+        MasterUnreachable,
+    )
+    from rosx.master.defaults import master_uri  # noqa: PLC0415 - as the client
 
-    uri = environ.get("ROS_MASTER_URI") or "http://localhost:11311"
-    with XmlRpcClient(timeout=timeout) as client:
-        try:
-            reply = client.call(uri, "getParam", "/roslaunch", "/run_id")
-        except (TransportError, FaultError, OSError, ValueError):
-            return None
-    if isinstance(reply, list) and len(reply) == 3 and reply[0] == 1 and reply[2]:
-        return str(reply[2])
-    return None
+    master = MasterClient(master_uri(environ), "/roslaunch", timeout=timeout)
+    try:
+        run_id = master.call("getParam", "/run_id")
+    except (MasterError, MasterUnreachable, ValueError):
+        return None
+    finally:
+        master.close()
+    return str(run_id) if run_id else None
 
 
 def current_log_dir(environ: Mapping[str, str]) -> tuple[Path, bool]:

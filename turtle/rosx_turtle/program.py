@@ -9,18 +9,18 @@ shutdown from outside (``rosnode kill``); the exit status is then 0.
 
 from __future__ import annotations
 
-import contextlib
-import signal
 import threading
 from typing import TYPE_CHECKING, Protocol, TypeVar
 from urllib.parse import urlsplit
 
-from rosx.master.client import MasterClient, MasterError, master_uri
+from rosx.master.client import MasterClient
+from rosx.master.defaults import master_uri
 from rosx.node import ERROR, INFO
+from rosx.signals import stop_on_signals
 from rosx.transport.errors import TransportError
 
 if TYPE_CHECKING:
-    from collections.abc import Callable, Iterator, Mapping
+    from collections.abc import Callable, Mapping
 
     from rosx_turtle.console import Console
 
@@ -47,44 +47,16 @@ def master_address(override: str | None, environ: Mapping[str, str]) -> str:
     return urlsplit(uri).netloc or uri
 
 
-def master_is_up(address: str) -> bool:
-    """Whether the master at ``address`` (``host:port``) answers a call."""
-    master = MasterClient(f"http://{address}/", "/rosx_turtle", timeout=_RETRY_PERIOD * 4)
-    try:
-        master.call("getPid")
-    except MasterError:
-        pass  # it answered
-    except TransportError:
-        return False
-    finally:
-        master.close()
-    return True
-
-
-@contextlib.contextmanager
-def stop_on_signals() -> Iterator[threading.Event]:
-    """An event set by SIGINT or SIGTERM while the block runs (on the main thread only)."""
-    stop = threading.Event()
-    if threading.current_thread() is not threading.main_thread():
-        yield stop
-        return
-    previous = {sig: signal.getsignal(sig) for sig in (signal.SIGINT, signal.SIGTERM)}
-    for sig in previous:
-        signal.signal(sig, lambda *_: stop.set())
-    try:
-        yield stop
-    finally:
-        for sig, handler in previous.items():
-            signal.signal(sig, handler)
-
-
 def start_when_master_is_up(
     start: Callable[[], T], console: Console, address: str, stop: threading.Event
 ) -> T | None:
     """``start()`` once the master at ``address`` answers (None if ``stop`` is set first)."""
     failed = False
+    master = MasterClient(f"http://{address}/", "/rosx_turtle", timeout=_RETRY_PERIOD * 4)
     while not stop.is_set():
-        if master_is_up(address):
+        up = master.answers()
+        master.close()  # a fresh connection each time: the master may restart meanwhile
+        if up:
             if failed:
                 console.print(INFO, f"Connected to master at [{address}]")
             try:

@@ -8,10 +8,9 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from rosx.master.defaults import DEFAULT_MASTER_PORT
 from rosx_commands.cli import ToolParser, run_command
 from rosx_commands.context import Environment
-
-DEFAULT_PORT = 11311
 
 _DESCRIPTION = (
     "roscore will start up a ROS Master, a ROS Parameter Server and a rosout logging node"
@@ -72,7 +71,7 @@ def _roscore(argv: list[str], env: Environment) -> int:
     if args:
         parser.error("roscore does not take arguments")
     try:
-        port = int(options.port) if options.port is not None else DEFAULT_PORT
+        port = int(options.port) if options.port is not None else DEFAULT_MASTER_PORT
     except ValueError:
         parser.error(f"invalid port: {options.port}")
     if not 0 < port < 65536:

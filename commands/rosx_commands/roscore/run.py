@@ -14,20 +14,18 @@ already runs on the port, or the port is taken).
 from __future__ import annotations
 
 import os
-import signal
-import threading
-from typing import TYPE_CHECKING, Any, TextIO
+from typing import TYPE_CHECKING, TextIO
 
 from rosx.core import Core, PortInUseError
 from rosx.core.params import ROSDISTRO, ROSVERSION
-from rosx.master.client import master_uri
+from rosx.master.defaults import master_uri
+from rosx.signals import STOP_SIGNALS, handling
 from rosx.transport.address import address_warnings, foreign_address_warning, is_local_host
 from rosx.wire.xmlrpc_http import parse_http_uri
 from rosx.workspace.logdir import announce_run_log
 
 if TYPE_CHECKING:
     from collections.abc import Mapping
-    from types import FrameType
 
 
 def _summary_value(value: str) -> str:
@@ -129,24 +127,19 @@ class _StopSignals:
     starts or the summary prints is kept until `wait`, so roscore's start-up lines and its
     shutdown lines are always printed whole."""
 
-    _SIGNALS = (signal.SIGINT, signal.SIGTERM)
-
     def __init__(self) -> None:
         self.received = False
         self._waiting = False
-        self._previous: dict[int, Any] = {}  # the handlers replaced
+        self._handling = handling(STOP_SIGNALS, self._handle)
 
     def __enter__(self) -> _StopSignals:
-        if threading.current_thread() is threading.main_thread():
-            for sig in self._SIGNALS:
-                self._previous[sig] = signal.signal(sig, self._handle)
+        self._handling.__enter__()
         return self
 
     def __exit__(self, *exc: object) -> None:
-        for sig, handler in self._previous.items():
-            signal.signal(sig, handler)
+        self._handling.__exit__(None, None, None)
 
-    def _handle(self, signum: int, frame: FrameType | None) -> None:
+    def _handle(self, signum: int) -> None:
         self.received = True
         if self._waiting:
             raise _Stop

@@ -79,7 +79,7 @@ def call_command(argv: list[str], env: Environment) -> int:
     services = Services(env)
     name = services.resolve(args[0])
     if options.wait:
-        services.master.call("getPid")
+        services.master.check_online()
         _wait_for_service(services, name, options.timeout)
     service_class = services.service_class(name)
     caller = _Caller(services, name, service_class, options)

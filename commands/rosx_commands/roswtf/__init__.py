@@ -101,7 +101,7 @@ def _launch_rules(files: list[str], env: Environment, findings: Findings) -> str
 
 
 def _roswtf(argv: list[str], env: Environment) -> int:
-    from rosx.master.client import master_uri as uri_of  # noqa: PLC0415
+    from rosx.master.defaults import master_uri as uri_of  # noqa: PLC0415
     from rosx.workspace.environment import ROS_ROOT  # noqa: PLC0415
     from rosx_commands.roswtf import offline  # noqa: PLC0415
 
@@ -136,7 +136,10 @@ def _roswtf(argv: list[str], env: Environment) -> int:
     findings.print(env)
     findings.clear()
     env.out(_RULE)
-    if options.offline or not master or offline.invalid_url(master) or not _master_up(master):
+    from rosx.master.client import master_is_online  # noqa: PLC0415 - the network only here
+
+    online = not (options.offline or not master or offline.invalid_url(master))
+    if not online or not master_is_online(master, "/roswtf", timeout=3.0):
         env.out(
             "\nROS Master does not appear to be running.\nOnline graph checks will not be run.\n"
             f"ROS_MASTER_URI is [{master}]"
@@ -162,20 +165,6 @@ def _roswtf(argv: list[str], env: Environment) -> int:
     env.out("\nOnline checks summary:\n")
     findings.print(env)
     return ExitStatus.OK
-
-
-def _master_up(uri: str) -> bool:
-    from rosx.master.client import MasterClient, MasterError  # noqa: PLC0415
-    from rosx.transport.errors import TransportError  # noqa: PLC0415
-
-    master = MasterClient(uri, "/roswtf", timeout=3.0)
-    try:
-        master.getPid()
-    except (MasterError, TransportError, OSError):
-        return False
-    finally:
-        master.close()
-    return True
 
 
 def roswtf(argv: Sequence[str], env: Environment) -> int:

@@ -203,6 +203,6 @@ def _check_master(uri: str) -> None:
     """Raise `MasterUnreachable` unless a master answers at ``uri``."""
     master = MasterClient(uri, "/rosx_sim", timeout=JOIN_TIMEOUT)
     try:
-        master.call("getPid")
+        master.check_online()
     finally:
         master.close()

@@ -19,11 +19,12 @@ import sys
 from typing import TYPE_CHECKING, NoReturn
 
 from rosx.core import PortInUseError
-from rosx.master.client import MasterError, MasterUnreachable, master_uri
+from rosx.master.client import MasterError, MasterUnreachable
+from rosx.master.defaults import DEFAULT_MASTER_PORT, master_uri
+from rosx.signals import stop_on_signals
 from rosx.transport.address import advertised_host, http_uri
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
-from rosx_turtle.program import stop_on_signals
 from rosx_turtle.sim.host import SimHost
 from rosx_turtle.tui.running import is_terminal, run_app
 
@@ -34,7 +35,6 @@ if TYPE_CHECKING:
 
     from rosx_turtle.env import Env
 
-DEFAULT_PORT = 11311
 DESCRIPTION = (
     "Run a ROS master, /rosout, turtlesim and a keyboard teleop in one process, and show the "
     "pond with live topic and node panels. Other terminals attach with ROS_MASTER_URI."
@@ -75,7 +75,9 @@ def port(text: str) -> int:
 
 def _parse(argv: Sequence[str], env: Env) -> argparse.Namespace:
     parser = _Parser(env)
-    parser.add_argument("-p", "--port", type=port, default=None, help="the master's port (11311)")
+    parser.add_argument(
+        "-p", "--port", type=port, default=None, help=f"the master's port ({DEFAULT_MASTER_PORT})"
+    )
     parser.add_argument(
         "--join",
         action="store_true",
@@ -97,7 +99,7 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
         return done.status
     headless = options.headless or not is_terminal(env.stdout)
     console = Console(env.stdout, env.stderr, env.environ) if headless else None
-    port_number = DEFAULT_PORT if options.port is None else options.port
+    port_number = DEFAULT_MASTER_PORT if options.port is None else options.port
     join = _join_uri(options.port, env) if options.join else None
     host = SimHost(
         port_number, env.environ, console=console, seed=seed, watch=not headless, join=join
