@@ -7,10 +7,10 @@ so short commands stay fast; ``rosx --help`` builds the typer menu (`rosx_comman
 
 from __future__ import annotations
 
-import signal
 import sys
 from collections.abc import Sequence
 
+from rosx.signals import interrupt_on_sigint
 from rosx_commands.context import Environment
 from rosx_commands.tools import TOOLS, load_tool
 
@@ -25,20 +25,10 @@ def run_tool(argv: Sequence[str], env: Environment | None = None) -> int:
     return run_menu(argv, env)
 
 
-def take_sigint() -> None:
-    """Make SIGINT raise `KeyboardInterrupt` even when this process started with it ignored.
-
-    A POSIX shell starts ``cmd &`` with SIGINT ignored, and Python then installs no handler of
-    its own; ROS 1's tools install theirs and stop on ``kill -INT``, so rosx's do too.
-    """
-    if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
-        signal.signal(signal.SIGINT, signal.default_int_handler)
-
-
 def run() -> None:
     """Console-script entry point."""
-    take_sigint()
+    interrupt_on_sigint()
     sys.exit(run_tool(sys.argv[1:]))
 
 
-__all__ = ["TOOLS", "load_tool", "run", "run_tool", "take_sigint"]
+__all__ = ["TOOLS", "load_tool", "run", "run_tool"]

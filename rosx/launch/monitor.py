@@ -42,6 +42,8 @@ import sys
 import time
 from typing import TYPE_CHECKING
 
+from rosx.signals import handling
+
 if TYPE_CHECKING:
     from collections.abc import Callable, Iterator, Sequence
     from pathlib import Path
@@ -340,18 +342,16 @@ class ProcessMonitor:
         except ValueError:  # not the main thread
             yield
             return
-        previous: dict[signal.Signals, object] = {}
         try:
-            for sig in _STOP_SIGNALS:
-                previous[sig] = signal.signal(sig, self._on_stop_signal)
-            previous[signal.SIGCHLD] = signal.signal(signal.SIGCHLD, _on_child)
-            yield
+            with (
+                handling(_STOP_SIGNALS, self._on_stop_signal),
+                handling((signal.SIGCHLD,), _on_child),
+            ):
+                yield
         finally:
-            for sig, handler in previous.items():
-                signal.signal(sig, handler)  # type: ignore[arg-type]
             signal.set_wakeup_fd(old_fd)
 
-    def _on_stop_signal(self, signum: int, frame: object) -> None:
+    def _on_stop_signal(self, signum: int) -> None:
         self._stop_requested = True
 
     def spin(self) -> None:
@@ -472,7 +472,7 @@ class ProcessMonitor:
         self._wakeup.close()
 
 
-def _on_child(signum: int, frame: object) -> None:
+def _on_child(signum: int) -> None:
     """SIGCHLD: nothing to do here; the wake-up byte makes the monitor look."""
 
 

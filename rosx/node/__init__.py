@@ -25,7 +25,8 @@ Modules, one concept each:
   master.
 - `params`: the parameter client and cache. `clock`: time, sleep, `Rate`.
 - `rosout`: log levels and console lines; `log_services`: ``/rosout`` and the logger services.
-- `signals`: optional SIGINT/SIGTERM handling. `errors`: the exceptions.
+- `errors`: the exceptions. (Signal handling is `rosx.signals`; `install_signal_handlers` is
+  served here too.)
 - `stats`: what a subscriber measures of a topic (rate, bandwidth, delay), as ``rostopic
   hz``/``bw``/``delay`` and rqt_topic report it.
 
@@ -48,8 +49,8 @@ if TYPE_CHECKING:
     from rosx.node.node import Node
     from rosx.node.rosout import DEBUG, ERROR, FATAL, INFO, WARN
     from rosx.node.service_client import ServiceClient
-    from rosx.node.signals import install_signal_handlers
     from rosx.node.subscription import RawMessage
+    from rosx.signals import install_signal_handlers
 
 #: Each public name and the module that defines it.
 _HOMES = {
@@ -69,7 +70,7 @@ _HOMES = {
     "ServiceError": "rosx.node.errors",
     "ServiceHandle": "rosx.node.handles",
     "Subscriber": "rosx.node.handles",
-    "install_signal_handlers": "rosx.node.signals",
+    "install_signal_handlers": "rosx.signals",
     "now": "rosx.node.clock",
     "sleep": "rosx.node.clock",
 }

@@ -18,11 +18,11 @@ the end of input (where ROS 1's would spin forever). A failed read prints
 
 from __future__ import annotations
 
-import signal
 import threading
 from typing import TYPE_CHECKING, Any
 
 from rosx.msg.codec.classes import get_message_class
+from rosx.signals import STOP_SIGNALS, handling
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.keyboard import RawKeys
@@ -31,7 +31,6 @@ from rosx_turtle.roscpp import NodeArgs
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
-    from types import FrameType
 
     from rosx.node import Node, Publisher
     from rosx_turtle.env import Env
@@ -52,7 +51,7 @@ class _Quit(BaseException):
     """A signal asked the key loop to end."""
 
 
-def _quit(signum: int, frame: FrameType | None) -> None:
+def _quit(signum: int) -> None:
     raise _Quit
 
 
@@ -69,14 +68,9 @@ def run_teleop(argv: Sequence[str], env: Env | None = None) -> int:
     env = env or ProcessEnv()
     args = NodeArgs.parse(argv, DEFAULT_NAME)
     console = Console(env.stdout, env.stderr, env.environ)
-    handles = threading.current_thread() is threading.main_thread()
-    previous = {sig: signal.getsignal(sig) for sig in (signal.SIGINT, signal.SIGTERM)}
     node: Node | None = None
     try:
-        with RawKeys(_fileno(env.stdin)) as keys:
-            if handles:
-                for sig in previous:
-                    signal.signal(sig, _quit)
+        with RawKeys(_fileno(env.stdin)) as keys, handling(STOP_SIGNALS, _quit):
             node = start_when_master_is_up(
                 lambda: _start(args, env),
                 console,
@@ -94,9 +88,6 @@ def run_teleop(argv: Sequence[str], env: Env | None = None) -> int:
     except _Quit:
         return 0
     finally:
-        if handles:
-            for sig, handler in previous.items():
-                signal.signal(sig, handler)
         if node is not None:
             node.shutdown("teleop ended")
 

@@ -12,7 +12,6 @@ from __future__ import annotations
 import contextlib
 import optparse
 import os
-import signal
 import sys
 import threading
 import time
@@ -25,7 +24,6 @@ from rosx_commands.errors import unreachable
 
 if TYPE_CHECKING:
     from collections.abc import Iterator
-    from types import FrameType
 
     from rosx.bag.player import Player
     from rosx.bag.reader import BagReader
@@ -316,27 +314,16 @@ def _run(player: Player, options: optparse.Values, env: Environment) -> int:
             env.stdout.flush()
         player.run()
 
+    from rosx.signals import STOP_SIGNALS, handling  # noqa: PLC0415
+
     worker = threading.Thread(target=play, name="rosx-play", daemon=True)
-    with _signals_stop(player), _keys(player, env):
+    with handling(STOP_SIGNALS, lambda signum: player.stop()), _keys(player, env):
         worker.start()
         while worker.is_alive():
             worker.join(0.1)
     env.stdout.write("\nDone.\n")
     env.stdout.flush()
     return ExitStatus.OK
-
-
-@contextlib.contextmanager
-def _signals_stop(player: Player) -> Iterator[None]:
-    def handler(signum: int, frame: FrameType | None) -> None:
-        player.stop()
-
-    previous = {s: signal.signal(s, handler) for s in (signal.SIGINT, signal.SIGTERM)}
-    try:
-        yield
-    finally:
-        for signum, old in previous.items():
-            signal.signal(signum, old)
 
 
 @contextlib.contextmanager

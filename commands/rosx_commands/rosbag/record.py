@@ -8,7 +8,6 @@ was queued is written, the index too, and ``NAME.bag.active`` becomes ``NAME.bag
 from __future__ import annotations
 
 import optparse
-import signal
 import time
 from typing import TYPE_CHECKING, Any
 
@@ -17,7 +16,7 @@ from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.errors import unreachable
 
 if TYPE_CHECKING:
-    from types import FrameType
+    pass
 
 _HELP_USAGE = "rosbag record TOPIC1 [TOPIC2 TOPIC3 ...]"
 
@@ -242,6 +241,7 @@ def record(argv: list[str], env: Environment) -> int:
 
     from rosx.bag.recorder import Recorder, RecordOptions  # noqa: PLC0415
     from rosx.node import Node  # noqa: PLC0415
+    from rosx.signals import stop_on_signals  # noqa: PLC0415
 
     exclude = options.exclude_regex
     record_all = options.all
@@ -278,7 +278,6 @@ def record(argv: list[str], env: Environment) -> int:
         env.out(f"Recording from: {options.node}")
     uri = env.master_uri
     node = Node(f"record_{time.time_ns()}", master_uri=uri, environ=env.environ)
-    stop = _StopFlag()
     try:
         node.start()
     except Exception:
@@ -286,35 +285,15 @@ def record(argv: list[str], env: Environment) -> int:
         raise unreachable(env, uri) from None
     recorder = Recorder(node, record_options, _Console(env, options.quiet))
     try:
-        with stop:
+        with stop_on_signals() as stop:
             try:
                 recorder.start()
             except OSError as exc:
                 env.err(f"Error writing: {exc}")
                 return ExitStatus.ERROR
-            while not stop.signalled and not recorder.stopping and not node.is_shutdown():
+            while not stop.is_set() and not recorder.stopping and not node.is_shutdown():
                 time.sleep(0.05)
             recorder.stop()
     finally:
         node.shutdown("rosbag record exited")
     return ExitStatus.ERROR if recorder.error else ExitStatus.OK
-
-
-class _StopFlag:
-    """SIGINT and SIGTERM set a flag (the main loop polls it) instead of raising."""
-
-    def __init__(self) -> None:
-        self.signalled = False
-        self._previous: dict[int, Any] = {}
-
-    def _handler(self, signum: int, frame: FrameType | None) -> None:
-        self.signalled = True
-
-    def __enter__(self) -> _StopFlag:
-        for signum in (signal.SIGINT, signal.SIGTERM):
-            self._previous[signum] = signal.signal(signum, self._handler)
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        for signum, previous in self._previous.items():
-            signal.signal(signum, previous)

@@ -19,13 +19,11 @@ from typing import TYPE_CHECKING, Any, NoReturn
 from rosx.msg.text.fieldpath import find_topic
 from rosx.names.anonymous import anonymous_node_name
 from rosx.names.remap_args import RemapArgs
+from rosx.signals import handling
 from rosx_commands.context import CommandError, Environment
 from rosx_commands.rostopic.listing import CALLER_ID
 
 if TYPE_CHECKING:
-    from collections.abc import Callable, Iterator
-    from types import FrameType
-
     from rosx.master.client import MasterClient
     from rosx.msg.codec.message import Message
     from rosx.msg.store import TypeStore
@@ -49,7 +47,8 @@ class Session:
         self._stack = contextlib.ExitStack()
 
     def __enter__(self) -> Session:
-        self._stack.enter_context(_sigterm_interrupts())
+        # While the session runs on the main thread, SIGTERM is Ctrl-C.
+        self._stack.enter_context(handling((signal.SIGTERM,), _interrupt))
         return self
 
     def __exit__(
@@ -65,7 +64,7 @@ class Session:
 
     def check_master(self) -> None:
         """ROS 1's first step: fail with its error when the master does not answer."""
-        self.master.call("getPid")
+        self.master.check_online()
 
     def start_node(self, *, rosout: bool = True) -> Node:
         """Start the tool's node (``/rostopic_<pid>_<ms>`` in ``ROS_NAMESPACE``).
@@ -207,20 +206,5 @@ def fail(message: str) -> NoReturn:
     raise CommandError(f"ERROR: {message}")
 
 
-@contextlib.contextmanager
-def _sigterm_interrupts() -> Iterator[None]:
-    """While the block runs on the main thread, SIGTERM raises KeyboardInterrupt."""
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-
-    def interrupt(signum: int, frame: FrameType | None) -> None:
-        raise KeyboardInterrupt
-
-    previous: Callable[[int, FrameType | None], Any] | int | None = signal.signal(
-        signal.SIGTERM, interrupt
-    )
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
+def _interrupt(signum: int) -> None:
+    raise KeyboardInterrupt

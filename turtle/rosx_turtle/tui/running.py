@@ -13,9 +13,10 @@ import signal
 import threading
 from typing import TYPE_CHECKING
 
+from rosx.signals import handling
+
 if TYPE_CHECKING:
-    from collections.abc import Callable, Iterator
-    from types import FrameType
+    from collections.abc import Callable
 
     from textual.app import App
 
@@ -44,7 +45,9 @@ def run_app(app: App[None], *, gone: Callable[[float], bool] | None = None) -> N
                 return
 
     watcher = threading.Thread(target=watch, args=(gone,), name="rosx-tui-watch", daemon=True)
-    with _on_sigterm(lambda: threading.Thread(target=exit_app, daemon=True).start()):
+    with handling(
+        (signal.SIGTERM,), lambda signum: threading.Thread(target=exit_app, daemon=True).start()
+    ):
         if gone is not None:
             watcher.start()
         try:
@@ -53,19 +56,3 @@ def run_app(app: App[None], *, gone: Callable[[float], bool] | None = None) -> N
             done.set()
             if watcher.is_alive():
                 watcher.join(timeout=1.0)
-
-
-@contextlib.contextmanager
-def _on_sigterm(handler: Callable[[], None]) -> Iterator[None]:
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-
-    def on_signal(signum: int, frame: FrameType | None) -> None:
-        handler()
-
-    previous = signal.signal(signal.SIGTERM, on_signal)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
