@@ -10,10 +10,11 @@ from typing import TYPE_CHECKING, Any
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import ERROR, INFO
+from rosx.signals import stop_on_signals
 from rosx_turtle.console import Console, NodeLog
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.maps.files import saved_pgm, saved_yaml
-from rosx_turtle.program import master_address, start_when_master_is_up, stop_on_signals
+from rosx_turtle.program import master_address, start_when_master_is_up
 from rosx_turtle.roscpp import NodeArgs
 
 if TYPE_CHECKING:

@@ -13,13 +13,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
 from rosx.node import FATAL
+from rosx.signals import stop_on_signals
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.program import (
     master_address,
     run_until_stopped,
     start_when_master_is_up,
-    stop_on_signals,
 )
 from rosx_turtle.roscpp import NodeArgs
 from rosx_turtle.tui.running import is_terminal
