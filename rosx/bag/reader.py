@@ -167,10 +167,17 @@ class BagReader:
 
     def _read_record(self, op: int | None = None) -> tuple[dict[str, bytes], bytes]:
         fields, dlen = self._read_record_header(op)
+        self._check_within(dlen)
         data = self.file.read(dlen)
         if len(data) < dlen:
             raise BagFormatError("Unexpected end of file reading a record's data")
         return fields, data
+
+    def _check_within(self, length: int) -> None:
+        """Refuse a length that runs past the end of the file before reading it (a read
+        allocates what it is asked for, 4 GiB for a damaged length)."""
+        if length > self.size - self.file.tell():
+            raise BagFormatError("Unexpected end of file reading a record's data")
 
     # -- chunks ------------------------------------------------------------------------------
 
@@ -203,6 +210,7 @@ class BagReader:
             return self._cache[1]
         header = self.chunk_header(index)
         self.file.seek(header.data_pos)
+        self._check_within(header.data_size)
         stored = self.file.read(header.data_size)
         if len(stored) < header.data_size:
             raise BagFormatError("Unexpected end of file reading a chunk")

@@ -300,30 +300,53 @@ def compress(compression: str, data: bytes) -> bytes:
     raise BagError(f"Unknown compression type: {compression}")
 
 
+#: What a chunk may say it holds whatever it stores: records up to the chunk threshold plus one
+#: message (a chunk over ROS 1's 768 KiB threshold holds a single large message).
+CHUNK_FLOOR = 64 << 20
+#: Beyond `CHUNK_FLOOR`, how many times its stored bytes a compressed chunk may expand to. Real
+#: data compresses a few times (lz4 cannot pass 255); a chunk claiming more is a bomb, which
+#: a few hundred bytes of bz2 can make of half a gigabyte of zeros.
+MAX_RATIO = 1000
+
+
 def decompress(compression: str, data: bytes, size: int) -> bytes:
     """A chunk's records from its stored bytes.
 
+    Never produces more than ``size`` bytes, and refuses a ``size`` beyond `CHUNK_FLOOR` that
+    is more than `MAX_RATIO` times the stored bytes, so a small file cannot make its reader
+    allocate gigabytes.
+
     Raises:
-        BagFormatError: unknown compression, or bytes that do not decompress to ``size``.
+        BagFormatError: unknown compression, a ``size`` out of proportion to the stored bytes,
+            or bytes that do not decompress to ``size``.
     """
     if compression == "none":
         out = data
-    elif compression == "bz2":
-        import bz2  # noqa: PLC0415
-
-        try:
-            out = bz2.decompress(data)
-        except (OSError, ValueError, EOFError) as exc:
-            raise BagFormatError(f"Error decompressing bz2 chunk: {exc}") from None
-    elif compression == "lz4":
-        import lz4.frame  # noqa: PLC0415
-
-        try:
-            out = lz4.frame.decompress(data)
-        except RuntimeError as exc:
-            raise BagFormatError(f"Error decompressing lz4 chunk: {exc}") from None
+    elif compression in ("bz2", "lz4"):
+        if size > CHUNK_FLOOR and size > MAX_RATIO * len(data):
+            raise BagFormatError(
+                f"Chunk says it holds {size} bytes in {len(data)} bytes of {compression}: "
+                "too many to be true"
+            )
+        out = _decompress(compression, data, size)
     else:
         raise BagFormatError(f"Unknown compression type: {compression}")
     if len(out) != size:
         raise BagFormatError(f"Chunk is {len(out)} bytes, its header says {size}")
     return out
+
+
+def _decompress(compression: str, data: bytes, size: int) -> bytes:
+    # One stream (one frame) per chunk, as ROS 1 writes them; one byte over `size` is enough
+    # to know the header is wrong.
+    try:
+        if compression == "bz2":
+            import bz2  # noqa: PLC0415 - only bags that use it pay for it
+
+            return bz2.BZ2Decompressor().decompress(data, max_length=size + 1)
+        import lz4.frame  # noqa: PLC0415
+
+        out: bytes = lz4.frame.LZ4FrameDecompressor().decompress(data, max_length=size + 1)
+        return out
+    except (OSError, ValueError, EOFError, RuntimeError) as exc:
+        raise BagFormatError(f"Error decompressing {compression} chunk: {exc}") from None
