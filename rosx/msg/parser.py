@@ -26,6 +26,12 @@ from rosx.msg.spec import (
     SrvSpec,
 )
 
+#: The most items a fixed-size array (``T[N]``), or all the fixed-size arrays of a message with
+#: those of the messages it embeds, may hold. genmsg sets no bound, but every message of the
+#: type is built holding them all: ``uint8[4294967295]`` would take 4 GiB before the first
+#: message arrives. The largest arrays of the standard types hold 36 (covariances).
+MAX_FIXED_ITEMS = 1 << 22
+
 _BASE_NAME = re.compile(r"[A-Za-z]\w*\Z")
 _RESOURCE_NAME = re.compile(r"[A-Za-z][\w/]*\Z")
 _ARRAY_SUFFIX = re.compile(r"\[(\d*)\]\Z")
@@ -176,6 +182,10 @@ def _parse_field(line: str, declaration: str, package: str) -> Field:
     base, is_array, array_len = _split_array(type_text)
     if base is None or not _RESOURCE_NAME.match(base):
         raise InvalidMsgSpecError(f"{type_text} is not a legal message field type")
+    if array_len is not None and array_len > MAX_FIXED_ITEMS:
+        raise InvalidMsgSpecError(
+            f"{type_text}: arrays of more than {MAX_FIXED_ITEMS} items are not supported"
+        )
     if base == "Header":
         base = HEADER_TYPE
     elif "/" not in base and base not in PRIMITIVE_TYPES:

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from rosx.msg.codec.codegen import Resolver, build_message_class
 from rosx.msg.codec.message import Message, ServiceDefinition
-from rosx.msg.parser import InvalidMsgSpecError
+from rosx.msg.parser import MAX_FIXED_ITEMS, InvalidMsgSpecError
 from rosx.msg.store import TypeStore, default_store
 
 if TYPE_CHECKING:
@@ -35,6 +35,8 @@ class _Classes:
         self.messages: dict[str, type[Message]] = {}
         self.services: dict[str, type[ServiceDefinition]] = {}
         self.building: list[str] = []
+        # Values a message of each type holds in fixed-size fields, embedded ones included.
+        self.fixed_items: dict[str, int] = {}
         self.resolver = Resolver(store.msg, self.message)
 
     def message(self, name: str) -> type[Message]:
@@ -48,9 +50,22 @@ class _Classes:
         self.building.append(name)
         try:
             # Embedded types first: that finds cycles before the md5 sums recurse into them.
+            items = 0
             for field in spec.fields:
+                each = 1
                 if not field.is_builtin:
                     self.message(field.base_type)
+                    each = self.fixed_items[field.base_type]
+                if not field.is_array:
+                    items += each
+                elif field.array_len is not None:
+                    items += each * field.array_len
+            if items > MAX_FIXED_ITEMS:
+                raise InvalidMsgSpecError(
+                    f"[{name}] holds {items} values in fixed-size arrays, more than the "
+                    f"{MAX_FIXED_ITEMS} supported"
+                )
+            self.fixed_items[name] = items
             built: type[Message] = build_message_class(
                 spec,
                 self.store.md5(name),

@@ -267,6 +267,10 @@ def _short(available: int, needed: int) -> None:
     raise struct.error(f"needs {needed} bytes, but the message has {available}")
 
 
+def _too_many(count: int) -> None:
+    raise struct.error(f"holds {count} elements with no fields, more than are accepted")
+
+
 def _serialization_error(msg: Message, exc: BaseException) -> Exception:
     from rosx.msg.codec.checks import serialization_error  # noqa: PLC0415 - only on the error path
 
@@ -315,6 +319,7 @@ _RUNTIME: dict[str, Any] = {
     "_as_bytes": _as_bytes,
     "_as_fixed_bytes": _as_fixed_bytes,
     "_check_length": _check_length,
+    "_too_many": _too_many,
     "_short": _short,
     "_serialization_error": _serialization_error,
     "_deserialization_error": _deserialization_error,

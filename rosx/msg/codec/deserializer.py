@@ -238,6 +238,9 @@ class _Reader:
 
     def number_array(self, base: str, size: int | None, target: str, depth: int) -> None:
         chars = UNPACK_CHARS[base]
+        if size == 0:  # nothing on the wire (an `_Item` of count 0 would be one value)
+            self.add(depth, f"{target} = {'[]' if base == 'bool' else '()'}")
+            return
         if size is not None:
             self.run.append(_Item(f"{size}{chars}", target, size, as_list=base == "bool"))
             return
@@ -270,6 +273,10 @@ class _Reader:
         count = self.count(depth) if size is None else str(size)
         self.flush(depth)
         self.settle(depth)
+        message = size is None and base != "string" and base not in TIME_CHARS
+        if message and _carries_nothing(self.lookup(base), self.lookup):
+            # Elements that take no bytes: no end of data stops a count of billions.
+            self.add(depth, f"if {count} > {MAX_EMPTY_ELEMENTS}: _too_many({count})")
         items = self.src.local("l")
         self.add(depth, f"{target} = {items} = []")
         self.add(depth, f"for _ in range({count}):")
@@ -289,3 +296,20 @@ class _Reader:
         self.settle(inner)
         self.add(inner, f"{items}.append({element})")
         self.reuse = reuse
+
+
+#: The most elements with no fields (``std_msgs/Empty[]``) a message may say it holds: each
+#: costs an object and nothing on the wire, so four bytes could ask for billions.
+MAX_EMPTY_ELEMENTS = 1 << 20
+
+
+def _carries_nothing(spec: MsgSpec, lookup: Lookup) -> bool:
+    """Whether messages of ``spec`` take no bytes on the wire."""
+    for field in spec.fields:
+        if field.array_len == 0:
+            continue
+        if field.is_array and field.array_len is None:
+            return False
+        if field.is_builtin or not _carries_nothing(lookup(field.base_type), lookup):
+            return False
+    return True

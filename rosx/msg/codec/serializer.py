@@ -184,8 +184,11 @@ class _Writer:
         self.flush(depth)
         element = self.src.local("e")
         self.add(depth, f"for {element} in {value}:")
+        before = len(self.body.lines)
         if base == "string" or base in TIME_CHARS:
             self.scalar(base, element, depth + 1)
         else:
             self.message(self.lookup(base), element, depth + 1)
         self.flush(depth + 1)
+        if len(self.body.lines) == before:  # elements with no fields (std_msgs/Empty)
+            self.add(depth + 1, "pass")
