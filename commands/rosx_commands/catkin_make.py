@@ -79,11 +79,15 @@ def _catkin_make(argv: list[str], env: Environment) -> int:
     layout = workspace_layout(working_directory(env), args.directory, args.source, args.build)
     # --pkg only narrows what make builds; rosx builds every package's types (it is cheap).
     only = list(args.only_pkg_with_deps or [])
+    from rosx.workspace.shell import ROS_COMMANDS  # noqa: PLC0415 - the names to write
+    from rosx_commands.main import TOOLS  # noqa: PLC0415 - the table of tools, no tool
+
     make = CatkinMake(
         layout,
         env.environ,
         shim_dirs=shim_dirs(),
         rosx=self_command(),
+        commands=[name for name in ROS_COMMANDS if name in TOOLS],
         only=only,
         install="install" in targets,
     )

@@ -11,7 +11,8 @@ of it that rosx does not carry out gets a CMake warning naming its file and line
 (`rosx.workspace.cmake.unsupported`), never silence. ``devel/``
 receives ``setup.sh``, ``setup.bash`` and ``setup.zsh``, which export Noetic's environment
 with the source space in front of ``ROS_PACKAGE_PATH`` (where rosx finds packages and their
-types), put rosx's ``rospy`` on ``PYTHONPATH`` and define ``roscd``/``rosls``, and ``.catkin``,
+types), put rosx's ``rospy`` on ``PYTHONPATH``, define ``roscd``/``rosls`` and put ROS 1's
+command names (programs in ``devel/bin``) in front of ``PATH``, and ``.catkin``,
 which marks ``devel/`` as a workspace (``roscd`` with no argument goes there). With the
 ``install`` target, ``install/`` is written too (`rosx.workspace.install`). C++ targets are
 named once, as not built: rosx compiles nothing.
@@ -150,6 +151,7 @@ class CatkinMake:
         *,
         shim_dirs: Sequence[Path],
         rosx: str,
+        commands: Sequence[str] = (),
         only: list[str] | None = None,
         install: bool = False,
     ) -> None:
@@ -157,6 +159,8 @@ class CatkinMake:
         self.environ = environ
         self.shim_dirs = list(shim_dirs)
         self.rosx = rosx
+        #: ROS 1's command names, written as programs in each space's ``bin/``.
+        self.commands = list(commands)
         self.only = only
         self.install = install
         self.warnings: list[str] = []
@@ -304,13 +308,18 @@ class CatkinMake:
             (devel / name).write_text(text, encoding="utf-8")
 
     def _setup_files(self, source: Path, space: Path) -> dict[str, str]:
-        """The setup files of a space (devel or install) whose packages are in ``source``."""
+        """The setup files of a space (devel or install) whose packages are in ``source``;
+        the command programs they put on ``PATH`` are written in its ``bin/`` meanwhile."""
+        from rosx.workspace.path_commands import write_commands  # noqa: PLC0415 - on writing
+
+        write_commands(space / "bin", self.rosx, self.commands, prune=False)
         files = {
             "setup.sh": setup_sh(
                 source=str(source),
                 devel=str(space),
                 shims=[str(d) for d in self.shim_dirs],
                 rosx=self.rosx,
+                commands=self.commands,
             )
         }
         for shell in ("bash", "zsh"):

@@ -19,6 +19,7 @@ from typing import NamedTuple
 
 import pytest
 
+from rosx.workspace.path_commands import HINTED
 from tests.support.cli import clean_environ
 
 ROOT = Path(__file__).parents[2]
@@ -48,9 +49,24 @@ class Tmux:
     """``rosx ARGV…`` alone in a detached tmux session of ``size`` (columns, rows), on a tmux
     server of its own (a socket in ``folder``), stopped on exit."""
 
-    def __init__(self, folder: Path, size: tuple[int, int], argv: list[str], **extra: str):
+    def __init__(
+        self,
+        folder: Path,
+        size: tuple[int, int],
+        argv: list[str],
+        *,
+        first_run: bool = False,
+        **extra: str,
+    ):
         self.tmux = needs_tmux()
         self.socket = str(folder / "tmux.sock")
+        # rosx's cache folder of its own: rosx sim's one-time hints are given there (already
+        # given, unless ``first_run``), not in the user's.
+        cache = folder / "cache"
+        (cache / "rosx").mkdir(parents=True, exist_ok=True)
+        if not first_run:
+            (cache / "rosx" / HINTED).write_text("given\n")
+        extra.setdefault("XDG_CACHE_HOME", str(cache))
         environ = clean_environ(TERM="xterm-256color", COLORTERM="truecolor", **extra)
         # textual takes COLUMNS and LINES over the terminal's size; pytest's process may have
         # them, and the tmux server hands its own environment to the program.

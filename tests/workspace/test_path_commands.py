@@ -67,7 +67,7 @@ def test_without_a_folder_the_names_are_functions_and_sh_gets_no_dashed_ones() -
     assert "rosmsg-proto" not in shell_init("rosx", "sh", names)
     with_folder = shell_init("rosx", "sh", names, folder="/c/rosx/bin-1")
     assert "rostopic() {" not in with_folder and "rosmsg-proto() {" not in with_folder
-    assert "PATH=/c/rosx/bin-1" in with_folder
+    assert "_rosx_bin=/c/rosx/bin-1\n" in with_folder
 
 
 def run_shell(

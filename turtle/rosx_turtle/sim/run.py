@@ -3,7 +3,8 @@
 On a terminal it draws the pond, the teleop pane and the live graph panels until ``q`` or
 Ctrl-C. When stdout is not a terminal, or with ``--headless``, it prints the master's URI and
 turtlesim's log lines instead, and runs until SIGINT or SIGTERM. Either way other terminals
-attach with ``ROS_MASTER_URI``.
+attach with ``ROS_MASTER_URI``. The first time it runs where ROS 1's command names do not run
+rosx's tools, it says how to make every terminal ready (``rosx shell-init --install``).
 
 With ``--join`` it starts no core: turtlesim and teleop (and the screen) join the master already
 running at ``ROS_MASTER_URI`` (or, with ``--port``, the one on that port of this host). When the
@@ -115,11 +116,16 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
         return 1
     except KeyboardInterrupt:  # Ctrl-C while starting: what started has been stopped
         return 0
+    from rosx.workspace.path_commands import hint_once  # noqa: PLC0415 - once it runs
+
+    notice = hint_once(env.environ)
     try:
         if headless:
+            if notice:
+                env.stderr.write(notice + "\n")
             _run_headless(host, env)
         else:
-            _run_screen(host)
+            _run_screen(host, notice)
     except KeyboardInterrupt:
         pass
     finally:
@@ -173,7 +179,7 @@ def _run_headless(host: SimHost, env: Env) -> None:
             pass
 
 
-def _run_screen(host: SimHost) -> None:
+def _run_screen(host: SimHost, notice: str | None) -> None:
     from rosx_turtle.tui.factory import make_sim_app  # noqa: PLC0415 - textual for the screen
 
-    run_app(make_sim_app(host))
+    run_app(make_sim_app(host, notice=notice))

@@ -31,8 +31,9 @@ def make_ponds_app(started: Callable[[], object] | None = None) -> PondsApp:
     return PondsApp(started)
 
 
-def make_sim_app(link: SimLink) -> SimApp:
-    """``rosx sim``'s terminal UI over ``link``, the teleop pane focused."""
+def make_sim_app(link: SimLink, *, notice: str | None = None) -> SimApp:
+    """``rosx sim``'s terminal UI over ``link``, the teleop pane focused; ``notice`` shown
+    for a while when it starts."""
     from rosx_turtle.tui.sim_app import SimApp  # noqa: PLC0415 - textual only when drawn
 
-    return SimApp(link)
+    return SimApp(link, notice=notice)

@@ -28,6 +28,10 @@ if TYPE_CHECKING:
     from rosx_turtle.tui.link import SimLink
 
 
+#: How long the start-up notice stays (long enough to read it and type the command).
+_NOTICE_SECONDS = 30
+
+
 class SimApp(App[None]):
     """``rosx sim``'s terminal UI over a `SimLink`."""
 
@@ -41,10 +45,15 @@ class SimApp(App[None]):
         Binding("ctrl+c", "quit", "Quit", show=False, priority=True),
     ]
 
-    def __init__(self, link: SimLink) -> None:
+    def __init__(self, link: SimLink, *, notice: str | None = None) -> None:
         super().__init__()
         self.link = link
+        self.notice = notice
         self.sub_title = f"ROS_MASTER_URI={link.master_uri}"
+
+    def on_mount(self) -> None:
+        if self.notice:
+            self.notify(self.notice, timeout=_NOTICE_SECONDS)
 
     def compose(self) -> ComposeResult:
         yield Header(icon="≈")
