@@ -154,6 +154,7 @@ def _locations(line: _Line) -> list[str]:
 
 
 def _master_lists(line: _Line, what: str) -> list[str]:
+    from rosx.graph.state import registrations  # noqa: PLC0415
     from rosx.master.client import MasterClient, MasterError  # noqa: PLC0415
     from rosx.transport.errors import TransportError  # noqa: PLC0415
 
@@ -161,16 +162,16 @@ def _master_lists(line: _Line, what: str) -> list[str]:
     try:
         if what == "params":
             return sorted(str(n) for n in master.getParamNames())
-        pubs, subs, services = master.system_state()
+        state = registrations(master)
     except (MasterError, TransportError, OSError):
         return []
     finally:
         master.close()
     if what == "topics":
-        return sorted({str(row[0]) for row in (*pubs, *subs)})
+        return state.topics
     if what == "services":
-        return sorted(str(row[0]) for row in services)
-    return sorted({str(node) for rows in (pubs, subs, services) for row in rows for node in row[1]})
+        return sorted(state.services)
+    return state.nodes
 
 
 def _topic_type(line: _Line, topic: str) -> str | None:

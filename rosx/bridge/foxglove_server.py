@@ -25,6 +25,7 @@ from rosx.bridge import foxglove as fx
 from rosx.bridge.protocol import DEFAULT_MAX_MESSAGE
 from rosx.bridge.safety import origin_allowed
 from rosx.bridge.server import Connection
+from rosx.graph.state import registrations
 from rosx.msg.codec.classes import get_service_class
 
 if TYPE_CHECKING:
@@ -135,8 +136,7 @@ class FoxgloveServer:
     def _read_graph(self) -> tuple[dict[str, str], dict[str, str]]:
         master = self.node.master
         topics = dict(master.topic_types())
-        _, _, services = master.call("getSystemState")
-        names = {str(row[0]) for row in services}
+        names = set(registrations(master).services)
         for name in names - set(self._service_types):
             with contextlib.suppress(Exception):  # a service that does not answer: not offered
                 self._service_types[name] = self.node.probe_service(name, timeout=2.0).get(

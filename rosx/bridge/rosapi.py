@@ -17,7 +17,7 @@ from __future__ import annotations
 import json
 from typing import TYPE_CHECKING, Any
 
-from rosx.graph.state import GraphState
+from rosx.graph.state import GraphState, registrations
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.msg.codec.source import python_name
 from rosx.node.clock import now
@@ -99,8 +99,7 @@ class RosApi:
         return self
 
     def _state(self) -> GraphState:
-        master = self.node.master
-        return GraphState.from_system_state(master.call("getSystemState"), master.topic_types())
+        return registrations(self.node.master, types=True)
 
     # -- topics ---------------------------------------------------------------------------------
 

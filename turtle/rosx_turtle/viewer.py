@@ -19,6 +19,7 @@ import contextlib
 import threading
 from typing import TYPE_CHECKING, Any
 
+from rosx.graph.state import registrations
 from rosx.msg.codec.classes import get_message_class
 from rosx.signals import stop_on_signals
 from rosx_turtle.console import Console
@@ -27,7 +28,7 @@ from rosx_turtle.program import master_address, start_when_master_is_up
 from rosx_turtle.roscpp import NodeArgs
 
 if TYPE_CHECKING:
-    from collections.abc import Callable, Mapping, Sequence
+    from collections.abc import Callable, Iterable, Mapping, Sequence
 
     from rosx.node import Node
     from rosx_turtle.env import Env
@@ -43,13 +44,14 @@ FRAME_RATE = 30.0
 
 
 def find_ponds(
-    topic_types: Sequence[Sequence[str]], publishers: Sequence[Sequence[Any]]
+    topic_types: Sequence[Sequence[str]], publishers: Iterable[Sequence[Any]]
 ) -> dict[str, dict[str, str]]:
     """The turtlesims of a graph: node -> {turtle name -> its topics' prefix}.
 
-    ``topic_types`` is the master's ``getTopicTypes`` answer, ``publishers`` the first part of
-    ``getSystemState``. A turtlesim is a node publishing ``<prefix>/pose`` of type
-    ``turtlesim/Pose``; the turtle's name is the last part of the prefix.
+    ``topic_types`` is the master's ``getTopicTypes`` answer, ``publishers`` each published
+    topic with its nodes (`rosx.graph.state.GraphState.publishers`). A turtlesim is a node
+    publishing ``<prefix>/pose`` of type ``turtlesim/Pose``; the turtle's name is the last part
+    of the prefix.
     """
     poses = {topic for topic, kind in topic_types if kind == POSE_TYPE}
     ponds: dict[str, dict[str, str]] = {}
@@ -129,7 +131,7 @@ class PondWatcher:
     def refresh(self) -> None:
         """Look at the graph once: add, update and drop ponds."""
         topic_types = self.node.master.call("getTopicTypes")
-        publishers, _, _ = self.node.master.call("getSystemState")
+        publishers = registrations(self.node.master).publishers.items()
         found = find_ponds(topic_types, publishers)
         for name in [n for n in self.ponds if n not in found]:
             self._drop(name)
@@ -249,7 +251,7 @@ def _screen_mode(node: Node) -> None:
 def run_turtlesim_view(argv: Sequence[str], env: Env | None = None) -> int:
     """Run turtlesim_view: the ponds on a terminal, their turtles as lines otherwise."""
     from rosx.names.anonymous import anonymous_name  # noqa: PLC0415
-    from rosx_turtle.tui.running import is_terminal  # noqa: PLC0415
+    from rosx.terminal import is_terminal  # noqa: PLC0415
 
     env = env or ProcessEnv()
     args = NodeArgs.parse(argv, anonymous_name("turtlesim_view"))

@@ -8,6 +8,7 @@ core's errors are worded by `rosx_commands.errors`).
 
 from __future__ import annotations
 
+from rosx.graph.state import registrations
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.context import CommandError, Environment
@@ -44,8 +45,8 @@ class Services:
 
     def services(self, namespace: str | None = None) -> list[tuple[str, list[str]]]:
         """Services with the nodes providing them, in the master's order, in ``namespace``."""
-        _, _, state = self.master.system_state()
-        rows = [(str(name), [str(n) for n in nodes]) for name, nodes in state]
+        state = registrations(self.master)
+        rows = [(name, list(nodes)) for name, nodes in state.services.items()]
         if namespace:
             prefix = make_global_ns(namespace)
             rows = [r for r in rows if r[0] == namespace or r[0].startswith(prefix)]

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from rosx.graph.state import registrations
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx_commands.cli import ToolParser
@@ -9,7 +10,7 @@ from rosx_commands.context import CommandError, Environment, ExitStatus
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from typing import Any
+    from collections.abc import Mapping
 
     from rosx.master.client import MasterClient
 
@@ -25,13 +26,16 @@ def resolve(env: Environment, name: str) -> str:
 
 def topic_rows(master: MasterClient) -> tuple[TopicRows, TopicRows]:
     """Published and subscribed topics with their types and nodes, in the master's order."""
-    publishers, subscribers, _ = master.system_state()
+    state = registrations(master)
     types = master.topic_types()
 
-    def rows(state: list[Any]) -> TopicRows:
-        return [(topic, types.get(topic, "unknown type"), list(nodes)) for topic, nodes in state]
+    def rows(section: Mapping[str, tuple[str, ...]]) -> TopicRows:
+        return [
+            (topic, types.get(topic, "unknown type"), list(nodes))
+            for topic, nodes in section.items()
+        ]
 
-    return rows(publishers), rows(subscribers)
+    return rows(state.publishers), rows(state.subscribers)
 
 
 def _list_bag(env: Environment, bag: str, topic: str | None) -> int:

@@ -20,6 +20,7 @@ from __future__ import annotations
 import time
 from typing import TYPE_CHECKING, Any
 
+from rosx.graph.state import registrations
 from rosx.master.client import MasterError
 from rosx.msg.codec.message import MessageException
 from rosx.transport.errors import TransportError
@@ -207,12 +208,10 @@ class Publishing:
     def _known_subscribers(self) -> set[str] | None:
         """The nodes the master lists as subscribers of the topic (None if it cannot say)."""
         try:
-            _, subscribers, _ = self.session.master.system_state()
+            state = registrations(self.session.master)
         except (TransportError, MasterError):
             return None
-        me = self.publisher.node.name
-        topic = self.publisher.name
-        return {node for name, nodes in subscribers if name == topic for node in nodes} - {me}
+        return set(state.subscribers.get(self.publisher.name, ())) - {self.publisher.node.name}
 
     def _say(self, text: str) -> None:
         self.env.stdout.write(text + "\n")

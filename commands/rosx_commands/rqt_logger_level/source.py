@@ -1,6 +1,7 @@
 """Where rqt_logger_level reads and sets levels: every node that serves ``~set_logger_level``.
 
-`LiveSource` asks the master which services exist (``getSystemState``) and keeps the nodes
+`LiveSource` asks the master which services exist (`rosx.graph.state.registrations`) and keeps
+the nodes
 that serve both ``~get_loggers`` (``roscpp/GetLoggers``) and ``~set_logger_level``
 (``roscpp/SetLoggerLevel``), as rqt_logger_level does; rosx, rospy and roscpp nodes all serve
 them. Every method may block (network calls) and is called from worker threads only; tests
@@ -12,6 +13,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, Protocol
 
 if TYPE_CHECKING:
+    from collections.abc import Iterable, Sequence
+
     from rosx.master.client import MasterClient
 
 GET_LOGGERS = "/get_loggers"
@@ -39,8 +42,8 @@ class LevelSource(Protocol):
     def close(self) -> None: ...
 
 
-def level_nodes(services: list[tuple[str, list[str]]]) -> list[str]:
-    """The nodes that serve both logger services, from ``getSystemState``'s service list."""
+def level_nodes(services: Iterable[tuple[str, Sequence[str]]]) -> list[str]:
+    """The nodes that serve both logger services, from the services and their providers."""
     names = {name for name, _providers in services}
     return sorted(
         name[: -len(SET_LOGGER_LEVEL)]
@@ -66,8 +69,9 @@ class LiveSource:
         return self._master
 
     def nodes(self) -> list[str]:
-        _publishers, _subscribers, services = self.master.system_state()
-        return level_nodes(services)
+        from rosx.graph.state import registrations  # noqa: PLC0415 - as the master client
+
+        return level_nodes(registrations(self.master).services.items())
 
     def loggers(self, node: str) -> list[tuple[str, str]]:
         response = self._call(node + GET_LOGGERS, "roscpp/GetLoggers")

@@ -14,6 +14,7 @@ import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Protocol
 
+from rosx.graph.state import registrations
 from rosx_commands.toolnode import ToolNode
 
 if TYPE_CHECKING:
@@ -91,7 +92,7 @@ class LiveTopicSource(ToolNode):
     def topics(self) -> list[tuple[str, str]]:
         master = self.env.master(CALLER_ID)
         try:
-            published = {topic for topic, _ in master.system_state()[0]}
+            published = set(registrations(master).publishers)
             types = master.topic_types()
         finally:
             master.close()
