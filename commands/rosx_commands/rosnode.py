@@ -2,12 +2,18 @@
 
 from __future__ import annotations
 
-import contextlib
 import socket
 import time
 
+from rosx.graph.nodes import (
+    PING_TIMEOUT,
+    kill_node,
+    node_names,
+    purge_node,
+    unreachable_nodes,
+)
+from rosx.graph.state import registrations
 from rosx.master.client import MasterError
-from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
 from rosx.transport.errors import (
     CallTimeoutError,
@@ -27,7 +33,6 @@ if TYPE_CHECKING:
     from rosx.master.client import MasterClient
 
 CALLER_ID = "/rosnode"
-PING_TIMEOUT = 3.0
 
 COMMANDS = [
     ("ping", "test connectivity to node"),
@@ -50,42 +55,6 @@ def overview() -> str:
 
 def _resolve(env: Environment, name: str) -> str:
     return script_resolve_name("rosnode", name, ros_namespace(env.environ))
-
-
-def node_names(master: MasterClient, namespace: str | None = None) -> list[str]:
-    """Every node the master knows through a registration, sorted."""
-    nodes: set[str] = set()
-    prefix = make_global_ns(namespace) if namespace else None
-    for section in master.system_state():
-        for _, names in section:
-            nodes.update(
-                n for n in names if prefix is None or n.startswith(prefix) or n == namespace
-            )
-    return sorted(nodes)
-
-
-def unreachable_nodes(master: MasterClient, nodes: list[str]) -> list[str]:
-    """The nodes of ``nodes`` whose Slave API does not answer ``getPid`` (or that the master
-    cannot locate), in order; asked side by side, so hung nodes cost one timeout in all."""
-    from concurrent.futures import ThreadPoolExecutor  # noqa: PLC0415 - only these need threads
-
-    def dead(node: str) -> bool:
-        uri = master.lookup_node(node)
-        if uri is None:
-            return True
-        try:
-            master.node_call(uri, "getPid", timeout=PING_TIMEOUT)
-        except (TransportError, FaultError):
-            return True
-        except MasterError:
-            return False  # it answered
-        return False
-
-    if not nodes:
-        return []
-    with ThreadPoolExecutor(min(len(nodes), 16)) as pool:
-        verdicts = list(pool.map(dead, nodes))
-    return [node for node, gone in zip(nodes, verdicts, strict=True) if gone]
 
 
 def list_nodes(argv: list[str], env: Environment) -> int:
@@ -338,14 +307,7 @@ def kill(argv: list[str], env: Environment) -> int:
         env.out("killing:\n" + "\n".join(f" * {n}" for n in targets))
     else:
         env.out(f"killing {targets[0]}")
-    failed = []
-    for node in targets:
-        uri = master.lookup_node(node)
-        if uri is None:
-            failed.append(node)
-            continue
-        with contextlib.suppress(TransportError, FaultError):
-            master.node_call(uri, "shutdown", "user request")
+    failed = [node for node in targets if not kill_node(master, node)]
     if failed:
         env.err("ERROR: Failed to kill:\n" + "\n".join(f" * {n}" for n in failed))
         return ExitStatus.ERROR
@@ -389,20 +351,10 @@ def cleanup(argv: list[str], env: Environment) -> int:
     if answer.strip() == "n":
         env.out("aborting")
         return ExitStatus.OK
-    pubs, subs, srvs = master.system_state()
+    state = registrations(master)
     for node in dead:
         env.out(f"Unregistering {node}")
-        uri = master.lookup_node(node)
-        as_node = master.as_caller(node)
-        for topic, nodes in pubs:
-            if node in nodes:
-                as_node.call("unregisterPublisher", topic, uri)
-        for topic, nodes in subs:
-            if node in nodes:
-                as_node.call("unregisterSubscriber", topic, uri)
-        for service, nodes in srvs:
-            if node in nodes:
-                as_node.call("unregisterService", service, master.call("lookupService", service))
+        purge_node(master, node, state)
     env.out("done")
     return ExitStatus.OK
 

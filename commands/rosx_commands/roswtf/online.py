@@ -3,16 +3,18 @@ missing connections, nodes that cannot be contacted or are connected to nothing,
 do not answer a probe, ``/use_sim_time`` without ``/clock``; in roswtf's words and order.
 
 The graph comes from `rosx.graph.fetch.fetch_state` (the master's registrations and every node's
-``getBusInfo``), the service probes from `rosx.node.service_client.probe_service`.
+``getBusInfo``) and is analysed by `rosx.graph.checks`; why a node does not answer is
+`rosx.graph.nodes.contact_failure`, the service probes `rosx.node.service_client.probe_service`.
+This module runs the rules and words what they find.
 """
 
 from __future__ import annotations
 
-import socket
 from typing import TYPE_CHECKING
-from urllib.parse import urlsplit
 
+from rosx.graph.checks import actual_edges, expected_edges, isolated_nodes, silent_nodes
 from rosx.graph.fetch import fetch_state
+from rosx.graph.nodes import contact_failure
 from rosx.master.client import MasterClient, MasterError
 from rosx.node.errors import ServiceError
 from rosx.node.service_client import probe_service
@@ -21,37 +23,8 @@ from rosx.transport.errors import TransportError
 if TYPE_CHECKING:
     from collections.abc import Callable
 
-    from rosx.graph.state import GraphState
+    from rosx.graph.checks import Edge
     from rosx_commands.roswtf.report import Findings
-
-Edge = tuple[str, str, str]  # topic, publisher, subscriber
-
-
-def _actual_edges(state: GraphState) -> set[Edge]:
-    by_uri = {uri: node for node, uri in state.node_uris.items()}
-    edges: set[Edge] = set()
-    for node, links in (state.bus_info or {}).items():
-        for link in links or ():
-            peer = link.peer
-            if peer.startswith("http://"):
-                peer = by_uri.get(peer, f"unknown ({peer})")
-            if link.direction == "i":
-                edges.add((link.topic, peer, node))
-            elif link.direction == "o":
-                edges.add((link.topic, node, peer))
-    return edges
-
-
-def _expected(state: GraphState) -> tuple[set[Edge], dict[str, list[str]]]:
-    edges: set[Edge] = set()
-    unconnected: dict[str, list[str]] = {}
-    for topic, subscribers in state.subscribers.items():
-        for subscriber in subscribers:
-            if topic in state.publishers:
-                edges.update((topic, pub, subscriber) for pub in state.publishers[topic])
-            else:
-                unconnected.setdefault(subscriber, []).append(topic)
-    return edges, unconnected
 
 
 def _unconnected_text(unconnected: dict[str, list[str]], sim_time: bool) -> str:
@@ -77,25 +50,6 @@ def _probe(master: MasterClient, services: list[str]) -> list[str]:
     return problems
 
 
-def _ping_failure(node: str, uri: str | None) -> str:
-    """What rosnode's ping prints (to stderr) about a node that did not answer."""
-    if uri is None:
-        return f"cannot ping [{node}]: unknown node"
-    parts = urlsplit(uri)
-    try:
-        with socket.create_connection((parts.hostname or "", parts.port or 80), timeout=3.0):
-            pass
-    except socket.gaierror:
-        return f"ERROR: Unknown host [{parts.hostname}] for node [{node}]"
-    except ConnectionRefusedError:
-        return f"ERROR: connection refused to [{uri}]"
-    except TimeoutError:
-        return f"connection to [{node}] timed out"
-    except OSError:
-        return f"connection to [{node}] failed"
-    return f"connection to [{node}] failed"
-
-
 def check_graph(
     master_uri: str,
     findings: Findings,
@@ -117,21 +71,18 @@ def check_graph(
     state = fetch_state(master_uri, "/roswtf")
     say("... done analyzing graph")
     nodes = state.nodes
-    providers = {node for nodes_ in state.services.values() for node in nodes_}
-    for node in nodes:
-        links = (state.bus_info or {}).get(node)
-        if links is not None and not links and node not in providers:
-            findings.check("warning", f"Node [{node}] is not connected to anything", True)
-    expected, unconnected = _expected(state)
-    actual = _actual_edges(state)
+    for node in isolated_nodes(state):
+        findings.check("warning", f"Node [{node}] is not connected to anything", True)
+    expected, unconnected = expected_edges(state)
+    actual = actual_edges(state)
 
     def edges(which: set[Edge]) -> list[str]:
         return [f"{p}->{s} ({t})" for t, p, s in sorted(which)] if nodes else []
 
     def unpinged() -> list[str]:
-        failed = [n for n in nodes if state.unreachable(n) or n not in state.node_uris]
+        failed = silent_nodes(state)
         for node in failed:
-            complain(_ping_failure(node, state.node_uris.get(node)))
+            complain(contact_failure(node, state.node_uris.get(node)))
         return failed
 
     def clock_missing() -> bool:

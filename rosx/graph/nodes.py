@@ -1,0 +1,132 @@
+"""The nodes of a graph: which exist, which answer, and taking them out of the master.
+
+What ``rosnode list/ping/kill/machine/cleanup`` and roswtf ask of the nodes, as functions of a
+`rosx.master.client.MasterClient`:
+
+- `node_names`: every node a registration names, in a namespace or all;
+- `unreachable_nodes`: the nodes whose Slave API does not answer ``getPid`` (asked side by side,
+  so hung nodes cost one timeout in all), or that the master cannot locate;
+- `contact_failure`: why one node did not answer, in rosnode's words (unknown host, connection
+  refused, timed out);
+- `kill_node`: a ``shutdown`` call to a node (ROS wiki Slave_API);
+- `purge_node`: every registration of a node unregistered from the master, as the node itself
+  (``rosnode cleanup``).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import socket
+from urllib.parse import urlsplit
+
+from rosx.graph.state import registrations
+from rosx.master.client import MasterError
+from rosx.names.resolution import make_global_ns
+from rosx.transport.errors import FaultError, TransportError
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from rosx.graph.state import GraphState
+    from rosx.master.client import MasterClient
+
+#: Seconds a node has to answer ``getPid`` (rosnode's ping timeout).
+PING_TIMEOUT = 3.0
+#: Nodes asked at once by `unreachable_nodes`.
+WORKERS = 16
+
+
+def node_names(master: MasterClient, namespace: str | None = None) -> list[str]:
+    """Every node the master knows through a registration, in ``namespace`` (all when None),
+    sorted."""
+    nodes = registrations(master).nodes
+    if not namespace:
+        return nodes
+    prefix = make_global_ns(namespace)
+    return [n for n in nodes if n.startswith(prefix) or n == namespace]
+
+
+def unreachable_nodes(
+    master: MasterClient, nodes: list[str], timeout: float = PING_TIMEOUT
+) -> list[str]:
+    """The nodes of ``nodes`` whose Slave API does not answer ``getPid`` (or that the master
+    cannot locate), in order; asked side by side, so hung nodes cost one timeout in all."""
+    from concurrent.futures import ThreadPoolExecutor  # noqa: PLC0415 - only these need threads
+
+    def dead(node: str) -> bool:
+        uri = master.lookup_node(node)
+        if uri is None:
+            return True
+        try:
+            master.node_call(uri, "getPid", timeout=timeout)
+        except (TransportError, FaultError):
+            return True
+        except MasterError:
+            return False  # it answered
+        return False
+
+    if not nodes:
+        return []
+    with ThreadPoolExecutor(min(len(nodes), WORKERS)) as pool:
+        verdicts = list(pool.map(dead, nodes))
+    return [node for node, gone in zip(nodes, verdicts, strict=True) if gone]
+
+
+def contact_failure(node: str, uri: str | None, timeout: float = PING_TIMEOUT) -> str:
+    """Why ``node`` (at ``uri``, None when the master does not know it) did not answer, in the
+    words rosnode's ping prints."""
+    if uri is None:
+        return f"cannot ping [{node}]: unknown node"
+    parts = urlsplit(uri)
+    try:
+        with socket.create_connection((parts.hostname or "", parts.port or 80), timeout=timeout):
+            pass
+    except socket.gaierror:
+        return f"ERROR: Unknown host [{parts.hostname}] for node [{node}]"
+    except ConnectionRefusedError:
+        return f"ERROR: connection refused to [{uri}]"
+    except TimeoutError:
+        return f"connection to [{node}] timed out"
+    except OSError:
+        return f"connection to [{node}] failed"
+    return f"connection to [{node}] failed"
+
+
+def kill_node(master: MasterClient, node: str, reason: str = "user request") -> bool:
+    """Ask ``node`` to shut down; False when the master does not know it. A node that does
+    not answer the call counts as killed, as rosnode counts it."""
+    uri = master.lookup_node(node)
+    if uri is None:
+        return False
+    with contextlib.suppress(TransportError, FaultError):
+        master.node_call(uri, "shutdown", reason)
+    return True
+
+
+def purge_node(master: MasterClient, node: str, state: GraphState) -> None:
+    """Unregister every publication, subscription and service ``state`` gives ``node``, as
+    the node itself (what ``rosnode cleanup`` does for a node that no longer answers).
+
+    Raises:
+        MasterUnreachable, MasterError: the master did not take a call.
+    """
+    uri = master.lookup_node(node)
+    as_node = master.as_caller(node)
+    for topic, nodes in state.publishers.items():
+        if node in nodes:
+            as_node.call("unregisterPublisher", topic, uri)
+    for topic, nodes in state.subscribers.items():
+        if node in nodes:
+            as_node.call("unregisterSubscriber", topic, uri)
+    for service, nodes in state.services.items():
+        if node in nodes:
+            as_node.call("unregisterService", service, master.call("lookupService", service))
+
+
+__all__ = [
+    "PING_TIMEOUT",
+    "contact_failure",
+    "kill_node",
+    "node_names",
+    "purge_node",
+    "unreachable_nodes",
+]
