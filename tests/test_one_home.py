@@ -118,6 +118,23 @@ def test_only_the_master_client_asks_whether_a_master_is_up() -> None:
     assert _found(asks_pid, homes) == []
 
 
+def test_only_rosx_terminal_asks_whether_a_stream_is_a_terminal() -> None:
+    assert _found(lambda node: _call_of(node, "isatty"), {"rosx/terminal.py"}) == []
+
+
+def test_only_the_graph_and_the_master_client_read_the_masters_graph() -> None:
+    def reads_system_state(node: ast.AST) -> bool:
+        if _call_of(node, "system_state", "getSystemState"):
+            return True
+        return _call_of(node, "call") and _string_argument(node, "getSystemState")
+
+    # rosgraph's Master (rospy's API) has getSystemState as a method scripts call; the master
+    # answers it.
+    homes = {"rosx/master/client.py", "rosx/client/rosgraph.py", "rosx/master/api.py"}
+    found = [place for place in _found(reads_system_state, homes) if "rosx/graph/" not in place]
+    assert found == []
+
+
 @pytest.mark.parametrize(
     ("source", "expected"),
     [

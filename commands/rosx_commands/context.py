@@ -7,6 +7,8 @@ import sys
 from collections.abc import Mapping
 from enum import IntEnum
 
+from rosx.terminal import is_terminal
+
 TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import TextIO
@@ -49,11 +51,11 @@ class Environment:
 
     @property
     def stdout_isatty(self) -> bool:
-        return _isatty(self.stdout)
+        return is_terminal(self.stdout)
 
     @property
     def stderr_isatty(self) -> bool:
-        return _isatty(self.stderr)
+        return is_terminal(self.stderr)
 
     @property
     def master_uri(self) -> str:
@@ -75,11 +77,6 @@ class Environment:
     def err(self, text: str = "") -> None:
         """Print a line to stderr."""
         self.stderr.write(text + "\n")
-
-
-def _isatty(stream: TextIO) -> bool:
-    isatty = getattr(stream, "isatty", None)
-    return bool(isatty and isatty())
 
 
 class CommandError(Exception):

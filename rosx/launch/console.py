@@ -14,17 +14,11 @@ import threading
 import time
 from typing import TYPE_CHECKING
 
+from rosx.terminal import is_terminal
+
 if TYPE_CHECKING:
     from pathlib import Path
     from typing import TextIO
-
-
-def _isatty(stream: TextIO) -> bool:
-    isatty = getattr(stream, "isatty", None)
-    try:
-        return bool(isatty and isatty())
-    except ValueError:  # a closed stream
-        return False
 
 
 class LaunchConsole:
@@ -40,8 +34,8 @@ class LaunchConsole:
     ) -> None:
         self.stdout = stdout
         self.stderr = stderr
-        self.bold_out = _isatty(stdout) if color is None else color
-        self.red_err = _isatty(stderr) if color is None else color
+        self.bold_out = is_terminal(stdout) if color is None else color
+        self.red_err = is_terminal(stderr) if color is None else color
         self.titles = titles and self.bold_out
         self._log: TextIO | None = None
         self._lock = threading.Lock()

@@ -18,6 +18,7 @@ import time
 from typing import TYPE_CHECKING, TextIO
 
 from rosx.node import DEBUG, ERROR, FATAL, INFO, WARN
+from rosx.terminal import is_terminal
 
 if TYPE_CHECKING:
     from collections.abc import Mapping
@@ -76,19 +77,11 @@ class Console:
         """Print one record (coloured only on a terminal)."""
         line = console_line(level, message, node=node, fmt=self.fmt)
         stream = self.stdout if level < WARN else self.stderr
-        if _isatty(stream):
+        if is_terminal(stream):
             line = f"{_COLOURS.get(level, _COLOURS[ERROR])}{line}{_NORMAL}"
         with self._lock:
             stream.write(line + "\n")
             stream.flush()
-
-
-def _isatty(stream: TextIO) -> bool:
-    isatty = getattr(stream, "isatty", None)
-    try:
-        return bool(isatty and isatty())
-    except ValueError:  # a closed stream
-        return False
 
 
 class NodeLog:

@@ -329,9 +329,10 @@ def _run(player: Player, options: optparse.Values, env: Environment) -> int:
 @contextlib.contextmanager
 def _keys(player: Player, env: Environment) -> Iterator[None]:
     """Space and ``s`` from a terminal on stdin, read without echo or line buffering."""
+    from rosx.terminal import is_terminal  # noqa: PLC0415 - with the player's other imports
+
     stdin = env.stdin
-    isatty = getattr(stdin, "isatty", None)
-    if not (isatty and isatty()) or sys.platform == "win32":
+    if not is_terminal(stdin) or sys.platform == "win32":
         yield
         return
     import select  # noqa: PLC0415

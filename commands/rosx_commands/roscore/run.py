@@ -20,6 +20,7 @@ from rosx.core import Core, PortInUseError
 from rosx.core.params import ROSDISTRO, ROSVERSION
 from rosx.master.defaults import master_uri
 from rosx.signals import STOP_SIGNALS, handling
+from rosx.terminal import is_terminal
 from rosx.transport.address import address_warnings, foreign_address_warning, is_local_host
 from rosx.wire.xmlrpc_http import parse_http_uri
 from rosx.workspace.logdir import announce_run_log
@@ -180,8 +181,8 @@ def run_roscore(
     out = _Printer(
         stdout,
         errors,
-        stdout.isatty() if color is None else color,
-        errors.isatty() if color is None else color,
+        is_terminal(stdout) if color is None else color,
+        is_terminal(errors) if color is None else color,
     )
     for warning in address_warnings(environ):
         out.error(warning)

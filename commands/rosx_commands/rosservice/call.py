@@ -16,6 +16,7 @@ import os
 import time
 
 from rosx.names.anonymous import anonymous_node_name
+from rosx.terminal import is_terminal
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.rosservice.services import SERVICE_ERROR, Services
@@ -87,7 +88,7 @@ def call_command(argv: list[str], env: Environment) -> int:
     if service_args or not service_class._request_class.__slots__:
         caller.call(service_args)
         return ExitStatus.OK
-    if env.stdin.isatty():
+    if is_terminal(env.stdin):
         parser.error("Please specify service arguments")
     from rosx.msg.text.yamlload import load_stream  # noqa: PLC0415 - ruamel loads lazily
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from rosx.terminal import is_terminal
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import Environment, ExitStatus
 from rosx_commands.rostopic.listing import resolve
@@ -126,7 +127,7 @@ def pub(argv: list[str], env: Environment) -> int:
         if pub_args or not msg_class.__slots__:
             publishing.from_argv(pub_args, rate, options.once)
             return ExitStatus.OK
-        if not options.file and env.stdin.isatty():
+        if not options.file and is_terminal(env.stdin):
             parser.error("Please specify message values")
         if rate is None and not options.latch and not options.once:
             rate = DEFAULT_STREAM_RATE

@@ -23,11 +23,12 @@ from rosx.core import PortInUseError
 from rosx.master.client import MasterError, MasterUnreachable
 from rosx.master.defaults import DEFAULT_MASTER_PORT, master_uri
 from rosx.signals import stop_on_signals
+from rosx.terminal import is_terminal
 from rosx.transport.address import advertised_host, http_uri
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.sim.host import SimHost
-from rosx_turtle.tui.running import is_terminal, run_app
+from rosx_turtle.tui.running import run_app
 
 if TYPE_CHECKING:
     from collections.abc import Sequence

@@ -15,13 +15,14 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from rosx.signals import stop_on_signals
+from rosx.terminal import is_terminal
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.node.run import DEFAULT_NAME, run_turtlesim
 from rosx_turtle.program import master_address, start_when_master_is_up
 from rosx_turtle.roscpp import NodeArgs
 from rosx_turtle.tui.log import ScreenConsole
-from rosx_turtle.tui.running import is_terminal, run_app
+from rosx_turtle.tui.running import run_app
 
 if TYPE_CHECKING:
     from collections.abc import Sequence

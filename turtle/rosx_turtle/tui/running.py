@@ -21,15 +21,6 @@ if TYPE_CHECKING:
     from textual.app import App
 
 
-def is_terminal(stream: object) -> bool:
-    """Whether ``stream`` is a terminal (a closed stream is not)."""
-    isatty = getattr(stream, "isatty", None)
-    try:
-        return bool(isatty and isatty())
-    except ValueError:
-        return False
-
-
 def run_app(app: App[None], *, gone: Callable[[float], bool] | None = None) -> None:
     """Run ``app`` (blocking) until it exits; ``gone(timeout)`` True ends it as well."""
     done = threading.Event()

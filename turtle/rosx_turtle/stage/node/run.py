@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, NamedTuple
 
 from rosx.node import FATAL
 from rosx.signals import stop_on_signals
+from rosx.terminal import is_terminal
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.program import (
@@ -22,7 +23,6 @@ from rosx_turtle.program import (
     start_when_master_is_up,
 )
 from rosx_turtle.roscpp import NodeArgs
-from rosx_turtle.tui.running import is_terminal
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
