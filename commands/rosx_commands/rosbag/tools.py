@@ -14,6 +14,15 @@ import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from rosx.bag.edit import (
+    backup_path,
+    bag_file_problem,
+    changed_types,
+    copy_messages,
+    data_size,
+    recompress,
+    uncompressed_size,
+)
 from rosx.bag.errors import BagEncryptNotSupportedError, BagError, BagUnindexedError
 from rosx.bag.info import human_size
 from rosx.bag.reader import BagReader
@@ -104,30 +113,6 @@ class _Meter:
         self._write(self._done_text() + "\n")
 
 
-def _uncompressed_size(path: str) -> int:
-    """ROS 1's measure of a bag to copy: its chunks' uncompressed sizes (or the file's size)."""
-    with BagReader(path) as bag:
-        if not bag.chunks:
-            return bag.size
-        return sum(bag.chunk_header(i).size for i in range(len(bag.chunks)))
-
-
-def _data_size(path: str) -> int:
-    """ROS 1's measure of a bag to reindex: the file up to its index (all of it if none)."""
-    with BagReader(path, allow_unindexed=True) as bag:
-        return bag.index_pos or bag.size
-
-
-def _copy_messages(source: BagReader, target: Any, keep: Callable[[Any, int, bytes], bool]) -> None:
-    ids: dict[int, int] = {}
-    for conn, stamp, data in source.messages():
-        if not keep(conn, stamp, data):
-            continue
-        if conn.id not in ids:
-            ids[conn.id] = target.add_connection(conn.topic, conn.header)
-        target.write(ids[conn.id], stamp, data)
-
-
 def _in_place(
     env: Environment,
     paths: list[str],
@@ -147,8 +132,7 @@ def _in_place(
         )
         source = path
         if out == path:
-            named = Path(path)
-            backup = str(named.with_name(f"{named.stem}.orig{named.suffix}"))
+            backup = str(backup_path(path))
             if not options.force and Path(backup).exists():
                 if not options.quiet:
                     env.err(f"Skipping {path}. Backup path {backup} already exists.")
@@ -182,8 +166,6 @@ def _in_place(
 
 
 def _compression(argv: list[str], env: Environment, *, compress: bool) -> int:
-    from rosx.bag.writer import BagWriter  # noqa: PLC0415
-
     name = "compress" if compress else "decompress"
     parser = _parser(
         env,
@@ -214,8 +196,7 @@ def _compression(argv: list[str], env: Environment, *, compress: bool) -> int:
     compression = options.compression if compress else "none"
 
     def operation(source: str, out: str) -> None:
-        with BagReader(source) as bag, BagWriter(out, compression=compression) as writer:
-            _copy_messages(bag, writer, lambda *_: True)
+        recompress(source, out, compression)
 
     def check(path: str) -> bool:
         bag = _open(env, path)
@@ -225,7 +206,7 @@ def _compression(argv: list[str], env: Environment, *, compress: bool) -> int:
         return True
 
     return _in_place(
-        env, args, options, operation, copy_first=False, check=check, measure=_uncompressed_size
+        env, args, options, operation, copy_first=False, check=check, measure=uncompressed_size
     )
 
 
@@ -260,23 +241,12 @@ def reindex(argv: list[str], env: Environment) -> int:
             )
 
     def check(path: str) -> bool:
-        try:
-            with Path(path).open("rb") as file:
-                head = file.read(13)
-        except OSError as exc:
-            env.err(f"ERROR reading {path}: {exc}")
-            return False
-        if not head:
-            env.err(f"ERROR reading {path}: empty file")
-            return False
-        if not head.startswith(b"#ROSBAG V"):
-            env.err(f"ERROR reading {path}: This does not appear to be a bag file")
-            return False
-        return True
+        problem = bag_file_problem(path)
+        if problem is not None:
+            env.err(f"ERROR reading {path}: {problem}")
+        return problem is None
 
-    return _in_place(
-        env, args, options, operation, copy_first=True, check=check, measure=_data_size
-    )
+    return _in_place(env, args, options, operation, copy_first=True, check=check, measure=data_size)
 
 
 def filter_bag(argv: list[str], env: Environment) -> int:
@@ -332,7 +302,7 @@ def filter_bag(argv: list[str], env: Environment) -> int:
     source = _open(env, inbag)
     if source is None:
         return ExitStatus.ERROR
-    meter = _Meter(env, outbag, _uncompressed_size(inbag))
+    meter = _Meter(env, outbag, uncompressed_size(inbag))
 
     def keep(conn: Any, stamp: int, data: bytes) -> bool:
         names = {
@@ -347,7 +317,7 @@ def filter_bag(argv: list[str], env: Environment) -> int:
 
     try:
         with source, BagWriter(outbag) as writer:
-            _copy_messages(source, writer, keep)
+            copy_messages(source, writer, keep)
     except Exception as exc:  # the user's expression may raise anything
         env.err(f"ERROR: {type(exc).__name__}: {exc}")
         return ExitStatus.ERROR
@@ -396,17 +366,15 @@ def check(argv: list[str], env: Environment) -> int:
     bag = _open(env, args[0])
     if bag is None:
         return ExitStatus.ERROR
-    changed = []
+
+    def current_md5(msg_type: str) -> str | None:
+        try:
+            return get_message_class(msg_type)._md5sum
+        except Exception:  # unknown here: it plays with the definition the bag recorded
+            return None
+
     with bag:
-        for conn in bag.connections.values():
-            try:
-                current = get_message_class(conn.type)._md5sum
-            except Exception:
-                continue  # unknown here: it plays with the definition the bag recorded
-            if current != conn.md5sum and (conn.type, conn.md5sum) not in changed:
-                changed.append((conn.type, conn.md5sum))
-        for _ in bag.messages():
-            pass  # every chunk decompresses, every record parses
+        changed = changed_types(bag, current_md5)
     if not changed:
         env.out("Bag file does not need any migrations.")
         return ExitStatus.OK
