@@ -80,7 +80,7 @@ def _catkin_make(argv: list[str], env: Environment) -> int:
     # --pkg only narrows what make builds; rosx builds every package's types (it is cheap).
     only = list(args.only_pkg_with_deps or [])
     from rosx.workspace.shell import ROS_COMMANDS  # noqa: PLC0415 - the names to write
-    from rosx_commands.main import TOOLS  # noqa: PLC0415 - the table of tools, no tool
+    from rosx_commands.tools import TOOLS  # noqa: PLC0415 - the table of tools, no tool
 
     make = CatkinMake(
         layout,

@@ -7,6 +7,11 @@ text and status, then, on a terminal, one line more: the name the words make wit
 the spaces a printed sheet shows (``rosrun rqt graph rqt graph``), a close name, or that the
 package is not part of rosx and what rosx has instead (`rosx.workspace.programs.lacking`).
 Off a terminal the output stays ROS 1's, for the scripts that read it.
+
+`spaced_words` does the same for every tool that fails (``rostopic info /turtle1/cmd vel``,
+``rosmsg show geometry msgs/Twist``, ``rqt graph``): `rosx_commands.main` asks it after a
+tool's error, on a terminal. What a name may be depends on the tool: a topic, node, service or
+parameter of the running graph, a message or service type, a package, a rosx command.
 """
 
 from __future__ import annotations
@@ -36,7 +41,7 @@ def close_name(name: str, known: Iterable[str]) -> str | None:
 
 def rosx_tools() -> tuple[str, ...]:
     """The commands rosx has (``rosx TOOL``)."""
-    from rosx_commands.main import TOOLS  # noqa: PLC0415 - the table of tools, no tool
+    from rosx_commands.tools import TOOLS  # noqa: PLC0415 - the table of tools, no tool
 
     return tuple(TOOLS)
 
@@ -88,4 +93,112 @@ def unknown_package_line(
     return lacking(package, rosx_tools())
 
 
-__all__ = ["close_name", "known_packages", "rosx_tools", "unknown_package", "unknown_package_line"]
+#: What each tool's arguments may name, for `spaced_words`.
+_KINDS: dict[str, tuple[str, ...]] = {
+    "rostopic": ("topics", "msg"),
+    "rosmsg": ("msg",),
+    "rossrv": ("srv",),
+    "rosnode": ("nodes",),
+    "rosparam": ("params",),
+    "rosservice": ("services", "srv"),
+    "rosbag": ("topics",),
+    "rospack": ("packages",),
+    "roscd": ("packages",),
+    "rosls": ("packages",),
+    "rosed": ("packages",),
+    "roscp": ("packages",),
+    "rosversion": ("packages",),
+    "rqt": ("tools",),
+}
+
+
+class _Names:
+    """Whether a name exists, asked of the sources a tool's arguments may name (each asked
+    once, and only when a name is to be checked)."""
+
+    def __init__(self, kinds: tuple[str, ...], env: Environment) -> None:
+        self.kinds = kinds
+        self.env = env
+        self._graph: set[str] | None = None
+        self._packages: set[str] | None = None
+
+    def __call__(self, name: str) -> bool:
+        return any(self._has(kind, name) for kind in self.kinds)
+
+    def _has(self, kind: str, name: str) -> bool:
+        if kind in ("msg", "srv"):
+            return "/" in name and self._has_type(kind, name)
+        if kind == "packages":
+            return name in self.packages()
+        if kind == "tools":
+            return name in rosx_tools()
+        graph = self.graph(kind)
+        return name in graph or f"/{name}" in graph
+
+    def _has_type(self, kind: str, name: str) -> bool:
+        from rosx.msg.store import TypeStore  # noqa: PLC0415 - hints only
+
+        store = TypeStore.from_environ(self.env.environ)
+        return store.has_msg(name) if kind == "msg" else store.has_srv(name)
+
+    def packages(self) -> set[str]:
+        if self._packages is None:
+            from rosx.packages.index import PackageIndex  # noqa: PLC0415 - hints only
+
+            self._packages = known_packages(PackageIndex.from_environ(self.env.environ))
+        return self._packages
+
+    def graph(self, kind: str) -> set[str]:
+        """The running graph's topics, nodes, services and parameters (none without a master)."""
+        if self._graph is None:
+            self._graph = set()
+            from rosx.graph.fetch import fetch_state  # noqa: PLC0415 - hints only
+            from rosx.master.client import MasterError, MasterUnreachable  # noqa: PLC0415
+
+            try:
+                state = fetch_state(self.env.master_uri, "/rosx_hints", bus_info=False)
+                self._graph.update([*state.topics, *state.nodes, *state.services])
+                if "params" in self.kinds:
+                    master = self.env.master("/rosx_hints")
+                    try:
+                        self._graph.update(str(p) for p in master.getParamNames())
+                    finally:
+                        master.close()
+            except (MasterUnreachable, MasterError, OSError):
+                pass
+        return self._graph
+
+
+def spaced_words(tool: str, args: Sequence[str], env: Environment) -> str | None:
+    """For ``tool ARGS…`` that failed: the name two or more of the arguments make joined with
+    ``_``, if one exists (see the module docstring), as a line naming the command meant."""
+    from rosx.names.typos import joined  # noqa: PLC0415 - hints only
+
+    kinds = _KINDS.get(tool)
+    if kinds is None:
+        return None
+    words = [tool, *args] if kinds == ("tools",) else list(args)
+    exists = _Names(kinds, env)
+    for start in range(len(words) - 1):
+        run = []
+        for word in words[start:]:
+            if word.startswith("-") or ":=" in word:
+                break
+            run.append(word)
+        found = joined(run, exists) if len(run) > 1 else None
+        if found is not None:
+            name, count = found
+            fixed = [*words[:start], name, *words[start + count :]]
+            command = " ".join(fixed if kinds == ("tools",) else [tool, *fixed])
+            return f"[{tool}] Did you mean {name}? ({command})"
+    return None
+
+
+__all__ = [
+    "close_name",
+    "known_packages",
+    "rosx_tools",
+    "spaced_words",
+    "unknown_package",
+    "unknown_package_line",
+]

@@ -19,10 +19,23 @@ def run_tool(argv: Sequence[str], env: Environment | None = None) -> int:
     """Run ``rosx ARGV…`` and return its exit status (the tests' way in)."""
     env = env or Environment()
     if argv and argv[0] in TOOLS:
-        return load_tool(argv[0])(argv[1:], env)
+        status = load_tool(argv[0])(argv[1:], env)
+        if status and env.stderr_isatty:
+            _hint(argv[0], argv[1:], env)
+        return status
     from rosx_commands.menu import run_menu  # noqa: PLC0415 - typer only for the menu
 
     return run_menu(argv, env)
+
+
+def _hint(tool: str, args: Sequence[str], env: Environment) -> None:
+    """After a tool's error, on a terminal: the command meant, when words typed with spaces
+    for underscores make a name that exists (`rosx_commands.hints.spaced_words`)."""
+    from rosx_commands.hints import spaced_words  # noqa: PLC0415 - only after an error
+
+    line = spaced_words(tool, args, env)
+    if line is not None:
+        env.err(line)
 
 
 def run() -> None:

@@ -20,6 +20,7 @@ UsageError: type[Exception] = next(
 def build_menu() -> typer.Typer:
     app = typer.Typer(
         help="The ROS 1 command-line world. Each sub-command is the ROS tool of that name.",
+        epilog=_packages_epilog(),
         context_settings={"help_option_names": ["-h", "--help"]},
         add_completion=False,
         pretty_exceptions_enable=False,
@@ -41,6 +42,18 @@ def build_menu() -> typer.Typer:
     for name, (_, help_text) in TOOLS.items():
         _add_forwarder(app, name, help_text)
     return app
+
+
+def _packages_epilog() -> str:
+    """The ROS packages that come with rosx, for the end of ``rosx --help``."""
+    from rosx.workspace.programs import provided_packages  # noqa: PLC0415 - the help only
+
+    return (
+        "ROS packages that come with rosx (rospack, roscd, rosrun and roslaunch find them): "
+        + ", ".join(provided_packages())
+        + ". Others, such as gazebo_ros or move_base, are not part of rosx: use your own "
+        "packages on ROS_PACKAGE_PATH."
+    )
 
 
 def _add_forwarder(app: typer.Typer, name: str, help_text: str) -> None:

@@ -323,7 +323,7 @@ class CatkinMake:
             )
         }
         for shell in ("bash", "zsh"):
-            files[f"setup.{shell}"] = setup_for_shell(shell, str(space), self.rosx)
+            files[f"setup.{shell}"] = setup_for_shell(shell, str(space), self.rosx, self.commands)
         return files
 
 

@@ -91,48 +91,65 @@ def is_bundled_file(path: Path) -> bool:
 
 
 class Counterpart(NamedTuple):
-    """What rosx offers in place of a package it lacks: a command, shown only when the
-    program it runs is there (``requires``: a bundled ``(package, program)``, or a rosx tool
-    as ``("rosx", TOOL)``)."""
+    """What rosx offers in place of a package it lacks: a command, shown only when what it
+    runs is there (``requires``: a bundled ``(package, program)`` or ``(package, file.launch)``,
+    or a rosx tool as ``("rosx", TOOL)``)."""
 
     command: str
     requires: tuple[str, str]
 
 
+_STAGE_WORLD = Counterpart(
+    "rosx roslaunch turtlebot3_stage turtlebot3_world.launch",
+    ("turtlebot3_stage", "turtlebot3_world.launch"),
+)
 _STAGE = Counterpart("rosx rosrun stage_ros stageros WORLD", ("stage_ros", "stageros"))
-_RVIZ = Counterpart("rosx rviz", ("rosx", "rviz"))
+_MAP = Counterpart(
+    "rosx roslaunch turtlebot3_stage turtlebot3_map.launch",
+    ("turtlebot3_stage", "turtlebot3_map.launch"),
+)
+_TELEOP = Counterpart(
+    "rosx rosrun teleop_twist_keyboard teleop_twist_keyboard.py",
+    ("teleop_twist_keyboard", "teleop_twist_keyboard.py"),
+)
 _RQT = Counterpart("rosx rqt", ("rosx", "rqt"))
 
 #: Well-known ROS 1 packages that rosx does not provide, by name or by name prefix (ending in
 #: ``*``): what it offers instead, in order of preference.
 COUNTERPARTS: dict[str, tuple[Counterpart, ...]] = {
-    "gazebo_ros": (_STAGE,),
-    "gazebo_ros_pkgs": (_STAGE,),
-    "gazebo_plugins": (_STAGE,),
-    "gazebo": (_STAGE,),
-    "turtlebot3_gazebo": (_STAGE,),
-    "turtlebot3_fake": (_STAGE,),
-    "turtlebot3_bringup": (_STAGE,),
+    **dict.fromkeys(
+        (
+            "gazebo",
+            "gazebo_ros",
+            "gazebo_ros_pkgs",
+            "gazebo_plugins",
+            "turtlebot3_gazebo",
+            "turtlebot3_fake",
+            "turtlebot3_bringup",
+            "turtlebot3_simulations",
+            "stage",
+        ),
+        (_STAGE_WORLD, _STAGE),
+    ),
     "turtlebot3_teleop": (
         Counterpart(
-            "rosx rosrun teleop_twist_keyboard teleop_twist_keyboard.py",
-            ("teleop_twist_keyboard", "teleop_twist_keyboard.py"),
+            "rosx roslaunch turtlebot3_stage turtlebot3_teleop_key.launch",
+            ("turtlebot3_stage", "turtlebot3_teleop_key.launch"),
         ),
+        _TELEOP,
     ),
-    "turtlebot3_navigation": (_STAGE,),
-    "turtlebot3_slam": (_STAGE,),
-    "turtlebot3_*": (_STAGE,),
-    "stage": (_STAGE,),
-    "move_base": (_STAGE,),
-    "amcl": (_STAGE,),
-    "gmapping": (_STAGE,),
-    "slam_gmapping": (_STAGE,),
-    "navigation": (_STAGE,),
-    "rviz_visual_tools": (_RVIZ,),
+    **dict.fromkeys(("turtlebot3_slam", "gmapping", "slam_gmapping", "cartographer_ros"), (_MAP,)),
+    "turtlebot3_navigation": (_MAP,),
+    "move_base": (),
+    "amcl": (),
+    "navigation": (),
+    "turtlebot3_*": (_STAGE_WORLD,),
     "rqt_tf_tree": (Counterpart("rosx rqt_tf_tree", ("rosx", "rqt_tf_tree")),),
     "rqt_bag": (Counterpart("rosx rosbag info BAG", ("rosx", "rosbag")),),
-    "rqt_publisher": (Counterpart("rosx rostopic pub TOPIC TYPE", ("rosx", "rostopic")),),
-    "rqt_service_caller": (Counterpart("rosx rosservice call SERVICE", ("rosx", "rosservice")),),
+    "rqt_publisher": (Counterpart("rosx rostopic pub TOPIC TYPE ARGS", ("rosx", "rostopic")),),
+    "rqt_service_caller": (
+        Counterpart("rosx rosservice call SERVICE ARGS", ("rosx", "rosservice")),
+    ),
     "rqt_reconfigure": (Counterpart("rosx rosparam set NAME VALUE", ("rosx", "rosparam")),),
     "rqt_*": (_RQT,),
 }
@@ -152,6 +169,9 @@ def _available(counterpart: Counterpart, tools: Collection[str]) -> bool:
     owner, name = counterpart.requires
     if owner == "rosx":
         return name in tools
+    if name.endswith(".launch"):
+        directory = bundled_packages().get(owner)
+        return directory is not None and any(directory.rglob(name))
     return bundled_program(owner, name) is not None
 
 
@@ -167,7 +187,7 @@ def lacking(package: str, tools: Collection[str] = ()) -> str | None:
         return None
     offered = [c.command for c in _counterparts(package) if _available(c, tools)]
     if offered:
-        return f"[rosx] {package} is not part of rosx; rosx has instead: {' or '.join(offered)}"
+        return f"[rosx] {package} is not part of rosx; instead: {offered[0]}"
     return f"[rosx] {package} is not part of rosx ('rosx --help' lists the packages it provides)"
 
 

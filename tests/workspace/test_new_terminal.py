@@ -84,6 +84,7 @@ def test_sourcing_twice_or_after_ros1s_setup_keeps_rosx_first(user: NewTerminal)
         'echo "$PATH" | tr : "\\n" | grep -c "^$HOME/catkin_ws/devel/bin$"\n'
         'echo "$PATH" | cut -d: -f1\n'
         "type -t roscd rosls\ncomplete -p rosrun\n"
+        "{ catkin make; } 2>&1 | tail -n 1\n"
     )
     assert done.stdout.splitlines() == [
         "1",
@@ -91,6 +92,7 @@ def test_sourcing_twice_or_after_ros1s_setup_keeps_rosx_first(user: NewTerminal)
         "function",
         "function",
         "complete -o default -F _rosx_complete rosrun",
+        "[rosx] Did you mean catkin_make? (catkin_make)",
     ], done.stderr
 
 

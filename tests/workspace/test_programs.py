@@ -172,8 +172,7 @@ def test_a_package_bundled_is_provided_everywhere_with_no_list_to_edit(
     assert capsys.readouterr().out == "a stage\n"
     # A counterpart is named once it is there.
     assert lacking("gazebo_ros", ()) == (
-        "[rosx] gazebo_ros is not part of rosx; rosx has instead: "
-        "rosx rosrun stage_ros stageros WORLD"
+        "[rosx] gazebo_ros is not part of rosx; instead: rosx rosrun stage_ros stageros WORLD"
     )
     assert lacking("turtlebot3_gazebo", ()) == str(lacking("gazebo_ros", ())).replace(
         "gazebo_ros", "turtlebot3_gazebo"
@@ -229,8 +228,8 @@ def test_roslaunch_of_what_rosx_lacks_says_so_after_ros1s_error() -> None:
     assert err.getvalue().splitlines() == [
         "RLException: [turtlebot3_world.launch] is neither a launch file in package "
         "[turtlebot3_gazebo] nor is [turtlebot3_gazebo] a launch file name",
-        "[rosx] turtlebot3_gazebo is not part of rosx; rosx has instead: "
-        "rosx rosrun stage_ros stageros WORLD",
+        "[rosx] turtlebot3_gazebo is not part of rosx; instead: "
+        "rosx roslaunch turtlebot3_stage turtlebot3_world.launch",
     ]
     env, err = _terminal()
     assert roslaunch(["turtlesim", "multisim.lauch"], env) == 1
