@@ -420,8 +420,12 @@ def spawn_worker(lib: str, role: str, master: str, *argv: object) -> subprocess.
     """Start one worker process: ``role`` ``pub``, ``sub``, ``ping`` or ``pong`` (`WORKERS`)
     of ``lib``: ``rospy`` (ROS 1's Python), ``rosx`` (this Python), ``rosx-tcp`` (rosx over
     TCPROS, ``ROSX_UNIXROS=0``, instead of Unix sockets) or ``roscpp`` (the C++ worker of
-    `bench.roscpp_program`, which takes the same arguments and prints the same lines)."""
-    env = dict(os.environ, ROS_MASTER_URI=master, PYTHONPATH=str(ROOT))
+    `bench.roscpp_program`, which takes the same arguments and prints the same lines).
+    ``rosx@PATH`` and ``rosx-tcp@PATH`` run rosx from the checkout at PATH (another version,
+    to measure a change side by side)."""
+    lib, _, checkout = lib.partition("@")
+    root = Path(checkout) if checkout else ROOT
+    env = dict(os.environ, ROS_MASTER_URI=master, PYTHONPATH=str(root))
     if lib == "roscpp":
         binary = roscpp_program.program()
         if binary is None:
@@ -441,7 +445,7 @@ def spawn_worker(lib: str, role: str, master: str, *argv: object) -> subprocess.
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
         env=env,
-        cwd=ROOT,
+        cwd=root,
         text=True,
     )
 

@@ -26,11 +26,13 @@ Contenders: ``roscpp`` (C++ to C++, over TCPROS), ``rosx`` (over its Unix links,
 ``roscpp>rosx`` and ``rosx>roscpp`` (publisher > subscriber, over TCPROS). Each figure is the
 median of the rounds, with its range; ratios are to roscpp's, the median and round by round
 (each round's contenders ran within seconds of each other), against the targets of issue 35
-(printed with each ratio). ``--busy`` keeps one core busy with another process (a Python loop)
+(printed with each ratio). ``--against PATH`` adds rosx from the checkout at PATH (``rosx@PATH``
+and ``rosx-tcp@PATH``, and its mixed pairs), to measure a change side by side with the code
+before it. ``--busy`` keeps one core busy with another process (a Python loop)
 for the whole run; the load average (1 minute) is printed with each case.
 
 Run: ``python bench/bench_roscpp.py [--only CASE ...] [--rounds 5] [--quick] [--busy]
-[--json PATH]``.
+[--against PATH] [--json PATH]``.
 """
 
 from __future__ import annotations
@@ -112,6 +114,13 @@ def run_pingpong(lib: str, master: str, count: int, warmup: int) -> dict[str, fl
     result: dict[str, float] = json.loads(out.strip().splitlines()[-1])
     result["lost"] = count - result["received"]
     return result
+
+
+def with_checkout(contender: str, checkout: Path) -> str:
+    """``contender`` with its rosx side run from the checkout at ``checkout``."""
+    return ">".join(
+        f"{lib}@{checkout}" if lib.startswith("rosx") else lib for lib in contender.split(">")
+    )
 
 
 def run_one(case: Case, contender: str, master: str) -> dict[str, float]:
@@ -212,11 +221,14 @@ def main() -> None:
     parser.add_argument(
         "--busy", action="store_true", help="keep one core busy with another process meanwhile"
     )
+    parser.add_argument("--against", type=Path, help="also rosx from the checkout at PATH")
     parser.add_argument("--json", type=Path, help="write every round's figures to this file")
     interpreter.add_option(parser)
     args = parser.parse_args()
     if args.rounds < 1:
         parser.error("--rounds: at least 1")
+    if args.against is not None and not (args.against / "rosx" / "node").is_dir():
+        parser.error(f"--against: no rosx checkout at {args.against}")
     interpreter.run_on(args.python)
     has_roscpp = roscpp_program.program() is not None
     chosen = [
