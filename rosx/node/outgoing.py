@@ -7,6 +7,10 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
   thread, so an idle connection adds no thread hand-off to a message's latency. Whatever the
   kernel does not take is queued; the queue is flushed, as many frames as are waiting in one
   ``sendmsg``, by the next `send` and by the I/O loop when the socket is writable.
+* A frame is one ``bytes`` object, or a tuple of its parts in order (`Frame`): a large field is
+  then sent from the message itself (`rosx.msg.codec.parts`), each part a buffer of the same
+  ``sendmsg``, never joined into a copy. The parts must not change while the frame is queued
+  (they are ``bytes``: they cannot).
 * ``queue_size`` bounds the queue: a positive size drops the *oldest* queued frame when a new
   one would exceed it (ROS 1's semantics), never the frame already partly on the wire; ``0``
   means unbounded; ``None`` means no frame is dropped and `send` blocks its (non-loop) caller
@@ -32,11 +36,35 @@ if TYPE_CHECKING:
 
     from rosx.transport.loop_thread import LoopThread
 
+    #: One frame: its bytes, or its parts in order (see the module's contract).
+    Frame = bytes | tuple[bytes, ...]
+
 #: With ``queue_size=None``, `OutgoingStream.send` blocks while more bytes than this wait.
 HIGH_WATER = 4 * 1024 * 1024
 
 # sendmsg takes at most IOV_MAX (1024 on Linux) buffers.
 _MAX_IOV = 512
+
+
+def frame_size(frame: Frame) -> int:
+    """The bytes of a frame, whole or in parts."""
+    if isinstance(frame, bytes):
+        return len(frame)
+    return sum(len(part) for part in frame)
+
+
+def _unsent(frame: Frame, head: int) -> list[bytes | memoryview]:
+    """The buffers of ``frame`` after its first ``head`` bytes."""
+    if isinstance(frame, bytes):
+        return [memoryview(frame)[head:] if head else frame]
+    buffers: list[bytes | memoryview] = []
+    for part in frame:
+        if head >= len(part):
+            head -= len(part)
+            continue
+        buffers.append(memoryview(part)[head:] if head else part)
+        head = 0
+    return buffers
 
 
 class OutgoingStream:
@@ -58,7 +86,7 @@ class OutgoingStream:
         self._on_close = on_close
         self._lock = threading.Lock()
         self._drained = threading.Condition(self._lock)
-        self._pending: deque[bytes] = deque()
+        self._pending: deque[Frame] = deque()
         self._pending_bytes = 0
         self._head_sent = 0  # bytes of _pending[0] already written
         self.closed = False
@@ -69,7 +97,7 @@ class OutgoingStream:
 
     # -- any thread --------------------------------------------------------------------------
 
-    def send(self, frame: bytes) -> None:
+    def send(self, frame: Frame) -> None:
         """Queue ``frame`` for the peer (written at once when nothing else is waiting)."""
         # acquire/release, not ``with``: a burst's first message runs this with the CPU's
         # caches cold, when less code is quicker (see `rosx.node.publication`).
@@ -82,28 +110,32 @@ class OutgoingStream:
                 self._enqueue_locked(frame)
                 return
             try:
-                sent = self.sock.send(frame)
+                if frame.__class__ is bytes:
+                    sent = self.sock.send(frame)
+                else:
+                    sent = self.sock.sendmsg(frame)  # type: ignore[arg-type]
             except (BlockingIOError, InterruptedError):
                 sent = 0
             except OSError:
                 self._fail_locked()
                 return
             self.bytes_sent += sent
-            if sent == len(frame):
+            size = len(frame) if frame.__class__ is bytes else frame_size(frame)
+            if sent == size:
                 self.frames_sent += 1
                 return
             self._pending.append(frame)
             self._head_sent = sent
-            self._pending_bytes = len(frame) - sent
+            self._pending_bytes = size - sent
             self._io.call_soon(self._start_writing)
         finally:
             lock.release()
 
-    def _enqueue_locked(self, frame: bytes) -> None:
+    def _enqueue_locked(self, frame: Frame) -> None:
         # Frames already wait: this one joins them, then whatever the socket takes now goes.
         pending = self._pending
         pending.append(frame)
-        self._pending_bytes += len(frame)
+        self._pending_bytes += len(frame) if frame.__class__ is bytes else frame_size(frame)
         # Whatever the peer has read since makes room now, not when the loop next gets
         # the GIL (up to a switch interval, 5 ms, behind a publishing thread): the queue
         # goes out in one ``sendmsg``, coalesced (a Unix socket's buffer counts each
@@ -118,7 +150,7 @@ class OutgoingStream:
         if limit and len(pending) - partial > limit:
             victim = pending[partial]
             del pending[partial]
-            self._pending_bytes -= len(victim)
+            self._pending_bytes -= frame_size(victim)
             self.dropped += 1
         elif self._blocking and self._pending_bytes > HIGH_WATER and not self._io.in_loop_thread():
             while not self.closed and self._pending_bytes > HIGH_WATER:
@@ -186,10 +218,14 @@ class OutgoingStream:
         pending = self._pending
         head = self._head_sent
         buffers: list[bytes | memoryview] = []
-        for index, frame in enumerate(pending):
-            if index == _MAX_IOV:
+        for frame in pending:
+            if len(buffers) >= _MAX_IOV:
                 break
-            buffers.append(memoryview(frame)[head:] if index == 0 and head else frame)
+            if frame.__class__ is bytes and not head:
+                buffers.append(frame)
+            else:
+                buffers.extend(_unsent(frame, head))
+            head = 0
         try:
             sent = self.sock.sendmsg(buffers)
         except (BlockingIOError, InterruptedError):
@@ -199,9 +235,14 @@ class OutgoingStream:
             return
         self.bytes_sent += sent
         self._pending_bytes -= sent
-        sent += head
-        while pending and sent >= len(pending[0]):
-            sent -= len(pending.popleft())
+        sent += self._head_sent
+        while pending:
+            first = pending[0]
+            size = len(first) if first.__class__ is bytes else frame_size(first)
+            if sent < size:
+                break
+            sent -= size
+            pending.popleft()
             self.frames_sent += 1
         self._head_sent = sent
         if self._blocking and self._pending_bytes <= HIGH_WATER:

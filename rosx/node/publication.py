@@ -1,7 +1,9 @@
 """A node's publication of one topic: its subscribers' connections, its latch, its statistics.
 
 Publishing serializes a message once, into one frame (length prefix included), and hands that
-same bytes object to every subscriber's `OutgoingStream`, whatever their number. A latching
+same bytes object to every subscriber's `OutgoingStream`, whatever their number. A message
+holding a large byte array (an image, a point cloud) is framed in parts instead, the array
+itself one of them, sent without a serialized copy (`rosx.msg.codec.parts`). A latching
 publication keeps the last frame and sends it to each new subscriber right after the header
 (ROS wiki ROS/TCPROS). Messages with a ``std_msgs/Header`` get the publication's sequence
 number in ``header.seq``, as rospy does.
@@ -41,10 +43,11 @@ from typing import TYPE_CHECKING
 from rosx.msg.codec.clone import clone
 from rosx.msg.codec.message import Message as MessageBase
 from rosx.msg.codec.message import serialize_frame
+from rosx.msg.codec.parts import frame_parts, in_parts
 from rosx.node import slices, unixros
 from rosx.node.incoming import connection_ids, describe_connection
 from rosx.node.local import INTRAPROCESS, LocalMessage
-from rosx.node.outgoing import OutgoingStream, configure_nodelay
+from rosx.node.outgoing import OutgoingStream, configure_nodelay, frame_size
 from rosx.wire.header import encode_header
 from rosx.wire.tcpros import Publication as PublicationInfo
 
@@ -54,6 +57,7 @@ if TYPE_CHECKING:
 
     from rosx.msg.codec.message import Message
     from rosx.node.local import LocalLink
+    from rosx.node.outgoing import Frame
     from rosx.transport.loop_thread import LoopThread
     from rosx.wire.tcpros import SubscriberAccepted
 
@@ -139,7 +143,7 @@ class Publication:
         self.links: tuple[SubscriberLink, ...] = ()
         #: Subscribers in this process (`rosx.node.local`).
         self.local_links: tuple[LocalLink, ...] = ()
-        self.latched: bytes | None = None
+        self.latched: Frame | None = None
         #: The latched message as published in this process (None: only `latched` holds it).
         self.latched_local: LocalMessage | None = None
         #: The last ``header.seq`` given (messages with a header only).
@@ -156,6 +160,8 @@ class Publication:
         #: The one subscriber's stream when it is the only one to send to and nothing keeps
         #: the frame (no latch): `publish` then sends it the shortest way.
         self._sole: OutgoingStream | None = None
+        #: The last class whose frames were made whole by its ``_frame`` (`_frame_of`).
+        self._whole: type | None = None
         #: Told of each subscriber that connects, with a way to publish to it alone, and of
         #: each that leaves, with how many remain (`add_watcher`; rospy's SubscribeListener).
         self._watchers: tuple[PeerWatcher, ...] = ()
@@ -217,18 +223,23 @@ class Publication:
         # message reaches the socket with one call less, cold.
         sole = self._sole
         if sole is not None:
-            # One subscriber, no latch: `serialize_frame` and `_send_frame` inlined, the bytes
+            # One subscriber, no latch: `_frame_of` and `_send_frame` inlined, the bytes
             # counted after the send.
-            frame = msg._frame() if isinstance(msg, MessageBase) else MessageBase._frame(msg)
+            if msg.__class__ is self._whole:
+                frame: Frame = msg._frame()
+                size = len(frame)
+            else:
+                frame = self._frame_of(msg)
+                size = frame_size(frame)
             sole.send(frame)
             lock = self._lock
             lock.acquire()
             try:
-                self.bytes_published += len(frame)
+                self.bytes_published += size
             finally:
                 lock.release()
         else:
-            self._send_frame(serialize_frame(msg))
+            self._send_frame(self._frame_of(msg))
         handoff = self._handoff
         if handoff is not None and self._nearby and handoff.start():
             self._give_way()
@@ -252,7 +263,7 @@ class Publication:
                 if burst:
                     self._give_way()
                 return
-        self._send_frame(serialize_frame(msg))
+        self._send_frame(self._frame_of(msg))
         if burst:
             self._give_way()
 
@@ -270,7 +281,20 @@ class Publication:
         if burst:
             self._give_way()
 
-    def _send_frame(self, frame: bytes) -> None:
+    def _frame_of(self, msg: Message) -> Frame:
+        """``msg`` as one frame for the sockets: whole, or in parts when it may hold a large
+        byte array (`rosx.msg.codec.parts`)."""
+        cls = msg.__class__
+        if cls is self._whole:
+            return msg._frame()
+        if not isinstance(msg, MessageBase):
+            return serialize_frame(msg)  # a class of another library
+        if in_parts(cls):
+            return frame_parts(msg)
+        self._whole = cls
+        return msg._frame()
+
+    def _send_frame(self, frame: Frame) -> None:
         if self.closed:
             return
         lock = self._lock
@@ -279,7 +303,7 @@ class Publication:
             if self.info.latching:
                 self.latched = frame
             links = self.links
-            self.bytes_published += len(frame)
+            self.bytes_published += frame_size(frame)
         finally:
             lock.release()
         for link in links:
@@ -341,10 +365,10 @@ class Publication:
     def _publish_to(self, stream: OutgoingStream, msg: Message) -> None:
         """Send ``msg`` to one subscriber only."""
         if not self.closed:
-            frame = serialize_frame(msg)
+            frame = self._frame_of(msg)
             stream.send(frame)
             with self._lock:
-                self.bytes_published += len(frame)
+                self.bytes_published += frame_size(frame)
 
     def _subscribed(self, publish_one: Callable[[Message], None]) -> None:
         for watcher in self._watchers:
@@ -381,7 +405,9 @@ class Publication:
             if self.latched_local is not None:
                 link.deliver(self.latched_local)
             elif self.latched is not None:
-                link.deliver(self.latched[4:])
+                latched = self.latched
+                whole = latched if isinstance(latched, bytes) else b"".join(latched)
+                link.deliver(whole[4:])
             self.local_links = (*self.local_links, link)
         if self._watchers:
             self._subscribed(lambda msg: link.deliver(LocalMessage(clone(msg))))

@@ -448,6 +448,58 @@ def test_large_and_small_messages_arrive_whole_and_in_order(
     assert all(type(m.data) is str for m in got)
 
 
+def test_images_arrive_as_published_though_the_message_changes_after(
+    make_node: Callable[..., Node], transport: str
+) -> None:
+    """Large byte arrays are sent from the message itself (`rosx.msg.codec.parts`): what each
+    subscriber gets is the message as it was at ``publish``, whatever the publisher does to
+    the message next, in order; a raw subscriber gets the same bytes a whole frame holds."""
+    a, b = make_node("camera"), make_node("viewer")
+    got: list[Any] = []
+    raw: list[RawMessage] = []
+    sub = b.subscribe("/camera", Image, got.append)
+    raw_sub = b.subscribe("/camera", None, raw.append)
+    pub = a.advertise("/camera", Image, queue_size=None)
+    wait_for(lambda: pub.get_num_connections() > 0 and sub.get_num_connections() > 0)
+    wait_for(lambda: raw_sub.get_num_connections() > 0)
+    msg = Image(height=1, encoding="mono8")
+    published = []
+    for i, size in enumerate([1 << 20, 100, 40_000, 3 << 20, 0, 32 * 1024]):
+        msg.header.frame_id = f"frame {i}"
+        msg.width = msg.step = size
+        msg.data = bytes([i + 1]) * size if i != 2 else bytearray([i + 1]) * size
+        pub.publish(msg)
+        published.append(msg._frame())  # with the header's seq that publish gave it
+    msg.data = b"changed after the last publish"
+    wait_for(lambda: len(got) == len(published) and len(raw) == len(published))
+    assert [m.header.frame_id for m in got] == [f"frame {i}" for i in range(len(published))]
+    for message, frame in zip(got, published, strict=True):
+        assert message._frame() == frame
+    assert [bytes(r._buff) for r in raw] == [frame[4:] for frame in published]
+    if transport != "INTRAPROCESS":  # every frame counted whole, once (one connection)
+        _, _, (publications, _, _) = call(a.uri, "getBusStats", "/test")
+        sent = sum(len(frame) for frame in published)
+        assert [p[:2] for p in publications if p[0] == "/camera"] == [["/camera", sent]]
+
+
+def test_a_latched_image_reaches_a_late_subscriber_whole(make_node: Callable[..., Node]) -> None:
+    a, b = make_node("still"), make_node("late_viewer")
+    pub = a.advertise("/still", Image, latch=True)
+    first = Image(encoding="mono8", data=bytes(range(256)) * 8192)
+    pub.publish(first)
+    last = Image(encoding="mono8", data=bytes(reversed(range(256))) * 8192)
+    pub.publish(last)
+    last.data = b"changed after publishing"
+    got: list[Any] = []
+    b.subscribe("/still", Image, got.append)
+    wait_for(lambda: got)
+    assert got[0].data == bytes(reversed(range(256))) * 8192
+    raw: list[RawMessage] = []
+    b.subscribe("/still", None, raw.append)
+    wait_for(lambda: raw)
+    assert bytes(raw[0]._buff) == got[0]._frame()[4:]
+
+
 class Greeter:
     """A publication's watcher: greets each new subscriber alone, notes who leaves."""
 

@@ -1,0 +1,140 @@
+"""A rosx publisher and a roscpp subscriber (over TCPROS): large images, which rosx sends from
+the message itself in parts (`rosx.msg.codec.parts`), reach roscpp as the same bytes, in order,
+latched ones too; a slow roscpp subscriber loses only the oldest, with the publisher's queue.
+
+The roscpp node is `roscpp/image_listener.cpp`, compiled here against Debian's libroscpp-dev
+(`bench.roscpp_program.build`, cached); skipped where a compiler, roscpp or the message headers
+are missing. It runs on the tests' rosx master and prints a line per message.
+"""
+
+from __future__ import annotations
+
+import os
+import queue
+import subprocess
+import threading
+import zlib
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from bench.roscpp_program import build
+from rosx.msg.codec.classes import get_message_class
+from rosx.node import Node
+from tests.support.procs import wait_for
+
+Image = get_message_class("sensor_msgs/Image")
+SOURCE = Path(__file__).resolve().parent / "roscpp" / "image_listener.cpp"
+
+
+@pytest.fixture(scope="module")
+def listener_program() -> Path:
+    built = build(SOURCE)
+    if isinstance(built, str):
+        pytest.skip(f"roscpp: {built}")
+    return built
+
+
+class Listener:
+    """The roscpp subscriber's process and the lines it printed."""
+
+    def __init__(self, proc: subprocess.Popen[str]) -> None:
+        self.proc = proc
+        self.lines: queue.Queue[str] = queue.Queue()
+        self.seen: list[tuple[str, int, int]] = []
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self) -> None:
+        assert self.proc.stdout is not None
+        for line in self.proc.stdout:
+            self.lines.put(line.strip())
+
+    def next_line(self) -> str:
+        return self.lines.get(timeout=30)
+
+    def until(self, frame_id: str) -> list[tuple[str, int, int]]:
+        """What it received, up to and including the message ``frame_id``."""
+        while not self.seen or self.seen[-1][0] != frame_id:
+            name, size, crc = self.next_line().split()
+            self.seen.append((name, int(size), int(crc, 16)))
+        return self.seen
+
+
+@pytest.fixture
+def start_listener(
+    master: str, listener_program: Path, tmp_path: Path
+) -> Iterator[Callable[[str, int, int], Listener]]:
+    procs: list[subprocess.Popen[str]] = []
+
+    def start(topic: str, queue_size: int, delay_ms: int) -> Listener:
+        env = dict(os.environ, ROS_MASTER_URI=master, ROS_IP="127.0.0.1", ROS_HOME=str(tmp_path))
+        proc = subprocess.Popen(
+            [str(listener_program), topic, str(queue_size), str(delay_ms)],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL,
+            text=True,
+            env=env,
+        )
+        procs.append(proc)
+        listener = Listener(proc)
+        assert listener.next_line() == "ready"
+        return listener
+
+    yield start
+    for proc in procs:
+        proc.kill()
+        proc.wait()
+
+
+def expected(name: str, data: bytes | bytearray) -> tuple[str, int, int]:
+    return (name, len(data), zlib.crc32(data))
+
+
+def test_every_image_reaches_roscpp_as_published(
+    make_node: Callable[..., Node], start_listener: Callable[[str, int, int], Listener]
+) -> None:
+    node = make_node("camera")
+    pub = node.advertise("/camera", Image, queue_size=None, latch=True)
+    msg = Image(height=1, encoding="mono8")
+    sent: list[tuple[str, int, int]] = []
+
+    def publish(name: str, data: bytes | bytearray) -> None:
+        msg.header.frame_id = name
+        msg.width = msg.step = len(data)
+        msg.data = data
+        pub.publish(msg)
+        sent.append(expected(name, data))
+
+    publish("latched", bytes(range(256)) * 8192)  # before roscpp subscribes: the latch
+    listener = start_listener("/camera", 100, 0)
+    wait_for(lambda: pub.get_num_connections() == 1)
+    assert listener.until("latched") == sent
+    sizes = [3 << 20, 10, 40_000, 1 << 20, 0, 32 * 1024, 32 * 1024 - 1, 2 << 20]
+    for number, size in enumerate(sizes):
+        data = bytes([number]) * size
+        publish(str(number), data if number % 3 else bytearray(data))
+        msg.data = b"changed after publish"  # what went out stays as it was
+    assert listener.until(str(len(sizes) - 1)) == sent
+
+
+def test_a_slow_roscpp_subscriber_loses_only_the_oldest(
+    make_node: Callable[..., Node], start_listener: Callable[[str, int, int], Listener]
+) -> None:
+    node = make_node("fast_camera")
+    pub = node.advertise("/fast", Image, queue_size=1)
+    listener = start_listener("/fast", 1, 50)
+    wait_for(lambda: pub.get_num_connections() == 1)
+    images: dict[str, Any] = {}
+    for number in range(30):
+        data = bytes([number]) * (1 << 20)
+        image = Image(width=1 << 20, encoding="mono8", data=data)
+        image.header.frame_id = str(number)
+        images[str(number)] = expected(str(number), data)
+        pub.publish(image)
+    got = listener.until("29")
+    numbers = [int(name) for name, _, _ in got]
+    assert numbers == sorted(set(numbers))  # in order, none twice
+    assert len(numbers) < 30  # 30 MiB at once: the oldest were dropped on the way
+    assert got == [images[name] for name, _, _ in got]  # the rest arrived whole
