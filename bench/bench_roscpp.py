@@ -25,11 +25,11 @@ Contenders: ``roscpp`` (C++ to C++, over TCPROS), ``rosx`` (over its Unix links,
 ``rosx-tcp`` (over TCPROS, as to a ROS 1 node), ``rospy``, and in the floods the mixed pairs
 ``roscpp>rosx`` and ``rosx>roscpp`` (publisher > subscriber, over TCPROS). Each figure is the
 median of the rounds, with its range; ratios are to roscpp's, the median and round by round
-(each round's contenders ran within seconds of each other), against the targets of issue 35
-(printed with each ratio). ``--against PATH`` adds rosx from the checkout at PATH (``rosx@PATH``
-and ``rosx-tcp@PATH``, and its mixed pairs), to measure a change side by side with the code
-before it. ``--busy`` keeps one core busy with another process (a Python loop)
-for the whole run; the load average (1 minute) is printed with each case.
+(each round's contenders ran within seconds of each other), against the targets in
+bench/README.md (printed with each ratio). ``--against PATH`` adds rosx from the checkout at
+PATH (``rosx@PATH`` and ``rosx-tcp@PATH``, and its mixed pairs), to measure a change side by
+side with the code before it. ``--busy`` keeps one core busy with another process (a Python
+loop) for the whole run; the load average (1 minute) is printed with each case.
 
 Run: ``python bench/bench_roscpp.py [--only CASE ...] [--rounds 5] [--quick] [--busy]
 [--against PATH] [--json PATH]``.
@@ -137,7 +137,7 @@ def run_one(case: Case, contender: str, master: str) -> dict[str, float]:
     )  # fmt: skip
 
 
-#: issue 35's targets: (case, contender, figure) -> (comparison, bound, what it is against).
+#: The targets (bench/README.md): (case, contender, figure) -> (comparison, bound, against whom).
 TARGETS: dict[tuple[str, str, str], tuple[str, float, str]] = {
     ("flood", "rosx", "rate"): (">=", 2.0, "roscpp"),
     ("flood", "roscpp>rosx", "rate"): (">=", 1.25, "roscpp"),
@@ -246,6 +246,9 @@ def main() -> None:
     try:
         for case in chosen:
             contenders = [c for c in case.contenders if has_roscpp or "roscpp" not in c.split(">")]
+            if args.against is not None:
+                checkout = args.against.resolve()
+                contenders += [with_checkout(c, checkout) for c in contenders if "rosx" in c]
             runs: dict[str, list[dict[str, float]]] = {c: [] for c in contenders}
             loads = []
             for number in range(args.rounds):
