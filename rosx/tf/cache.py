@@ -88,16 +88,28 @@ def interpolate(one: Sample, two: Sample, ratio: float) -> Sample:
 class TimeCache:
     """The transforms of one moving frame, ``max_storage`` ns behind the newest."""
 
-    __slots__ = ("max_storage", "samples", "stamps")
+    __slots__ = ("answer", "asked", "max_storage", "samples", "stamps")
 
     def __init__(self, max_storage: int) -> None:
         self.max_storage = max_storage
         #: Stamps in ns, oldest first; ``samples[i]`` is the transform at ``stamps[i]``.
         self.stamps: list[int] = []
         self.samples: list[Sample] = []
+        #: The last time `get` was asked for and its answer, until the next insertion: the
+        #: frames of a tree are usually looked up many times at one time.
+        self.asked = -1
+        self.answer: Sample | str = ""
 
     def get(self, time: int) -> Sample | str:
         """The transform at ``time`` (0: the newest), or tf2's text of why there is none."""
+        if time == self.asked:
+            return self.answer
+        answer = self._get(time)
+        self.asked = time
+        self.answer = answer
+        return answer
+
+    def _get(self, time: int) -> Sample | str:
         stamps_ = self.stamps
         count = len(stamps_)
         if not count:
@@ -154,6 +166,7 @@ class TimeCache:
     def insert(self, stamp: int, sample: Sample) -> str | None:
         """Keep ``sample`` (at ``stamp``) and drop what fell out of the span; or refuse it, with
         tf2's text."""
+        self.asked = -1
         stamps_ = self.stamps
         if stamps_:
             latest = stamps_[-1]
@@ -196,6 +209,7 @@ class TimeCache:
         return len(self.stamps)
 
     def clear(self) -> None:
+        self.asked = -1
         self.stamps.clear()
         self.samples.clear()
 

@@ -413,8 +413,22 @@ class BufferCore:
             if frame == target_id:
                 return NO_ERROR, time, source_acc, ""
             if accumulate:
-                source_acc = _accumulate(source_acc, step)
-                parent = step[0]
+                # tf2's accum(): quatRotate(step, acc) + translation; step's rotation * acc's
+                parent, tx, ty, tz, qx, qy, qz, qw = step
+                ax, ay, az, bx, by, bz, bw = source_acc
+                x = qw * ax + qy * az - qz * ay
+                y = qw * ay + qz * ax - qx * az
+                z = qw * az + qx * ay - qy * ax
+                w = -qx * ax - qy * ay - qz * az
+                source_acc = (
+                    w * -qx + x * qw + y * -qz - z * -qy + tx,
+                    w * -qy + y * qw + z * -qx - x * -qz + ty,
+                    w * -qz + z * qw + x * -qy - y * -qx + tz,
+                    qw * bx + qx * bw + qy * bz - qz * by,
+                    qw * by + qy * bw + qz * bx - qx * bz,
+                    qw * bz + qz * bw + qx * by - qy * bx,
+                    qw * bw - qx * bx - qy * by - qz * bz,
+                )
             else:
                 parent = step
             top_parent = frame
@@ -440,8 +454,21 @@ class BufferCore:
             if frame == source_id:
                 return NO_ERROR, time, _inverse(target_acc) if accumulate else IDENTITY, ""
             if accumulate:
-                target_acc = _accumulate(target_acc, step)
-                frame = step[0]
+                frame, tx, ty, tz, qx, qy, qz, qw = step
+                ax, ay, az, bx, by, bz, bw = target_acc
+                x = qw * ax + qy * az - qz * ay
+                y = qw * ay + qz * ax - qx * az
+                z = qw * az + qx * ay - qy * ax
+                w = -qx * ax - qy * ay - qz * az
+                target_acc = (
+                    w * -qx + x * qw + y * -qz - z * -qy + tx,
+                    w * -qy + y * qw + z * -qx - x * -qz + ty,
+                    w * -qz + z * qw + x * -qy - y * -qx + tz,
+                    qw * bx + qx * bw + qy * bz - qz * by,
+                    qw * by + qy * bw + qz * bx - qx * bz,
+                    qw * bz + qz * bw + qx * by - qy * bx,
+                    qw * bw - qx * bx - qy * by - qz * bz,
+                )
             else:
                 frame = step
             depth += 1
@@ -476,7 +503,9 @@ class BufferCore:
     def _loop_text(self) -> str:
         return "The tf tree is invalid because it contains a loop.\n" + self._as_string() + "\n"
 
-    def _latest_common_time(self, target_id: int, source_id: int) -> tuple[int, int, str]:
+    def _latest_common_time(  # noqa: PLR0915 - tf2's two walks, one loop each
+        self, target_id: int, source_id: int
+    ) -> tuple[int, int, str]:
         """tf2's ``getLatestCommonTime``: ``(NO_ERROR, ns, "")`` or ``(code, 0, text)``."""
         if not source_id or not target_id:
             return LOOKUP_ERROR, 0, ""
@@ -486,6 +515,7 @@ class BufferCore:
             cache = caches[source_id] if source_id < count else None
             return NO_ERROR, 0 if cache is None else cache.newest_stamp(), ""
         seen: list[tuple[int, int]] = []
+        seen_parents: set[int] = set()
         frame = source_id
         depth = 0
         common = stamps.TIME_MAX
@@ -499,6 +529,7 @@ class BufferCore:
             if latest:
                 common = min(latest, common)
             seen.append((latest, parent))
+            seen_parents.add(parent)
             frame = parent
             if frame == target_id:
                 return NO_ERROR, 0 if common == stamps.TIME_MAX else common, ""
@@ -518,7 +549,7 @@ class BufferCore:
                 break
             if latest:
                 common = min(latest, common)
-            if any(p == parent for _, p in seen):
+            if parent in seen_parents:
                 common_parent = parent
                 break
             frame = parent
