@@ -1,0 +1,29 @@
+#!/usr/bin/env python3
+"""turtle_tf's listener (tf's API): spawns turtle2 at (4, 2) and, ten times a second, steers
+it towards turtle1 from ``lookupTransform('/turtle2', '/turtle1', rospy.Time())``."""
+
+import math
+
+import rospy
+import tf
+from geometry_msgs.msg import Twist
+from turtlesim.srv import Spawn
+
+if __name__ == "__main__":
+    rospy.init_node("turtle_tf_listener")
+    listener = tf.TransformListener()
+    rospy.wait_for_service("spawn")
+    rospy.ServiceProxy("spawn", Spawn)(4, 2, 0, "turtle2")
+    cmd_vel = rospy.Publisher("turtle2/cmd_vel", Twist, queue_size=1)
+    rate = rospy.Rate(10.0)
+    while not rospy.is_shutdown():
+        try:
+            (x, y, _), _ = listener.lookupTransform("/turtle2", "/turtle1", rospy.Time())
+        except (tf.LookupException, tf.ConnectivityException, tf.ExtrapolationException):
+            rate.sleep()
+            continue
+        msg = Twist()
+        msg.angular.z = 4 * math.atan2(y, x)
+        msg.linear.x = 0.5 * math.sqrt(x**2 + y**2)
+        cmd_vel.publish(msg)
+        rate.sleep()
