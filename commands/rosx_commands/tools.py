@@ -57,6 +57,18 @@ TOOLS: dict[str, tuple[str, str]] = {
         "rosx_commands.rosbridge:rosbridge",
         "Serve the ROS graph to browser tools (rosbridge v2, Foxglove WebSocket).",
     ),
+    "tf_echo": (
+        "rosx_commands.tf_tools.echo:tf_echo",
+        "Print the transform between two tf frames (SOURCE TARGET [RATE]).",
+    ),
+    "tf_monitor": (
+        "rosx_commands.tf_tools.monitor:tf_monitor",
+        "Show tf's broadcasters, their rates and delays ([FRAME_A FRAME_B]).",
+    ),
+    "static_transform_publisher": (
+        "rosx_commands.tf_tools.static:static_transform_publisher",
+        "Publish a static transform on /tf_static (x y z yaw pitch roll|qx qy qz qw FRAME CHILD).",
+    ),
     "catkin_create_pkg": (
         "rosx_commands.catkin_create_pkg:catkin_create_pkg",
         "Create a new catkin package.",

@@ -8,7 +8,7 @@ fixed-frame lookup uses).
 
 from __future__ import annotations
 
-from math import asin, atan2, cos, pi, sqrt
+from math import asin, atan2, cos, pi, sin, sqrt
 
 Matrix = tuple[tuple[float, float, float], tuple[float, float, float], tuple[float, float, float]]
 #: (tx, ty, tz, qx, qy, qz, qw)
@@ -79,12 +79,17 @@ def compose(second: Transform, first: Transform) -> Transform:
     return (x, y, z, qx, qy, qz, qw)
 
 
-def rpy(m: Matrix) -> tuple[float, float, float]:
-    """``Matrix3x3::getRPY`` (solution 1): roll, pitch, yaw about fixed X, Y, Z."""
+def rpy(m: Matrix, tf1: bool = False) -> tuple[float, float, float]:
+    """``Matrix3x3::getRPY`` (solution 1): roll, pitch, yaw about fixed X, Y, Z.
+
+    ``tf1``: tf's version, which reads a gimbal-locked matrix's roll from its first row
+    (tf2 reads the last): what ``tf_echo`` prints.
+    """
     if abs(m[2][0]) >= 1:
-        delta = atan2(m[2][1], m[2][2])
         if m[2][0] < 0:
+            delta = atan2(m[0][1], m[0][2]) if tf1 else atan2(m[2][1], m[2][2])
             return delta, pi / 2.0, 0.0
+        delta = atan2(-m[0][1], -m[0][2]) if tf1 else atan2(m[2][1], m[2][2])
         return delta, -pi / 2.0, 0.0
     pitch = -asin(m[2][0])
     roll = atan2(m[2][1] / cos(pitch), m[2][2] / cos(pitch))
@@ -92,4 +97,18 @@ def rpy(m: Matrix) -> tuple[float, float, float]:
     return roll, pitch, yaw
 
 
-__all__ = ["Matrix", "apply", "compose", "matrix", "multiply", "rotation", "rpy"]
+def from_rpy(roll: float, pitch: float, yaw: float) -> tuple[float, float, float, float]:
+    """``Quaternion::setRPY``: the quaternion (x, y, z, w) of fixed-axis roll, pitch, yaw."""
+    half_yaw, half_pitch, half_roll = yaw * 0.5, pitch * 0.5, roll * 0.5
+    cos_yaw, sin_yaw = cos(half_yaw), sin(half_yaw)
+    cos_pitch, sin_pitch = cos(half_pitch), sin(half_pitch)
+    cos_roll, sin_roll = cos(half_roll), sin(half_roll)
+    return (
+        sin_roll * cos_pitch * cos_yaw - cos_roll * sin_pitch * sin_yaw,
+        cos_roll * sin_pitch * cos_yaw + sin_roll * cos_pitch * sin_yaw,
+        cos_roll * cos_pitch * sin_yaw - sin_roll * sin_pitch * cos_yaw,
+        cos_roll * cos_pitch * cos_yaw + sin_roll * sin_pitch * sin_yaw,
+    )
+
+
+__all__ = ["Matrix", "apply", "compose", "from_rpy", "matrix", "multiply", "rotation", "rpy"]

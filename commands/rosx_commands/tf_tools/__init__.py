@@ -1,0 +1,35 @@
+"""tf's and tf2's command-line tools, as ROS 1's C++ programs (and Python scripts) behave.
+
+- `echo`: ``tf_echo SOURCE TARGET [RATE]`` (``rosrun tf tf_echo``, ``rosx tf_echo``).
+- `static`: tf2_ros's ``static_transform_publisher`` (latched on ``/tf_static``) and tf's
+  (``/tf`` again every period, stamped ahead).
+- `monitor`: ``tf_monitor [FRAME_A FRAME_B]``: broadcasters, rates and delays.
+- `frames`: what ``view_frames`` writes: ``frames.gv``, then ``frames.pdf`` with Graphviz's
+  ``dot``, or the tree as text where Graphviz is missing.
+
+The C++ programs' command lines are roscpp's (remapping arguments, ``_param:=value``), their
+nodes anonymous as roscpp names them, their logs roscpp's lines (`rosx_turtle.console`).
+"""
+
+from __future__ import annotations
+
+import re
+import time
+
+_LEADING_FLOAT = re.compile(
+    r"\s*[+-]?(\d+\.?\d*([eE][+-]?\d+)?|\.\d+([eE][+-]?\d+)?|inf|nan)", re.I
+)
+
+
+def atof(text: str) -> float:
+    """C's ``atof``: the number at the start of ``text``, 0.0 when there is none."""
+    found = _LEADING_FLOAT.match(text)
+    return float(found.group(0)) if found else 0.0
+
+
+def anonymous(name: str) -> str:
+    """The name roscpp's ``init_options::AnonymousName`` gives: ``name_<wall time in ns>``."""
+    return f"{name}_{time.time_ns()}"
+
+
+__all__ = ["anonymous", "atof"]
