@@ -138,7 +138,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
     """What ``rosrun ARGV…`` does: a program to become, one to run here, or an exit status."""
     from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
     from rosx.workspace.executables import find_executables  # noqa: PLC0415 - not for -h
-    from rosx.workspace.programs import bundled_program  # noqa: PLC0415 - not for -h
+    from rosx.workspace.programs import bundled_program, overlays  # noqa: PLC0415 - not for -h
 
     options = _options(argv)
     if options is None:
@@ -148,12 +148,12 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
     if executable.endswith("/"):
         env.out(f"Invalid filename:  {executable}")
         return ExitStatus.ERROR
+    index = PackageIndex.from_environ(env.environ)
     bundled = bundled_program(package, executable)
-    if bundled is not None:
+    if bundled is not None and not overlays(index.path_packages.get(package), executable):
         if debug:
             env.out(f"[rosrun] Looking in rospack dir: {bundled.parent}")
         return _start(bundled, prefix, rest, debug, env)
-    index = PackageIndex.from_environ(env.environ)
     try:
         directory = index.find(package)
     except PackageNotFoundError as error:

@@ -62,7 +62,7 @@ from rosx.names.resolution import ns_join
 from rosx.transport.address import advertised_host, http_uri, is_local_host
 from rosx.workspace import logdir
 from rosx.workspace.executables import is_python_script
-from rosx.workspace.programs import bundled_program
+from rosx.workspace.programs import bundled_program, overlays
 
 if TYPE_CHECKING:
     from collections.abc import Mapping, Sequence
@@ -122,11 +122,18 @@ class LaunchSettings:
         self.shim_dirs = tuple(shim_dirs)
 
 
-def provided_program(package: str, node_type: str) -> list[str] | None:
+def provided_program(
+    package: str, node_type: str, index: PackageIndex | None = None
+) -> list[str] | None:
     """The program rosx ships for ``package``/``node_type`` (turtlesim's nodes), if any: it is
-    run instead of a same-named package's on ``ROS_PACKAGE_PATH``, as ``rosrun`` does."""
+    run instead of a system's same-named package on ``ROS_PACKAGE_PATH``, but not instead of a
+    workspace's (`rosx.workspace.programs.overlays`), as ``rosrun`` does."""
     path = bundled_program(package, node_type)
-    return [str(path)] if path is not None else None
+    if path is None:
+        return None
+    if index is not None and overlays(index.path_packages.get(package), node_type):
+        return None
+    return [str(path)]
 
 
 def master_uri(environ: Mapping[str, str], port: int | None) -> str:
@@ -551,7 +558,10 @@ class LaunchRun:
         from rosx.launch.process import node_command_line, node_environment  # noqa: PLC0415
 
         try:
-            command = node_command_line(node, self.package_index, provided_program)
+            index = self.package_index
+            command = node_command_line(
+                node, index, lambda package, kind: provided_program(package, kind, index)
+            )
         except LaunchError as exc:
             kind = f"{node.package}/{node.type}"
             self.console.error(f"ERROR: cannot launch node of type [{kind}]: {exc}")

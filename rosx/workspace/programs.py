@@ -8,9 +8,10 @@ folder: small Python files that start rosx's implementation, as
 tree and nowhere else, so a package bundled tomorrow is provided at once, with no list to edit:
 
 - `bundled_program`: the file ``rosrun PACKAGE PROGRAM`` and a launch file's ``<node>`` start.
-  rosx's program wins over a same-named package on ``ROS_PACKAGE_PATH`` (a system's ROS 1
-  under ``/usr/share``): rosx's turtlesim is the one drawn in the terminal, and a C++
-  program of that package would not be rosx's.
+  rosx's program wins over a same-named package of a system's ROS 1 on ``ROS_PACKAGE_PATH``
+  (under ``/usr`` or ``/opt/ros``): rosx's turtlesim is the one drawn in the terminal, and a
+  C++ program of that package would not be rosx's. A user's workspace is an overlay, as in
+  ROS 1: a package there named like one of rosx's runs its own Python scripts (`overlays`).
 - `program_names`: the programs of a bundled package (completion, the typo hints).
 - `provided_packages` / `is_provided`: the packages rosx has (a ``share/`` folder with a
   ``package.xml``, or programs in ``lib/``).
@@ -30,7 +31,7 @@ from typing import TYPE_CHECKING, NamedTuple
 
 from rosx.packages import crawl
 from rosx.packages.crawl import BUNDLED_MODULES, bundled_libexec, bundled_packages
-from rosx.workspace.executables import executable_names, find_executables
+from rosx.workspace.executables import executable_names, find_executables, is_python_script
 
 if TYPE_CHECKING:
     from collections.abc import Collection
@@ -46,6 +47,23 @@ def bundled_program(package: str, name: str) -> Path | None:
         if found:
             return found[0]
     return None
+
+
+#: Where a system's ROS 1 installs packages; anywhere else on the package path is a workspace.
+SYSTEM_PREFIXES = ("/usr/", "/opt/ros/")
+
+
+def overlays(directory: Path | None, name: str) -> bool:
+    """Whether the package at ``directory`` (found on ``ROS_PACKAGE_PATH``) runs its own
+    program ``name`` rather than rosx's: a Python script of a user's workspace package (a
+    clone of a tutorial's package, say). A system's ROS 1 and other programs (a compiled
+    turtlesim_node, which is not rosx's) leave rosx's in place."""
+    if directory is None or is_bundled_file(directory):
+        return False
+    if str(directory.resolve()).startswith(SYSTEM_PREFIXES):
+        return False
+    found = find_executables(directory, name).executables
+    return bool(found) and is_python_script(found[0])
 
 
 def program_names(package: str) -> list[str]:
@@ -193,11 +211,13 @@ def lacking(package: str, tools: Collection[str] = ()) -> str | None:
 
 __all__ = [
     "COUNTERPARTS",
+    "SYSTEM_PREFIXES",
     "Counterpart",
     "bundled_program",
     "is_bundled_file",
     "is_provided",
     "lacking",
+    "overlays",
     "program_names",
     "provided_packages",
 ]

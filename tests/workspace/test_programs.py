@@ -87,6 +87,27 @@ def test_rosxs_program_wins_over_a_same_named_package_on_the_path(tmp_path: Path
     )
 
 
+def test_a_workspace_python_script_overlays_rosxs_program(tmp_path: Path) -> None:
+    """A clone of turtle_tf2 in a workspace runs its own scripts, as an overlay does in ROS 1
+    (rospack finds the workspace's package, and rosrun and roslaunch run what it holds)."""
+    clone = package(tmp_path, "turtle_tf2")
+    script = clone / "nodes" / "turtle_tf2_broadcaster.py"
+    script.parent.mkdir()
+    script.write_text("#!/usr/bin/env python\nimport rospy\n")
+    script.chmod(0o755)
+    env = Environment(environ=clean_environ(ROS_PACKAGE_PATH=str(tmp_path)))
+    planned = plan(["--prefix", "nice", "turtle_tf2", "turtle_tf2_broadcaster.py"], env)
+    assert isinstance(planned, Launch)
+    assert str(script) in planned.argv
+    from rosx.packages.index import PackageIndex
+
+    index = PackageIndex.from_environ(env.environ)
+    assert provided_program("turtle_tf2", "turtle_tf2_broadcaster.py", index) is None
+    assert provided_program("turtle_tf2", "turtle_tf2_broadcaster.py") == [
+        str(bundled_program("turtle_tf2", "turtle_tf2_broadcaster.py"))
+    ]
+
+
 def started_command(path: Path | None) -> list[str]:
     from rosx_commands.invocation import script_command
 
