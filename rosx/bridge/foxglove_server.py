@@ -24,7 +24,7 @@ from websockets.exceptions import ConnectionClosed
 from rosx.bridge import foxglove as fx
 from rosx.bridge.protocol import DEFAULT_MAX_MESSAGE
 from rosx.bridge.safety import origin_allowed
-from rosx.bridge.server import Connection
+from rosx.bridge.server import WRITE_LIMIT, Connection
 from rosx.graph.state import registrations
 from rosx.msg.codec.classes import get_service_class
 
@@ -88,6 +88,7 @@ class FoxgloveServer:
             max_size=self.max_message,
             compression=None,
             ping_interval=None,
+            write_limit=WRITE_LIMIT,
         )
         self.port = next(iter(self._server.sockets)).getsockname()[1]
         self._poller = asyncio.create_task(self._poll())
@@ -163,7 +164,7 @@ class FoxgloveServer:
     async def _serve(self, ws: ServerConnection) -> None:
         loop = asyncio.get_running_loop()
         session = fx.FoxgloveSession(name=f"rosx {self.node.name}", sim_time=self._sim_time)
-        connection: Connection[fx.FoxgloveSession] = Connection(ws, session, loop)
+        connection: Connection[fx.FoxgloveSession] = Connection(ws, session, loop, _render)
         self.connections.add(connection)
         self.log(f"Foxglove client connected.  {len(self.connections)} clients total.")
         with connection.lock:
@@ -232,13 +233,9 @@ class FoxgloveServer:
     def _on_message(
         self, topic: str, clients: set[Connection[fx.FoxgloveSession]], raw: RawMessage
     ) -> None:
-        stamp = time.time_ns()
-        payload = raw._buff
+        message = (topic, raw._buff, time.time_ns())
         for connection in list(clients):
-            with connection.lock:
-                frames = connection.session.deliver(topic, payload, stamp)
-            if frames:
-                connection.queue_topic(topic, frames, 100)
+            connection.queue_message(topic, message, 100)
 
     def _unsubscribe(self, connection: Connection[fx.FoxgloveSession], topic: str) -> None:
         with self._lock:
@@ -300,6 +297,10 @@ class FoxgloveServer:
             self._unsubscribe(connection, topic)
         for topic in published:
             self._unadvertise(connection, topic)
+
+
+def _render(session: fx.FoxgloveSession, message: tuple[str, bytes, int]) -> list[fx.Frame]:
+    return session.deliver(*message)
 
 
 __all__ = ["POLL_PERIOD", "FoxgloveServer"]

@@ -5,7 +5,9 @@ node runtime's public API: one publisher per topic however many clients advertis
 subscription per topic however many clients subscribe (taking messages as their serialized
 bytes, so a cbor-raw client costs no decoding and a topic needs no known type), one service
 per service a client advertises. A topic's message is encoded once per encoding and its
-frames go to each subscribed client through `Client.queue_topic`, on the receiving thread.
+message goes to each subscribed client's queue (`Client.queue_message`) on the receiving
+thread, and is encoded when the client's writer takes it: a message dropped for a slow client
+costs no encoding, and each encoding is made once for every client that sends it.
 
 Clients are anything with the `Client` protocol: the WebSocket server's connections, or a
 test's recorder.
@@ -46,8 +48,10 @@ class Client(Protocol):
     def send(self, frames: list[ops.Frame]) -> None:
         """Queue control frames (statuses, service frames) for the client; any thread."""
 
-    def queue_topic(self, topic: str, frames: list[ops.Frame], bound: int) -> None:
-        """Queue a topic's frames, keeping at most ``bound`` of the topic waiting; any thread."""
+    def queue_message(self, topic: str, message: Outgoing, bound: int) -> bool:
+        """Queue a message of ``topic`` (rendered into frames by the session when sent),
+        keeping at most ``bound`` of the topic waiting; True if the oldest was dropped for
+        it. Any thread."""
 
     def close(self, code: int, reason: str) -> None:
         """Close the connection; any thread."""
@@ -237,14 +241,20 @@ class GraphSide:
         self.fan_out(out, list(entry.clients))
 
     def fan_out(self, out: Outgoing, clients: list[Client]) -> None:
-        """Hand ``out`` to each of ``clients`` subscribed to its topic."""
-        moment = time.monotonic()
+        """Hand ``out`` to each of ``clients`` subscribed to its topic.
+
+        When a client's queue overflows, its writer (on the I/O loop) is behind the topic:
+        the receiving thread then lets the loop have the interpreter for a moment, which a
+        thread taking messages as fast as a publisher floods them would otherwise hold.
+        """
+        behind = False
         for client in clients:
-            with client.lock:
-                frames = client.session.deliver(out, moment)
-                options = client.session.options(out.topic)
-            if frames and options is not None:
-                client.queue_topic(out.topic, frames, options.queue_length or self.default_queue)
+            options = client.session.options(out.topic)
+            if options is not None:
+                bound = options.queue_length or self.default_queue
+                behind = client.queue_message(out.topic, out, bound) or behind
+        if behind:
+            time.sleep(0)
 
     # -- services the clients call ---------------------------------------------------------------
 

@@ -19,7 +19,9 @@ from __future__ import annotations
 import asyncio
 import json
 import threading
+import time
 from collections import deque
+from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from typing import TYPE_CHECKING, Any, Generic, TypeVar
 from urllib.parse import parse_qs, urlsplit
@@ -32,16 +34,19 @@ from rosx.bridge.protocol import DEFAULT_MAX_MESSAGE, Session
 from rosx.bridge.safety import origin_allowed
 
 if TYPE_CHECKING:
-    from collections.abc import Callable, Sequence
+    from collections.abc import Sequence
 
     from websockets.asyncio.server import Server
     from websockets.http11 import Request, Response
 
     from rosx.bridge import ops
     from rosx.bridge.graph_side import GraphSide
+    from rosx.bridge.outgoing import Outgoing
 
 #: Control frames (statuses, service calls and answers) a client may have waiting.
 MAX_CONTROL = 10_000
+#: The bytes buffered for a client before sending waits for its socket.
+WRITE_LIMIT = 4 << 20
 #: Threads handling clients' requests (each client's in order).
 REQUEST_WORKERS = 32
 
@@ -51,66 +56,87 @@ S = TypeVar("S")
 
 class Connection(Generic[S]):
     """One client: its session (a protocol's core), its queues and its writer. Thread-safe
-    where `rosx.bridge.graph_side.Client` says; the session is used under ``lock``."""
+    where `rosx.bridge.graph_side.Client` says; the session is used under ``lock``.
 
-    def __init__(self, ws: ServerConnection, session: S, loop: asyncio.AbstractEventLoop) -> None:
+    The queues are filled from any thread under ``_queues``; the loop is woken once per
+    burst (``_signalled``), not once per message, so a fast topic costs the loop no wake-up
+    per message while the writer is busy.
+    """
+
+    def __init__(
+        self,
+        ws: ServerConnection,
+        session: S,
+        loop: asyncio.AbstractEventLoop,
+        render: Callable[[S, Any], list[ops.Frame]],
+    ) -> None:
         self.ws = ws
         self.session = session
+        self.render = render
         self.lock = threading.Lock()
         self.loop = loop
         self.control: deque[list[ops.Frame]] = deque()
-        self.topics: dict[str, deque[list[ops.Frame]]] = {}
+        self.topics: dict[str, deque[Any]] = {}
         self.turns: deque[str] = deque()
         self.dropped: dict[str, int] = {}
         self.wake = asyncio.Event()
         self.closing: tuple[int, str] | None = None
+        self._queues = threading.Lock()
+        self._signalled = False
 
     # -- the `Client` protocol (any thread) ----------------------------------------------------
 
     def send(self, frames: list[ops.Frame]) -> None:
-        self.loop.call_soon_threadsafe(self._put_control, frames)
+        with self._queues:
+            if len(self.control) < MAX_CONTROL:
+                self.control.append(frames)
+            self._signal()
 
-    def queue_topic(self, topic: str, frames: list[ops.Frame], bound: int) -> None:
-        self.loop.call_soon_threadsafe(self._put_topic, topic, frames, bound)
+    def queue_message(self, topic: str, message: Any, bound: int) -> bool:
+        dropped = False
+        with self._queues:
+            queue = self.topics.get(topic)
+            if queue is None or queue.maxlen != max(1, bound):
+                queue = self.topics[topic] = deque(queue or (), maxlen=max(1, bound))
+            if len(queue) == queue.maxlen:
+                self.dropped[topic] = self.dropped.get(topic, 0) + 1
+                dropped = True
+            elif not queue:
+                self.turns.append(topic)
+            queue.append(message)
+            self._signal()
+        return dropped
 
     def close(self, code: int, reason: str) -> None:
-        self.loop.call_soon_threadsafe(self._close, code, reason)
+        with self._queues:
+            self.closing = (code, reason)
+            self._signal()
+
+    def _signal(self) -> None:
+        if not self._signalled:
+            self._signalled = True
+            self.loop.call_soon_threadsafe(self.wake.set)
 
     # -- on the loop -----------------------------------------------------------------------------
 
-    def _put_control(self, frames: list[ops.Frame]) -> None:
-        if len(self.control) < MAX_CONTROL:
-            self.control.append(frames)
-            self.wake.set()
-
-    def _put_topic(self, topic: str, frames: list[ops.Frame], bound: int) -> None:
-        queue = self.topics.get(topic)
-        if queue is None or queue.maxlen != max(1, bound):
-            queue = self.topics[topic] = deque(queue or (), maxlen=max(1, bound))
-        if len(queue) == queue.maxlen:
-            self.dropped[topic] = self.dropped.get(topic, 0) + 1
-        elif not queue:
-            self.turns.append(topic)
-        queue.append(frames)
-        self.wake.set()
-
-    def _close(self, code: int, reason: str) -> None:
-        self.closing = (code, reason)
-        self.wake.set()
-
     def _next(self) -> list[ops.Frame] | None:
-        if self.control:
-            return self.control.popleft()
-        while self.turns:
-            topic = self.turns.popleft()
-            queue = self.topics.get(topic)
-            if not queue:
-                continue
-            frames = queue.popleft()
-            if queue:
-                self.turns.append(topic)
-            return frames
-        return None
+        with self._queues:
+            if self.control:
+                return self.control.popleft()
+            while self.turns:
+                topic = self.turns.popleft()
+                queue = self.topics.get(topic)
+                if not queue:
+                    continue
+                message = queue.popleft()
+                if queue:
+                    self.turns.append(topic)
+                break
+            else:
+                self._signalled = False  # drained: the next frame wakes the writer again
+                return None
+        with self.lock:  # rendered here, on the loop, only if it is sent
+            return self.render(self.session, message)
 
     async def write(self) -> None:
         """Send what waits, until the connection closes."""
@@ -177,6 +203,9 @@ class BridgeServer:
             max_size=self.max_message,
             compression=None,  # deflating big messages costs more than it saves on a LAN
             ping_interval=None,
+            # Sends wait for the socket only past 4 MiB buffered: a big message does not stall
+            # behind the previous one's last bytes.
+            write_limit=WRITE_LIMIT,
         )
         sockets = list(self._server.sockets)
         self.port = sockets[0].getsockname()[1]
@@ -206,7 +235,7 @@ class BridgeServer:
         if token is not None and token in parse_qs(urlsplit(path).query).get("token", []):
             token = None
         session = Session(token=token, max_message=self.max_message, client=_host(ws))
-        connection: Connection[Session] = Connection(ws, session, loop)
+        connection: Connection[Session] = Connection(ws, session, loop, _render)
         _status_before_refusal(ws, self.max_message)
         self.connections.add(connection)
         self.log(f"Client connected.  {len(self.connections)} clients total.")
@@ -221,6 +250,10 @@ class BridgeServer:
             self.connections.discard(connection)
             await loop.run_in_executor(self._pool, self.graph.disconnect, connection)
             self.log(f"Client disconnected. {len(self.connections)} clients total.")
+
+
+def _render(session: Session, message: Outgoing) -> list[ops.Frame]:
+    return session.deliver(message, time.monotonic())
 
 
 def _host(ws: ServerConnection) -> str:
