@@ -121,7 +121,10 @@ class GraphSide:
 
     def _carry_out(self, client: Client, event: ops.Event) -> None:
         if isinstance(event, ops.Publish):
-            self._advertised[event.topic].publisher.publish(event.message)
+            entry = self._advertised.get(event.topic)
+            if entry is None:  # the advertisement was refused (another client's type)
+                raise ValueError(f"{event.topic} is not advertised by this client")
+            entry.publisher.publish(event.message)
         elif isinstance(event, ops.Subscribe):
             self._subscribe(client, event)
         elif isinstance(event, ops.Unsubscribe):

@@ -25,15 +25,15 @@ needs the graph leaves as an event (`rosx.bridge.ops`) whose outcome comes back 
 from __future__ import annotations
 
 import json
-import math
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rosx.bridge import ops
 from rosx.bridge.convert import ConversionError, from_json, json_values
 from rosx.bridge.fragments import FragmentError, Reassembly, fragment_frames
+from rosx.bridge.requests import RequestError, check_fields, excerpt, kind, message_class
 from rosx.bridge.safety import check_auth
-from rosx.msg.codec.classes import get_message_class, get_service_class
+from rosx.bridge.subscriptions import SubscriptionOptions, TopicSubscriptions
+from rosx.msg.codec.classes import get_service_class
 from rosx.msg.store import UnknownTypeError
 
 if TYPE_CHECKING:
@@ -48,99 +48,6 @@ COMPRESSIONS = ("none", "png", "cbor", "cbor-raw")
 #: The largest frame (or reassembled fragments) a client may send, by default: 32 MiB holds a
 #: 4K camera image in base64 JSON, and stops a runaway client well before memory does.
 DEFAULT_MAX_MESSAGE = 32 << 20
-
-_STR = (str,)
-_INT = (int,)
-_NUM = (int, float)
-_BOOL = (bool,)
-_ID = (str, int, float)
-#: Each op's fields: (required, name, accepted kinds). Kinds as JSON's: a bool is no number.
-_FIELDS: dict[str, list[tuple[bool, str, tuple[type, ...]]]] = {
-    "advertise": [
-        (True, "topic", _STR),
-        (True, "type", _STR),
-        (False, "latch", _BOOL),
-        (False, "queue_size", _INT),
-    ],
-    "unadvertise": [(True, "topic", _STR)],
-    "publish": [(True, "topic", _STR), (True, "msg", (dict,))],
-    "subscribe": [
-        (True, "topic", _STR),
-        (False, "type", _STR),
-        (False, "throttle_rate", _NUM),
-        (False, "queue_length", _INT),
-        (False, "fragment_size", _INT),
-        (False, "compression", _STR),
-    ],
-    "unsubscribe": [(True, "topic", _STR)],
-    "call_service": [
-        (True, "service", _STR),
-        (False, "args", (list, dict)),
-        (False, "fragment_size", _INT),
-        (False, "compression", _STR),
-    ],
-    "advertise_service": [(True, "service", _STR), (True, "type", _STR)],
-    "unadvertise_service": [(True, "service", _STR)],
-    "service_response": [
-        (True, "service", _STR),
-        (True, "id", _STR),
-        (False, "values", (dict, list)),
-        (True, "result", _BOOL),
-    ],
-    "set_level": [(True, "level", _STR)],
-    "fragment": [
-        (True, "id", _ID),
-        (True, "data", _STR),
-        (True, "num", _INT),
-        (True, "total", _INT),
-    ],
-    "auth": [(True, "mac", _STR)],
-}
-_KIND_NAMES = {
-    str: "a string",
-    int: "an integer",
-    float: "a number",
-    bool: "a boolean",
-    dict: "an object",
-    list: "an array",
-}
-
-
-class RequestError(Exception):
-    """A request that cannot be carried out; the text is the status the client gets."""
-
-
-@dataclass(slots=True)
-class SubscriptionOptions:
-    """One ``subscribe`` of a topic by this client (rosbridge keys them by ``id``)."""
-
-    throttle_ms: float = 0.0
-    queue_length: int = 0
-    fragment_size: int | None = None
-    compression: str = "none"
-
-
-class _Topic:
-    """This client's subscriptions to one topic and what they add up to."""
-
-    __slots__ = ("by_id", "last_sent", "options")
-
-    def __init__(self) -> None:
-        self.by_id: dict[object, SubscriptionOptions] = {}
-        self.options = SubscriptionOptions()
-        self.last_sent = -math.inf
-
-    def combine(self, latest: SubscriptionOptions) -> None:
-        """The lowest throttle and fragment size, the longest queue, the latest compression
-        (rosbridge's rule for several subscriptions of one topic)."""
-        subs = list(self.by_id.values())
-        sizes = [s.fragment_size for s in subs if s.fragment_size]
-        self.options = SubscriptionOptions(
-            throttle_ms=min(s.throttle_ms for s in subs),
-            queue_length=max(s.queue_length for s in subs),
-            fragment_size=min(sizes) if sizes else None,
-            compression=latest.compression,
-        )
 
 
 class Session:
@@ -165,7 +72,7 @@ class Session:
         self.client = client
         self.max_message = max_message
         self.advertised: dict[str, type[Message]] = {}
-        self.topics: dict[str, _Topic] = {}
+        self.topics: dict[str, TopicSubscriptions] = {}
         self.services: dict[str, type[ServiceDefinition]] = {}
         self.pending: dict[str, str] = {}  # request id → service, calls waiting for the client
         self._next_request = 1
@@ -199,7 +106,7 @@ class Session:
         try:
             request = json.loads(data)
         except ValueError as exc:
-            return self.error(f"Invalid JSON ({exc}): {_excerpt(data)}")
+            return self.error(f"Invalid JSON ({exc}): {excerpt(data)}")
         return self.handle(request, now)
 
     def receive_cbor(self, data: bytes, now: Time) -> ops.Reaction:
@@ -216,7 +123,7 @@ class Session:
         """Handle one decoded request."""
         if not isinstance(request, dict):
             return self.error(
-                f"Expected a JSON object with an 'op' field but received {_kind(request)}"
+                f"Expected a JSON object with an 'op' field but received {kind(request)}"
             )
         rid = request.get("id")
         op = request.get("op")
@@ -233,7 +140,7 @@ class Session:
         if not self.authenticated and op != "auth":
             return self.error(f"{op}: not authenticated: send an 'auth' op first", rid)
         try:
-            _check_fields(op, request)
+            check_fields(op, request)
             return self._handlers[op](request, now)
         except (RequestError, ConversionError, FragmentError) as exc:
             return self.error(f"{op}: {exc}", rid)
@@ -258,7 +165,7 @@ class Session:
 
     def _advertise(self, request: dict[str, Any], now: Time) -> ops.Reaction:
         topic, type_name = request["topic"], request["type"]
-        msg_class = _message_class(type_name)
+        msg_class = message_class(type_name)
         known = self.advertised.get(topic)
         if known is not None and known._type != msg_class._type:
             raise RequestError(
@@ -307,7 +214,7 @@ class Session:
                 rid,
             )
         try:
-            msg_class = _message_class(type_name)
+            msg_class = message_class(type_name)
             message = from_json(msg_class, values, stamp=now)
         except (RequestError, ConversionError) as exc:
             return self.error(f"publish: {exc}", rid)
@@ -320,7 +227,7 @@ class Session:
         topic = request["topic"]
         type_name = request.get("type") or None
         if type_name is not None:
-            _message_class(type_name)
+            message_class(type_name)
         compression = request.get("compression", "none")
         if compression not in COMPRESSIONS:
             raise RequestError(
@@ -335,7 +242,7 @@ class Session:
         entry = self.topics.get(topic)
         reaction = self.status("info", f"Subscribed to {topic}", request.get("id"))
         if entry is None:
-            entry = self.topics[topic] = _Topic()
+            entry = self.topics[topic] = TopicSubscriptions()
             reaction.events.append(ops.Subscribe(topic, type_name, request.get("id")))
         entry.by_id[request.get("id")] = options
         entry.combine(options)
@@ -546,42 +453,6 @@ class Session:
         reaction = self.error("auth: authentication failed")
         reaction.events.append(ops.Close(1008, "authentication failed"))
         return reaction
-
-
-def _check_fields(op: str, request: dict[str, Any]) -> None:
-    for required, name, kinds in _FIELDS.get(op, ()):
-        if name not in request:
-            if required:
-                raise RequestError(f"Expected a {name} field but none was found.")
-            continue
-        value = request[name]
-        if not isinstance(value, kinds) or (bool not in kinds and isinstance(value, bool)):
-            expected = " or ".join(_KIND_NAMES[k] for k in kinds)
-            shown = _excerpt(json.dumps(value))
-            raise RequestError(f"Expected field {name} to be {expected}. Invalid value: {shown}")
-
-
-def _message_class(type_name: str) -> type[Message]:
-    try:
-        return get_message_class(type_name)
-    except (UnknownTypeError, ValueError):
-        raise RequestError(f"Unknown message type {type_name}") from None
-
-
-def _kind(value: object) -> str:
-    if isinstance(value, list):
-        return "an array"
-    if isinstance(value, str):
-        return "a string"
-    if isinstance(value, bool):
-        return "a boolean"
-    if isinstance(value, int | float):
-        return "a number"
-    return "null" if value is None else type(value).__name__
-
-
-def _excerpt(text: str, limit: int = 80) -> str:
-    return text if len(text) <= limit else text[:limit] + "…"
 
 
 __all__ = ["DEFAULT_MAX_MESSAGE", "LEVELS", "RequestError", "Session", "SubscriptionOptions"]

@@ -182,3 +182,19 @@ def _slow_and_fast(bridge: Bridge) -> None:
             assert got == sorted(got)
         finally:
             publisher.shutdown("test over")
+
+
+def test_two_clients_cannot_publish_one_topic_with_two_types(running: Running) -> None:
+    with connect(running.url) as first, connect(running.url) as second:
+        first.send(json.dumps({"op": "set_level", "level": "info"}))
+        first.send(json.dumps({"op": "advertise", "topic": "/typed", "type": "std_msgs/String"}))
+        assert next_op(first, "status")["msg"] == "Status level set to info"
+        assert next_op(first, "status")["msg"] == "Advertised /typed"
+        second.send(json.dumps({"op": "advertise", "topic": "/typed", "type": "std_msgs/Int32"}))
+        status = next_op(second, "status")
+        assert status["msg"] == "advertise: /typed is already advertised with type std_msgs/String"
+        second.send(json.dumps({"op": "publish", "topic": "/typed", "msg": {"data": 1}}))
+        status = next_op(second, "status")
+        assert status["msg"] == (
+            "publish: std_msgs/String message requires a string for field data, but got a number"
+        )
