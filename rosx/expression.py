@@ -7,9 +7,16 @@ offers) and rosparam's ``rad(EXPR)`` (`rosx.msg.text.yamlparams`, numbers and ``
 ``and``/``or``/``not``, conditional expressions, subscripts and slices, list/tuple/dict/set
 displays and comprehensions, f-strings, calls of what ``lookup`` gives, and calls of public
 methods of strings, numbers and containers except ``format`` and ``format_map``, which could
-reach into objects. Nothing else: no attribute of other objects, no ``lambda``, no assignment.
-Huge values (repeated strings, powers, ranges, comprehensions) are refused. `arithmetic` takes
-numbers, names, ``+ - * / // % **`` and parentheses only, in floats.
+reach into objects, and methods that change their object (``append``, ``update``…). Nothing
+else: no attribute of other objects, no ``lambda``, no assignment. `arithmetic` takes numbers,
+names, ``+ - * / // % **`` and parentheses only, in floats.
+
+An expression of a few bytes may not take minutes or gigabytes: before anything that could
+grow a value far beyond its operands (powers, products and shifts of integers, repeated
+sequences, padding and replacing methods, ``%`` and format widths, ``factorial``, ``comb``,
+``perm``, ``prod``, ``lcm``, ``sum`` of sequences) the size of the result is checked; no
+value may hold more than `MAX_SIZE` items or characters, no integer more than `MAX_BITS` bits,
+and an evaluation may take at most `BUDGET` steps and items made, all with `ValueError`.
 
 Pure: the standard library's ``ast``, ``builtins``, ``math`` and ``operator``, nothing of rosx.
 """
@@ -20,6 +27,7 @@ import ast
 import builtins
 import math
 import operator
+import re
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
@@ -57,7 +65,7 @@ _COMPARE: dict[type[ast.cmpop], Callable[[Any, Any], Any]] = {
     ast.In: lambda a, b: a in b,
     ast.NotIn: lambda a, b: a not in b,
 }
-#: Python's harmless built-in functions, by name (``range`` bounded by `_MAX_SIZE`).
+#: Python's harmless built-in functions, by name (``range`` bounded by `MAX_SIZE`).
 SAFE_BUILTINS: dict[str, Any] = {
     name: getattr(builtins, name)
     for name in [
@@ -95,13 +103,19 @@ SAFE_BUILTINS: dict[str, Any] = {
         "zip",
     ]
 }
-_MAX_SIZE = 10_000_000
+#: The most items (characters, elements, comprehension rounds) one value may hold: far more
+#: than a launch file computes, few enough to stay within megabytes.
+MAX_SIZE = 100_000
+#: The most bits an integer may have (Python prints at most 4 300 digits, about 14 300 bits).
+MAX_BITS = 1 << 17
+#: The most work one evaluation may do: values computed plus items of the values made.
+BUDGET = 200_000
 
 
 def _range(*args: int) -> range:
-    """``range``, refused beyond `_MAX_SIZE` items (a runaway loop would hang the launch)."""
+    """``range``, refused beyond `MAX_SIZE` items (a runaway loop would hang the launch)."""
     span = range(*args)
-    if len(span) > _MAX_SIZE:
+    if len(span) > MAX_SIZE:
         raise ValueError("range too large")
     return span
 
@@ -110,7 +124,33 @@ SAFE_BUILTINS["range"] = _range
 #: Everything public in `math`, by name.
 MATH = {name: value for name, value in vars(math).items() if not name.startswith("_")}
 _SAFE_TYPES = (str, int, float, bool, list, tuple, dict, set, frozenset, range, bytes)
-_UNSAFE_METHODS = frozenset({"format", "format_map"})
+_UNSAFE_METHODS = frozenset(
+    {"format", "format_map"}  # they reach into objects' attributes
+    # They change their object: with a comprehension's variable, ``x.extend(x)`` doubles it
+    # each round.
+    | {"append", "extend", "insert", "pop", "remove", "reverse", "sort", "clear", "update"}
+    | {"setdefault", "popitem", "add", "discard", "difference_update"}
+    | {"intersection_update", "symmetric_difference_update"}
+)
+_SIZED = (str, bytes, list, tuple, dict, set, frozenset)
+#: What creates a new value, whose size is charged to the budget.
+_MAKERS = (
+    ast.BinOp,
+    ast.Call,
+    ast.ListComp,
+    ast.SetComp,
+    ast.GeneratorExp,
+    ast.DictComp,
+    ast.List,
+    ast.Tuple,
+    ast.Set,
+    ast.Dict,
+    ast.JoinedStr,
+    ast.FormattedValue,
+    ast.Subscript,
+)
+#: Widths and precisions in ``%`` formats and format specifications.
+_WIDTHS = re.compile(r"\*|\d+")
 
 
 class Interpreter:
@@ -119,6 +159,7 @@ class Interpreter:
 
     def __init__(self, lookup: Callable[[str], Any]) -> None:
         self.lookup = lookup
+        self.spent = 0
 
     def name(self, name: str, local: dict[str, Any]) -> Any:
         """The value of ``name``: a comprehension's variable, else the caller's."""
@@ -130,8 +171,23 @@ class Interpreter:
         """The value of ``node`` with the comprehension variables ``local``.
 
         Raises:
-            ValueError: ``node`` is outside the language, or too large a value.
+            ValueError: ``node`` is outside the language, too large a value, or the
+                evaluation has spent its `BUDGET`.
         """
+        self.charge(1)
+        result = self.evaluate(node, local)
+        if isinstance(node, _MAKERS):
+            self.charge(_size(result))
+        return result
+
+    def charge(self, cost: int) -> None:
+        """Count ``cost`` against the evaluation's `BUDGET`."""
+        self.spent += cost
+        if self.spent > BUDGET:
+            raise ValueError("expression too costly")
+
+    def evaluate(self, node: ast.AST, local: dict[str, Any]) -> Any:
+        """`value`'s work, uncounted."""
         match node:
             case ast.Constant(value=value):
                 return value
@@ -189,18 +245,14 @@ class Interpreter:
             case ast.JoinedStr(values=parts):
                 return "".join(str(self.value(part, local)) for part in parts)
             case ast.FormattedValue(value=inner, conversion=conversion, format_spec=spec):
-                shown = self.value(inner, local)
-                if conversion == ord("r"):
-                    shown = repr(shown)
-                elif conversion in (ord("s"), ord("a")):
-                    shown = str(shown) if conversion == ord("s") else ascii(shown)
-                return format(shown, "" if spec is None else self.value(spec, local))
+                return self.formatted(inner, conversion, spec, local)
             case ast.Call(func=func, args=args, keywords=keywords):
                 function = self.callable(func, local)
-                positional = [self.value(a, local) for a in args]
-                named = {k.arg: self.value(k.value, local) for k in keywords if k.arg}
+                positional = [self.metered(self.value(a, local)) for a in args]
+                named = {k.arg: self.metered(self.value(k.value, local)) for k in keywords if k.arg}
                 if len(named) != len(keywords) or any(isinstance(a, ast.Starred) for a in args):
                     raise ValueError("* and ** in calls are not supported")
+                _check_call(function, positional, named)
                 return function(*positional, **named)
             case ast.ListComp(elt=elt, generators=generators):
                 return [self.value(elt, scope) for scope in self.loops(generators, local)]
@@ -214,6 +266,35 @@ class Interpreter:
                     for scope in self.loops(generators, local)
                 }
         raise ValueError(f"{type(node).__name__} expressions are not supported")
+
+    def formatted(
+        self, inner: ast.expr, conversion: int, spec: ast.expr | None, local: dict[str, Any]
+    ) -> str:
+        """An f-string's ``{inner!conversion:spec}``."""
+        shown = self.value(inner, local)
+        _text_size(shown)
+        if conversion == ord("r"):
+            shown = repr(shown)
+        elif conversion in (ord("s"), ord("a")):
+            shown = str(shown) if conversion == ord("s") else ascii(shown)
+        specification = "" if spec is None else str(self.value(spec, local))
+        _check_widths(specification)
+        return format(shown, specification)
+
+    def metered(self, value: Any) -> Any:
+        """``value``, or if it is a function, one whose calls are checked and counted as the
+        interpreter's own (``map``, ``filter``, ``sorted`` call it from C, out of sight)."""
+        if not callable(value):
+            return value
+
+        def call(*args: Any, **named: Any) -> Any:
+            self.charge(1)
+            _check_call(value, list(args), named)
+            result = value(*args, **named)
+            self.charge(_size(result))
+            return result
+
+        return call
 
     def callable(self, func: ast.expr, local: dict[str, Any]) -> Any:
         """What a call calls: a name's value, or a public method of a plain value."""
@@ -242,11 +323,12 @@ class Interpreter:
             following: list[dict[str, Any]] = []
             for scope in scopes:
                 for item in self.value(generator.iter, scope):
+                    self.charge(1)
                     inner = dict(scope)
                     _bind(generator.target, item, inner)
                     if all(self.value(test, inner) for test in generator.ifs):
                         following.append(inner)
-                        if len(following) > _MAX_SIZE:
+                        if len(following) > MAX_SIZE:
                             raise ValueError("comprehension too large")
             scopes = following
         return scopes
@@ -265,16 +347,153 @@ def _bind(target: ast.expr, item: Any, scope: dict[str, Any]) -> None:
         raise ValueError("only names and tuples can be loop targets")
 
 
+def _size(value: Any) -> int:
+    """What a value costs: its items, or an integer's 64-bit words; refused when too large."""
+    if isinstance(value, _SIZED):
+        if len(value) > MAX_SIZE:
+            raise ValueError("result too large")
+        return len(value)
+    if isinstance(value, int):
+        if value.bit_length() > MAX_BITS:
+            raise ValueError("integer too large")
+        return value.bit_length() >> 6
+    return 0
+
+
+def _text_size(value: Any) -> int:
+    """About how many characters ``str(value)`` has; refused beyond `MAX_SIZE` (a list of
+    one long string repeated prints it every time)."""
+    total, pending = 0, [value]
+    while pending:
+        item = pending.pop()
+        if isinstance(item, str | bytes):
+            total += len(item) + 3
+        elif isinstance(item, int):
+            total += item.bit_length() // 3 + 1
+        elif isinstance(item, dict):
+            total += 2 * len(item) + 2
+            pending += item.keys()
+            pending += item.values()
+        elif isinstance(item, list | tuple | set | frozenset):
+            total += 2 * len(item) + 2
+            pending += item
+        else:
+            total += 24
+        if total > MAX_SIZE:
+            raise ValueError("result too large")
+    return total
+
+
+def _bits(value: Any) -> int:
+    return value.bit_length() if isinstance(value, int) else 0
+
+
 def _check_size(op: ast.operator, a: Any, b: Any) -> None:
-    if isinstance(op, ast.Pow) and isinstance(b, int) and abs(b) > 10_000 and a not in (0, 1, -1):
-        raise ValueError("exponent too large")
-    if isinstance(op, ast.LShift) and isinstance(b, int) and b > 100_000:
+    """Refuse ``a op b`` before computing it when the result would be too large."""
+    if isinstance(op, ast.Pow):
+        _check_pow(a, b)
+    elif isinstance(op, ast.LShift) and isinstance(b, int) and _bits(a) + b > MAX_BITS:
         raise ValueError("shift too large")
-    if isinstance(op, ast.Mult):
+    elif isinstance(op, ast.Mult):
+        if isinstance(a, int) and isinstance(b, int) and _bits(a) + _bits(b) > MAX_BITS:
+            raise ValueError("integer too large")
         for seq, count in ((a, b), (b, a)):
             sized = isinstance(seq, str | list | tuple | bytes) and isinstance(count, int)
-            if sized and len(seq) * count > _MAX_SIZE:
+            if sized and len(seq) * count > MAX_SIZE:
                 raise ValueError("result too large")
+    elif isinstance(op, ast.Mod) and isinstance(a, str | bytes):
+        _check_widths(a if isinstance(a, str) else a.decode("latin-1"))
+        _text_size(b)
+
+
+def _check_widths(text: str) -> None:
+    """Refuse ``%`` formats and format specifications that pad to huge widths."""
+    for width in _WIDTHS.findall(text):
+        if width == "*" or int(width) > MAX_SIZE:
+            raise ValueError("format width too large")
+
+
+def _check_call(function: Any, positional: list[Any], named: dict[str, Any]) -> None:
+    """Refuse a call whose result would be too large, before making it."""
+    owner = getattr(function, "__self__", None)
+    if isinstance(owner, _SAFE_TYPES):
+        if any(isinstance(a, int) and abs(a) > MAX_SIZE for a in [*positional, *named.values()]):
+            raise ValueError("argument too large")
+        if isinstance(owner, str | bytes):
+            _check_text_method(owner, function.__name__, positional)
+        return
+    check = _FUNCTION_CHECKS.get(id(function))
+    if check is not None:
+        check(*positional, **named)
+
+
+def _check_text_method(owner: str | bytes, name: str, args: list[Any]) -> None:
+    # The methods of str and bytes whose result can be much longer than their operands.
+    grows = 0
+    if name == "join" and args and isinstance(args[0], _SIZED):
+        grows = len(owner) * len(args[0]) + _text_size(args[0])
+    elif name == "replace" and len(args) >= 2 and all(isinstance(a, str | bytes) for a in args[:2]):
+        times = owner.count(args[0]) if args[0] else len(owner) + 1
+        if len(args) > 2 and isinstance(args[2], int) and args[2] >= 0:
+            times = min(times, args[2])
+        grows = times * len(args[1])
+    elif name == "expandtabs":
+        size = args[0] if args and isinstance(args[0], int) else 8
+        grows = (owner.count("\t") if isinstance(owner, str) else owner.count(b"\t")) * size
+    elif name == "translate" and args and isinstance(args[0], dict | list | tuple):
+        table = args[0].values() if isinstance(args[0], dict) else args[0]
+        longest = max((len(v) for v in table if isinstance(v, str | bytes)), default=1)
+        grows = len(owner) * longest
+    if len(owner) + grows > MAX_SIZE:
+        raise ValueError("result too large")
+
+
+def _check_pow(base: Any = None, exponent: Any = None, mod: Any = None) -> None:
+    whole = isinstance(base, int) and isinstance(exponent, int) and exponent > 0
+    if mod is None and whole and base not in (0, 1, -1) and _bits(base) * exponent > MAX_BITS:
+        raise ValueError("exponent too large")
+
+
+def _check_factorial(n: Any = 0, k: Any = None) -> None:
+    # n! has about n·log2(n) bits: 8 192! has 94 000.
+    if isinstance(n, int) and n > MAX_BITS // 16:
+        raise ValueError("argument too large")
+
+
+def _check_product(*args: Any, **named: Any) -> None:
+    # prod(iterable) and lcm(*integers): at most the sum of the factors' bits.
+    values = args[0] if len(args) == 1 and not isinstance(args[0], int) else args
+    if isinstance(values, range):
+        bits = len(values) * max(_bits(abs(values.start)), _bits(abs(values.stop)))
+    elif isinstance(values, list | tuple | set | frozenset):
+        bits = sum(_bits(abs(v)) for v in values if isinstance(v, int))
+    else:
+        raise ValueError("a product of an iterator is not supported")
+    if bits > MAX_BITS:
+        raise ValueError("result too large")
+
+
+def _check_sum(iterable: Any = (), start: Any = 0) -> None:
+    # sum(lists, []) copies the growing total at every step.
+    if not isinstance(start, int | float | complex):
+        raise ValueError("sum of sequences is not supported")
+
+
+def _check_text(value: Any = "", *more: Any, **named: Any) -> None:
+    _text_size(value)
+
+
+_FUNCTION_CHECKS: dict[int, Callable[..., None]] = {
+    id(builtins.pow): _check_pow,
+    id(builtins.sum): _check_sum,
+    id(builtins.str): _check_text,
+    id(builtins.repr): _check_text,
+    id(math.factorial): _check_factorial,
+    id(math.comb): _check_factorial,
+    id(math.perm): _check_factorial,
+    id(math.prod): _check_product,
+    id(math.lcm): _check_product,
+}
 
 
 def evaluate(expression: str, lookup: Callable[[str], Any]) -> Any:
@@ -287,7 +506,9 @@ def evaluate(expression: str, lookup: Callable[[str], Any]) -> Any:
             as evaluating it in Python would (an unknown name, a method not offered…).
     """
     tree = ast.parse(expression.strip(), mode="eval")
-    return Interpreter(lookup).value(tree.body, {})
+    result = Interpreter(lookup).value(tree.body, {})
+    _text_size(result)  # what the caller prints
+    return result
 
 
 _ARITHMETIC = (ast.Add, ast.Sub, ast.Mult, ast.Div, ast.FloorDiv, ast.Mod, ast.Pow)

@@ -290,6 +290,8 @@ def evaluate(expression: str, scope: Scope, world: World) -> str:
         NameError,
     ) as error:
         raise EvalError(f"$(eval {expression}): {error}") from None
+    except MemoryError:
+        raise EvalError(f"$(eval {expression}): out of memory") from None
     except RecursionError:
         raise EvalError(f"$(eval {expression}): expression too deep") from None
 
