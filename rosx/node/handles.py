@@ -73,6 +73,11 @@ class Publisher:
         are with the kernel, which delivers them even after this node closes the connection."""
         return self.publication.delivered_to()
 
+    def subscriber_ids(self) -> set[str]:
+        """The subscribers (caller ids) connected now (an action client asks whether its
+        server's node is among them)."""
+        return self.publication.subscriber_ids()
+
     def add_watcher(self, watcher: PeerWatcher) -> None:
         """Tell ``watcher`` of the subscribers that connect and leave from now on (rospy's
         ``SubscribeListener``); it is called on the thread that saw the change."""
@@ -118,6 +123,10 @@ class Subscriber:
         """Have ``callback`` see every message of the topic before the subscribers' callbacks
         do; it goes with the topic's last subscriber."""
         self.subscription.add_monitor(callback)
+
+    def publisher_ids(self) -> set[str]:
+        """The publishers (caller ids) connected now."""
+        return self.subscription.publisher_ids()
 
     def bytes_from(self, callerid: str) -> int:
         """Bytes received so far from the publisher node ``callerid``."""

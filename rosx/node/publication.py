@@ -356,6 +356,10 @@ class Publication:
         delivered.update(link.callerid for link in self.local_links if link.frames_received)
         return delivered
 
+    def subscriber_ids(self) -> set[str]:
+        """The subscribers (caller ids) connected now, over a socket or in this process."""
+        return {link.callerid for link in self.links} | {link.callerid for link in self.local_links}
+
     def add_watcher(self, watcher: PeerWatcher) -> None:
         """Tell ``watcher`` of the subscribers that connect and leave from now on: it is
         called on the thread that saw the change, and must not wait."""

@@ -239,6 +239,10 @@ class Subscription:
         """Subscribers' callbacks still subscribed (monitors not counted)."""
         return len(self.receiver.entries) - self._monitors
 
+    def publisher_ids(self) -> set[str]:
+        """The publishers (caller ids) connected now."""
+        return {s.header.get("callerid", "") for s in list(self.streams.values()) if s.connected}
+
     def bytes_from(self, callerid: str) -> int:
         """Bytes received so far from the publisher node ``callerid``'s connection."""
         return sum(
