@@ -3,24 +3,15 @@ process-wide client state for each test (so each test has its own ``init_node``)
 
 from __future__ import annotations
 
-import sys
 from collections.abc import Iterator
 from types import ModuleType
 
 import pytest
 
-from rosx.client import state
+from tests.support.client import fresh_rospy
 
 
 @pytest.fixture
 def rospy(master: str, monkeypatch: pytest.MonkeyPatch) -> Iterator[ModuleType]:
     """``rosx.client`` as a script sees ``rospy``, with a client state of its own."""
-    client = state.Client()
-    monkeypatch.setattr(state, "CLIENT", client)
-    monkeypatch.setenv("ROS_MASTER_URI", master)
-    monkeypatch.delenv("ROS_NAMESPACE", raising=False)
-    monkeypatch.setattr(sys, "argv", ["script.py"])
-    import rosx.client
-
-    yield rosx.client
-    client.signal_shutdown("test over")
+    yield from fresh_rospy(master, monkeypatch)
