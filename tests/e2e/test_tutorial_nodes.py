@@ -37,7 +37,7 @@ class Runs:
     def node(self, *argv: str) -> Iterator[Path]:
         """Run ``rosrun ARGV…`` for the block; yields the file its stdout and stderr go to."""
         self.count += 1
-        log = self.folder / f"{self.count}-{argv[1]}.log"
+        log = self.folder / f"{self.count}-{argv[1].replace('/', '_')}.log"
         with log.open("w") as out:
             process = subprocess.Popen(
                 self.command(*argv),

@@ -12,12 +12,14 @@ colour is used only when the stream is a terminal, so piped or captured output i
 
 from __future__ import annotations
 
+import logging
 import re
 import threading
 import time
 from typing import TYPE_CHECKING, TextIO
 
 from rosx.node import DEBUG, ERROR, FATAL, INFO, WARN
+from rosx.node.rosout import ROSOUT_LOGGER
 from rosx.terminal import is_terminal
 
 if TYPE_CHECKING:
@@ -110,3 +112,31 @@ class NodeLog:
         publish = self.node.log_sink.publish
         if publish is not None and not self.node.is_shutdown():
             publish(level, message, "", "", 0)
+
+
+class RosconsoleHandler(logging.Handler):
+    """Prints the ``rosout`` records of a program written on rosx's rospy API as roscpp's lines
+    (`Console`): the C++ programs of ROS 1's tutorials that rosx provides in Python."""
+
+    def __init__(self, console: Console) -> None:
+        super().__init__()
+        self.console = console
+
+    def emit(self, record: logging.LogRecord) -> None:
+        from rosx.client import lifecycle  # noqa: PLC0415 - the program's rospy node
+        from rosx.client.roslogging import ros_level  # noqa: PLC0415 - as lifecycle
+
+        level = ros_level(record.levelno)
+        self.console.print(level, record.getMessage(), node=lifecycle.get_name())
+
+
+def use_rosconsole(console: Console) -> None:
+    """Give this process's rospy logging roscpp's console lines: `RosconsoleHandler` takes the
+    place of rospy's console handler on ``rosout`` (records still reach ``/rosout``)."""
+    from rosx.client.logs import ConsoleHandler  # noqa: PLC0415 - rospy's logging, on demand
+
+    logger = logging.getLogger(ROSOUT_LOGGER)
+    for handler in [h for h in logger.handlers if isinstance(h, ConsoleHandler)]:
+        logger.removeHandler(handler)
+    if not any(isinstance(h, RosconsoleHandler) for h in logger.handlers):
+        logger.addHandler(RosconsoleHandler(console))
