@@ -13,7 +13,8 @@ Two things differ from ROS 1's rospy actionlib, where its users met races:
   published, so no status, feedback or result of the goal can come first and be missed;
 - feedback is never overtaken by its result: a result is acted on once the feedback that had
   reached this host when it arrived has been handed to the callbacks (the topics travel on
-  different connections and threads).
+  different connections and threads); nor does it come before the goal is seen active: the
+  feedback's own status moves a goal still waiting for acknowledgement.
 """
 
 from __future__ import annotations
@@ -44,6 +45,8 @@ if TYPE_CHECKING:
     TransitionCallback = Callable[["ClientGoalHandle"], object]
     FeedbackCallback = Callable[["ClientGoalHandle", Any], object]
 
+#: The states in which a goal's feedback may be the first news of its acceptance.
+_BEFORE_ACKNOWLEDGEMENT = frozenset({CommState.WAITING_FOR_GOAL_ACK, CommState.PENDING})
 #: How long a result waits for the feedback sent before it to reach the callbacks.
 FEEDBACK_DRAIN_LIMIT = 1.0
 _POLL = 0.01
@@ -249,9 +252,21 @@ class CommStateMachine:
                 logs.logerr("In a funny state: %i", self.state)
 
     def update_feedback(self, action_feedback: Any) -> None:
-        """Feedback for the goal: to the feedback callback, unless the goal is done."""
-        if self.action_goal.goal_id.id != action_feedback.status.goal_id.id:
+        """Feedback for the goal: to the feedback callback, unless the goal is done.
+
+        Feedback comes from an accepted goal, and may arrive before the status that says so
+        (another topic): its own status moves a goal still waiting for acknowledgement first,
+        so the transition callback hears of the goal going active before any feedback.
+        """
+        status = action_feedback.status
+        if self.action_goal.goal_id.id != status.goal_id.id:
             return
+        if self.state in _BEFORE_ACKNOWLEDGEMENT:
+            with self.mutex:
+                if self.state in _BEFORE_ACKNOWLEDGEMENT and isinstance(
+                    comm_next(self.state, status.status), tuple
+                ):
+                    self.update_from(status)
         if self.feedback_cb and self.state != CommState.DONE:
             self.feedback_cb(ClientGoalHandle(self), action_feedback.feedback)
 
