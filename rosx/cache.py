@@ -1,8 +1,11 @@
-"""rosx's folder in the user's cache: ``$XDG_CACHE_HOME/rosx``, else ``~/.cache/rosx``.
+"""rosx's folder in the user's cache (``$XDG_CACHE_HOME/rosx``, else ``~/.cache/rosx``), and
+ROS's own folder (``ROS_HOME``, else ``~/.ros``).
 
 The XDG Base Directory rules: a relative ``XDG_CACHE_HOME`` is ignored. The standard message
 types' texts (`rosx.msg.standard`) and the programs of ``rosx shell-init``
-(`rosx.workspace.path_commands`) are kept there.
+(`rosx.workspace.path_commands`) are kept there. ``ROS_HOME`` holds what ROS 1 keeps there:
+the logs (`rosx.workspace.logdir`) and, as rospack's, the package index's cache
+(`rosx.packages.cache`).
 """
 
 from __future__ import annotations
@@ -26,4 +29,12 @@ def cache_folder(environ: Mapping[str, str]) -> Path | None:
     return Path(cache, "rosx")
 
 
-__all__ = ["cache_folder"]
+def ros_home(environ: Mapping[str, str]) -> Path:
+    """``ROS_HOME``, or ``~/.ros``: where ROS keeps its files and where nodes run by default."""
+    if "ROS_HOME" in environ:
+        return Path(environ["ROS_HOME"])
+    home = environ.get("HOME") or os.path.expanduser("~")  # noqa: PTH111 - HOME may be unset
+    return Path(home) / ".ros"
+
+
+__all__ = ["cache_folder", "ros_home"]

@@ -59,10 +59,13 @@ class RosPack:
     def __init__(self, ros_paths: Sequence[str] | None = None) -> None:
         from pathlib import Path  # noqa: PLC0415 - only for scripts that make one
 
+        from rosx.cache import ros_home  # noqa: PLC0415 - only when made
         from rosx.packages.index import PackageIndex  # noqa: PLC0415 - only when made
 
         self._ros_paths = list(get_ros_paths() if ros_paths is None else ros_paths)
-        self._index: PackageIndex = PackageIndex([Path(p) for p in self._ros_paths])
+        self._index: PackageIndex = PackageIndex(
+            [Path(p) for p in self._ros_paths], cache_folder=ros_home(os.environ)
+        )
 
     def get_ros_paths(self) -> list[str]:
         """The paths searched."""

@@ -69,8 +69,8 @@ class TypeStore:
 
     @classmethod
     def from_environ(cls, environ: Mapping[str, str] | None = None) -> TypeStore:
-        env = os.environ if environ is None else environ
-        return cls(split_package_path(env.get("ROS_PACKAGE_PATH")))
+        """The store over ``environ``'s ``ROS_PACKAGE_PATH`` (its crawl kept in ``ROS_HOME``)."""
+        return cls(index=PackageIndex.from_environ(os.environ if environ is None else environ))
 
     # -- where definitions live -------------------------------------------------------------
 

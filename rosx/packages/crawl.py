@@ -44,17 +44,39 @@ def split_package_path(value: str | None) -> list[Path]:
     return [Path(p) for p in (value or "").split(os.pathsep) if p]
 
 
-def find_packages(roots: list[Path]) -> dict[str, Path]:
-    """Map each package name found under ``roots`` to its directory."""
+class Seen:
+    """What a crawl looked at, to tell later whether it would find the same (`rosx.packages.
+    cache`): each directory it listed, with its change time read before the listing, and each
+    manifest it read, with its own (change time, size). A directory's change time moves when an
+    entry is added to it, removed or renamed; a file's when it is written or replaced. Unlike
+    the modification time, nobody can set it back (``touch -d``, ``tar``, ``rsync -t``)."""
+
+    def __init__(self) -> None:
+        #: ``(path, st_ctime_ns)``; ``-1`` for a path that was not there.
+        self.directories: list[tuple[str, int]] = []
+        #: ``(path of package.xml, st_ctime_ns, st_size)``.
+        self.manifests: list[tuple[str, int, int]] = []
+
+
+def find_packages(roots: list[Path], seen: Seen | None = None) -> dict[str, Path]:
+    """Map each package name found under ``roots`` to its directory (what was looked at goes
+    in ``seen``)."""
     found: dict[str, Path] = {}
     for root in roots:
-        _crawl(str(root), found)
+        _crawl(str(root), found, seen)
     return found
 
 
-def _crawl(directory: str, found: dict[str, Path]) -> None:
+def _crawl(directory: str, found: dict[str, Path], seen: Seen | None) -> None:
     # Strings and one scandir a directory, no Path objects: a package path such as Debian's
     # /usr/share holds thousands of directories, and every launch and node start crawls it.
+    if seen is not None:
+        # Its time before its listing: a change made while it is read shows as a new time.
+        try:
+            seen.directories.append((directory, os.stat(directory).st_ctime_ns))  # noqa: PTH116 - strings, as the crawl
+        except OSError:
+            seen.directories.append((directory, -1))
+            return
     try:
         with os.scandir(directory) as listing:
             entries = {entry.name: entry for entry in listing}
@@ -62,6 +84,14 @@ def _crawl(directory: str, found: dict[str, Path]) -> None:
         return
     manifest = entries.get("package.xml")
     if manifest is not None and manifest.is_file():
+        if seen is not None:
+            # A package's own folder changes with every file saved in it; its manifest decides.
+            seen.directories.pop()
+            try:
+                stat = manifest.stat()
+            except OSError:
+                return
+            seen.manifests.append((manifest.path, stat.st_ctime_ns, stat.st_size))
         name = package_name(Path(manifest.path))
         if name and name not in found:
             found[name] = Path(directory)
@@ -71,7 +101,7 @@ def _crawl(directory: str, found: dict[str, Path]) -> None:
     for name in sorted(entries):
         entry = entries[name]
         if not name.startswith(".") and entry.is_dir():
-            _crawl(entry.path, found)
+            _crawl(entry.path, found, seen)
 
 
 @cache

@@ -11,7 +11,8 @@ store's ``has_package``). Dependencies that are not known at all are skipped sil
 rospack skips system dependencies.
 
 The type store (`rosx.msg.store`) finds packages' ``msg/`` and ``srv/`` folders through this
-index, and ``rospack``, ``rosrun``, ``roscd`` through it too: one crawl of the package path.
+index, and ``rospack``, ``rosrun``, ``roscd`` through it too: one crawl of the package path,
+kept between processes under ``ROS_HOME`` and never trusted stale (`rosx.packages.cache`).
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from __future__ import annotations
 import contextlib
 from functools import cached_property
 
-from rosx.packages.crawl import bundled_packages, find_packages, split_package_path
+from rosx.packages.crawl import bundled_packages, split_package_path
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -46,6 +47,7 @@ class PackageIndex:
         provides: Callable[[str], bool] | None = None,
         *,
         crawled: Mapping[str, Path] | None = None,
+        cache_folder: Path | None = None,
     ) -> None:
         """Index the packages on ``package_path``.
 
@@ -55,9 +57,12 @@ class PackageIndex:
                 message layer's standard types); none by default.
             crawled: what a crawl of ``package_path`` just found (`path_packages`), when another
                 process has done it for this one; crawled on first use otherwise.
+            cache_folder: where the crawl is kept between processes (``ROS_HOME``,
+                `rosx.packages.cache`); None: crawled by each process.
         """
         self.package_path = package_path
         self._provides = provides
+        self._cache_folder = cache_folder
         self._manifests: dict[str, Manifest] = {}
         if crawled is not None:
             self.__dict__["path_packages"] = dict(crawled)  # the cached_property's value
@@ -66,12 +71,21 @@ class PackageIndex:
     def from_environ(
         cls, environ: Mapping[str, str], provides: Callable[[str], bool] | None = None
     ) -> PackageIndex:
-        return cls(split_package_path(environ.get("ROS_PACKAGE_PATH")), provides)
+        """The index of ``environ``'s ``ROS_PACKAGE_PATH``, its crawl kept in ``ROS_HOME``."""
+        from rosx.cache import ros_home  # noqa: PLC0415 - the one place that knows ROS_HOME
+
+        return cls(
+            split_package_path(environ.get("ROS_PACKAGE_PATH")),
+            provides,
+            cache_folder=ros_home(environ),
+        )
 
     @cached_property
     def path_packages(self) -> dict[str, Path]:
         """The packages found on the package path alone, by name."""
-        return find_packages(self.package_path)
+        from rosx.packages.cache import cached_packages  # noqa: PLC0415 - crawling or not
+
+        return cached_packages(self.package_path, self._cache_folder)
 
     @cached_property
     def packages(self) -> dict[str, Path]:

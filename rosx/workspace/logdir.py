@@ -18,19 +18,13 @@ import socket
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from rosx.cache import ros_home
+
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
 
 #: Above this many bytes in the log folder, roslaunch suggests ``rosclean``.
 DISK_USAGE_WARNING = 1 << 30
-
-
-def ros_home(environ: Mapping[str, str]) -> Path:
-    """``ROS_HOME``, or ``~/.ros``: where ROS keeps its files and where nodes run by default."""
-    if "ROS_HOME" in environ:
-        return Path(environ["ROS_HOME"])
-    home = environ.get("HOME") or os.path.expanduser("~")  # noqa: PTH111 - HOME may be unset
-    return Path(home) / ".ros"
 
 
 def log_dir(environ: Mapping[str, str]) -> Path:

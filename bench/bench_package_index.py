@@ -1,0 +1,182 @@
+"""The package index with a real ``ROS_PACKAGE_PATH``: rospack, rosmsg and a <TAB>, with ROS 1.
+
+The path is a generated catkin workspace of ``--packages`` packages (each with a message
+type, a script and a launch folder) in front of Debian's ``/usr/share``, where Debian's ROS 1
+lives among the rest of the system's files: every crawl of the path walks all of it. Each
+command runs as a new process, ROS 1's and rosx's alternately, after one unmeasured run of each
+(so rospack's cache and rosx's exist); medians of ``--runs`` runs. ``ROS_HOME`` is a fresh
+folder, where both keep their caches. Targets (DESIGN.md): ``rospack find``/``list`` ≤ 3 x C++
+rospack's, ``rosmsg show`` ≤ 0.3 x ROS 1's, a <TAB> ≤ 30 ms.
+
+Then the cache's point: a package added to the workspace a moment ago. rosx's next command
+sees it (and pays a crawl once); rospack's answer comes from its cache, up to 60 s old.
+
+    python bench/bench_package_index.py [--runs 11] [--packages 300]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+
+from bench import interpreter
+from bench.interpreter import ROS1_PYTHON
+from tests.support.ros1 import ros1_available, ros1_environ
+
+MANIFEST = """\
+<?xml version="1.0"?>
+<package format="2">
+  <name>{name}</name>
+  <version>0.1.0</version>
+  <description>The {name} package</description>
+  <maintainer email="student@example.com">student</maintainer>
+  <license>BSD</license>
+  <buildtool_depend>catkin</buildtool_depend>
+  <depend>rospy</depend>
+  <depend>std_msgs</depend>
+  <depend>geometry_msgs</depend>
+</package>
+"""
+
+#: How long ago the generated files were made (a fresh file's time is not trusted by rosx's
+#: cache for 2 s, as git's index does not trust one; a real workspace is older).
+AGE = 3600
+
+
+def workspace(root: Path, count: int) -> Path:
+    """``root/src`` with ``count`` packages, their times moved back by `AGE` seconds."""
+    src = root / "src"
+    for number in range(count):
+        name = f"pkg_{number:03d}"
+        package = src / name
+        for folder in ("msg", "scripts", "launch", "src"):
+            (package / folder).mkdir(parents=True)
+        (package / "package.xml").write_text(MANIFEST.format(name=name))
+        (package / "CMakeLists.txt").write_text(f"project({name})\n")
+        (package / "msg" / f"Reading{number:03d}.msg").write_text("float64 value\n")
+        (package / "scripts" / "node.py").write_text("import rospy\n")
+    age(root)
+    return src
+
+
+def age(root: Path) -> None:
+    then = time.time() - AGE
+    for directory, _, files in os.walk(root):
+        for name in files:
+            os.utime(Path(directory, name), (then, then))
+        os.utime(directory, (then, then))
+
+
+def timed(argv: list[str], env: dict[str, str]) -> float:
+    start = time.perf_counter()
+    done = subprocess.run(argv, env=env, capture_output=True, check=False)
+    elapsed = time.perf_counter() - start
+    if done.returncode != 0:
+        raise SystemExit(f"{' '.join(argv)} failed ({done.returncode}): {done.stderr.decode()}")
+    return elapsed
+
+
+def medians(commands: list[tuple[list[str], dict[str, str]]], runs: int) -> list[float]:
+    """Each command once unmeasured, then ``runs`` rounds of all, alternating; the medians."""
+    for argv, env in commands:
+        timed(argv, env)
+    times: list[list[float]] = [[] for _ in commands]
+    for _ in range(runs):
+        for spent, (argv, env) in zip(times, commands, strict=True):
+            spent.append(timed(argv, env))
+    return [statistics.median(spent) for spent in times]
+
+
+def row(what: str, ros1: float | None, rosx: float, target: str, met: bool) -> None:
+    theirs = f"{ros1 * 1000:.1f}" if ros1 is not None else "-"
+    ratio = f"{rosx / ros1:.2f}" if ros1 is not None else "-"
+    print(
+        f"| `{what}` | {theirs} | {rosx * 1000:.1f} | {ratio} | {target} | "
+        f"{'yes' if met else 'no'} |",
+        flush=True,
+    )
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=11)
+    parser.add_argument("--packages", type=int, default=300)
+    interpreter.add_option(parser)
+    options = parser.parse_args()
+    if not ros1_available():
+        print('ROS 1 reference not installed: eval "$(../shared/tools/ros1-reference)"')
+        return 1
+    interpreter.run_on(options.python)
+    rosx = str(Path(sys.executable).parent / "rosx")
+    if not Path(rosx).exists():
+        rosx = shutil.which("rosx") or rosx
+    with tempfile.TemporaryDirectory() as tmp:
+        src = workspace(Path(tmp) / "catkin_ws", options.packages)
+        home = Path(tmp) / "ros_home"
+        env = ros1_environ(ROS_PACKAGE_PATH=f"{src}:/usr/share", ROS_HOME=str(home))
+        env["PATH"] = f"{Path(ROS1_PYTHON).parent}{os.pathsep}{env['PATH']}"
+        env.pop("PYTHONDONTWRITEBYTECODE", None)
+        bare = {k: v for k, v in env.items() if k != "ROS_PACKAGE_PATH"}
+        middle = f"pkg_{options.packages // 2:03d}"
+        print(f"ROS_PACKAGE_PATH: {options.packages} packages, then /usr/share "
+              f"({sum(1 for _ in Path('/usr/share').iterdir())} entries)")  # fmt: skip
+        print("| command | ROS 1 (ms) | rosx (ms) | ratio | target | met |")
+        print("|---|---|---|---|---|---|")
+        for argv, target in (
+            (["rospack", "find", "roscpp"], 3.0),
+            (["rospack", "find", middle], 3.0),
+            (["rospack", "list"], 3.0),
+            (["rosmsg", "show", "geometry_msgs/Twist"], 0.3),
+            (["rosmsg", "show", f"{middle}/Reading{options.packages // 2:03d}"], 0.3),
+        ):
+            ros1, mine = medians([([f"/usr/bin/{argv[0]}", *argv[1:]], env), ([rosx, *argv], env)],
+                                 options.runs)  # fmt: skip
+            row(" ".join(argv), ros1, mine, f"≤ {target} x", mine / ros1 <= target)
+        (tab,) = medians([([rosx, "complete", "1", "roscd", "pkg_1"], env)], options.runs)
+        row("roscd pkg_1<TAB> (rosx complete)", None, tab, "≤ 30 ms", tab <= 0.030)
+        (floor,) = medians([([rosx, "rospack", "find", "roscpp"], bare)], options.runs)
+        row("rospack find roscpp, no ROS_PACKAGE_PATH (floor)", None, floor, "-", True)
+        fresh(src, env, rosx)
+    print(f"(medians of {options.runs} runs; python {sys.version.split()[0]}, "
+          f"{os.cpu_count()} cores)")  # fmt: skip
+    return 0
+
+
+def fresh(src: Path, env: dict[str, str], rosx: str) -> None:
+    """A package made and one removed a moment ago: who sees it, and what the first rosx
+    command after the change costs (a crawl)."""
+    made = src / "made_just_now"
+    made.mkdir()
+    (made / "package.xml").write_text(MANIFEST.format(name="made_just_now"))
+    shutil.rmtree(src / "pkg_000")
+
+    def answer(argv: list[str]) -> tuple[str, float]:
+        start = time.perf_counter()
+        done = subprocess.run(argv, env=env, capture_output=True, text=True, check=False)
+        spent = time.perf_counter() - start
+        text = done.stdout.strip() if done.returncode == 0 else done.stderr.strip()
+        return text, spent
+
+    ros1_list, _ = answer(["/usr/bin/rospack", "list-names"])
+    rosx_list, crawl = answer([rosx, "rospack", "list-names"])
+    ros1_find, _ = answer(["/usr/bin/rospack", "find", "pkg_000"])
+    rosx_find, _ = answer([rosx, "rospack", "find", "pkg_000"])
+    print("\nA package made and one removed a moment ago:")
+    print(
+        f"- made_just_now listed: rospack {'made_just_now' in ros1_list.split()}, "
+        f"rosx {'made_just_now' in rosx_list.split()} ({crawl * 1000:.0f} ms: a crawl)"
+    )
+    print(f"- rospack find pkg_000 (removed): rospack {ros1_find!r}; rosx {rosx_find!r}")
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
