@@ -52,6 +52,10 @@ TOOLS: dict[str, tuple[str, str]] = {
         "Monitor topics: type, bandwidth, rate and the latest message.",
     ),
     "rqt": ("rosx_commands.rqt:rqt", "The rqt tools as tabs of one terminal app."),
+    "rviz": (
+        "rosx_commands.rviz:rviz",
+        "rviz's 2-D displays and tools: maps, lasers, tf, paths, markers; goals and poses.",
+    ),
     "sim": ("rosx_commands.sim:sim", "Run a master, turtlesim and teleop in one terminal UI."),
     "rosbridge": (
         "rosx_commands.rosbridge:rosbridge",

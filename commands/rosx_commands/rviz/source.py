@@ -1,0 +1,35 @@
+"""What the app needs of the ROS side (`Source`): `rosx_commands.rviz.live.LiveSource` on a
+master, or a test's own with the same methods."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Protocol
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
+
+    from rosx_commands.rviz.manager import Manager
+    from rosx_commands.rviz.tools import Tool
+
+
+class Source(Protocol):
+    def start(self, manager: Manager, changed: Callable[[], object]) -> None:
+        """Begin feeding ``manager`` (may block: the app calls it from a worker thread)."""
+        ...
+
+    def sync(self) -> None:
+        """Subscribe what the displays now want (after one was shown or hidden)."""
+        ...
+
+    def advertise(self, tools: tuple[Tool, ...]) -> None: ...
+
+    def publish(self, tool: Tool, fixed: str, x: float, y: float, yaw: float) -> str:
+        """Publish the tool's message; the line rviz logs."""
+        ...
+
+    def param(self, name: str) -> Any: ...
+
+    def close(self) -> None: ...
+
+
+__all__ = ["Source"]
