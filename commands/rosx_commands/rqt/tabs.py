@@ -50,4 +50,5 @@ TABS: tuple[Tab, ...] = (
     Tab("topic", "Topics", "rosx_commands.rqt_topic.app:topic_tab"),
     Tab("console", "Console", "rosx_commands.rqt_console.app:console_tab"),
     Tab("logger_level", "Logger levels", "rosx_commands.rqt_logger_level.app:logger_level_tab"),
+    Tab("rviz", "rviz", "rosx_commands.rviz.run:rviz_tab"),
 )
