@@ -101,7 +101,41 @@ def test_rosls_shows_the_tutorial_packages_as_noetic_installs_them() -> None:
         "007_connection_header", "008_on_shutdown", "009_advanced_publish",
         "010_publish_pointcloud2", "cmake", "msg", "package.xml", "srv",
     ]  # fmt: skip
-    assert rosx("rosls", "std_msgs").out == "msg\npackage.xml\n"
+    assert rosx("rosls", "std_msgs").out == "cmake\nmsg\npackage.xml\n"
+    assert rosx("rosls", "roscpp").out == "cmake\nmsg\npackage.xml\nsrv\n"
+    assert rosx("rosls", "nav_msgs").out == "action\ncmake\nmsg\npackage.xml\nsrv\n"
+    assert rosx("roscd", "--where", "roscpp/cmake").out == f"{SHARE}/roscpp/cmake\n"
+
+
+def test_every_shipped_package_has_noetics_cmake_folder_which_says_it_builds_nothing() -> None:
+    """Noetic installs ``share/<pkg>/cmake/<pkg>Config.cmake`` for every catkin package; rosx's
+    stops a CMake project that finds it with one clear message (no C++ to build against)."""
+    for directory in sorted(SHARE.iterdir()):
+        if not (directory / "package.xml").is_file():
+            continue
+        config = directory / "cmake" / f"{directory.name}Config.cmake"
+        assert config.is_file(), f"{directory.name}: add cmake/{config.name} (see roscpp's)"
+        assert "message(FATAL_ERROR" in config.read_text(), config
+
+
+@pytest.mark.skipif(shutil.which("cmake") is None, reason="cmake is not installed")
+def test_a_cmake_project_that_finds_a_shipped_package_stops_with_one_message(
+    tmp_path: Path,
+) -> None:
+    (tmp_path / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.10)\nproject(lab)\nfind_package(roscpp REQUIRED)\n"
+    )
+    done = subprocess.run(
+        ["cmake", "-S", str(tmp_path), "-B", str(tmp_path / "build")],
+        env=clean_environ(CMAKE_PREFIX_PATH=str(PREFIX)), capture_output=True, text=True,
+        timeout=120, check=False,
+    )  # fmt: skip
+    assert done.returncode == 1
+    assert " ".join(done.stderr.split()).startswith(
+        f"CMake Error at {SHARE}/roscpp/cmake/roscppConfig.cmake:5 (message): roscpp in "
+        f"{SHARE}/roscpp/cmake is rosx's, which has no C++ headers, libraries or CMake macros "
+        "to build against: use a ROS 1 installation for CMake projects"
+    )
 
 
 def test_rossrv_show_add_two_ints_lists_both_tutorial_types(tmp_path: Path) -> None:

@@ -112,12 +112,16 @@ def test_shell_init_install_makes_every_new_terminal_ready(user: NewTerminal, sh
     assert again.stdout == f"rosx shell-init: {startup} already has the line; open a new terminal\n"
     assert startup.read_text().count("shell-init") == 1
     after = user.run(
-        f"{WHERE[shell]} rostopic\nrosversion -d\ntype roscd | head -1", shell, interactive=True
+        f"{WHERE[shell]} rostopic\nrosversion -d\ntype roscd | head -1\n"
+        "roscd roscpp/cmake && pwd",  # beginner tutorial 2
+        shell,
+        interactive=True,
     )
-    rostopic, distro, roscd = after.stdout.splitlines()
+    rostopic, distro, roscd, cmake = after.stdout.splitlines()
     assert rostopic.startswith(f"{user.home}/.cache/rosx/bin-") and rostopic.endswith("/rostopic")
     assert distro == "noetic"
     assert roscd.startswith("roscd is a") and "function" in roscd
+    assert cmake == f"{SHARE}/roscpp/cmake"
 
 
 def test_install_follows_shell_and_keeps_the_rest_of_the_file(user: NewTerminal) -> None:

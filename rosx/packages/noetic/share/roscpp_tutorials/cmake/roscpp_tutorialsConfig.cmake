@@ -1,2 +1,7 @@
-# roscpp_tutorials's CMake configuration folder, as catkin installs it. rosx builds no C++ and reads
-# no CMake files: this file only keeps the package's layout (what rosls shows) as on Noetic.
+# roscpp_tutorials's CMake configuration, where catkin installs it (share/roscpp_tutorials/cmake/roscpp_tutorialsConfig.cmake).
+# The roscpp_tutorials package here is rosx's: rosx compiles no C++ and ships no headers, libraries or
+# CMake macros, so a CMake project that finds this file stops with the message below instead of
+# configuring against nothing. Build such projects against a ROS 1 installation.
+message(FATAL_ERROR
+  "roscpp_tutorials in ${CMAKE_CURRENT_LIST_DIR} is rosx's, which has no C++ headers, libraries or "
+  "CMake macros to build against: use a ROS 1 installation for CMake projects")

@@ -1,0 +1,7 @@
+# teleop_twist_keyboard's CMake configuration, where catkin installs it (share/teleop_twist_keyboard/cmake/teleop_twist_keyboardConfig.cmake).
+# The teleop_twist_keyboard package here is rosx's: rosx compiles no C++ and ships no headers, libraries or
+# CMake macros, so a CMake project that finds this file stops with the message below instead of
+# configuring against nothing. Build such projects against a ROS 1 installation.
+message(FATAL_ERROR
+  "teleop_twist_keyboard in ${CMAKE_CURRENT_LIST_DIR} is rosx's, which has no C++ headers, libraries or "
+  "CMake macros to build against: use a ROS 1 installation for CMake projects")

@@ -1,0 +1,7 @@
+# turtlebot3_stage's CMake configuration, where catkin installs it (share/turtlebot3_stage/cmake/turtlebot3_stageConfig.cmake).
+# The turtlebot3_stage package here is rosx's: rosx compiles no C++ and ships no headers, libraries or
+# CMake macros, so a CMake project that finds this file stops with the message below instead of
+# configuring against nothing. Build such projects against a ROS 1 installation.
+message(FATAL_ERROR
+  "turtlebot3_stage in ${CMAKE_CURRENT_LIST_DIR} is rosx's, which has no C++ headers, libraries or "
+  "CMake macros to build against: use a ROS 1 installation for CMake projects")
