@@ -7,9 +7,11 @@ socket or the host and port it names, send the subscriber's header and check the
 `Receiver` thread, which calls `IncomingStream.read` whenever the socket is readable: large
 reads parsed by a `FrameReader`, except a read that is exactly one whole frame (the usual one on
 a topic whose subscriber keeps up), handed over as it is. A frame of 64 KiB or more is read by
-``recv_into`` straight into a buffer of its own once its length is known, and handed over as a
-``memoryview`` of it: the kernel's copy is then the only one before the decoder's (``bytes``
-fields copy once; ``numpy`` arrays read the buffer in place). ``on_close`` is called once, on
+``recv_into`` straight into a buffer of its own once its length is known (what a read took of
+it beyond the length is copied there once), and handed over as a ``memoryview`` of it: the
+kernel's copy is then the only one before the decoder's (``bytes`` fields copy once; ``numpy``
+arrays read the buffer in place). The next large frame reuses that buffer when nothing views
+it any more (`IncomingStream._buffer`). ``on_close`` is called once, on
 the loop, when the stream ends. The byte and frame counts (``getBusStats``) are written by that
 one thread only (and by the handshake, before it starts).
 
@@ -140,6 +142,8 @@ class IncomingStream:
         #: `read_on`), and a view of it.
         self.scratch = bytearray(RECV_SIZE)
         self.view = memoryview(self.scratch)
+        #: The buffer of the last large frame, kept to read the next one into (`_buffer`).
+        self._spare: bytearray | None = None
         self._task: asyncio.Task[None] | None = None
         #: The receiver thread reading this stream once connected (see `Receiver`).
         self.receiver: Detacher | None = None
@@ -333,6 +337,12 @@ class IncomingStream:
         if size == 0:
             return None
         reader = self._reader
+        if not reader.buffered and size >= 4:
+            # The read begins a frame: if it is a large one that goes on after the read, the
+            # rest goes straight into a buffer of its own, the read's part copied there once.
+            length = U32.unpack_from(self.scratch)[0]
+            if _DIRECT <= length <= reader.max_frame_size and size < 4 + length:
+                return self._read_large(sock, length, size)
         view = self.view
         reader.feed(view[:size])
         total = size
@@ -357,13 +367,22 @@ class IncomingStream:
         """Bytes read and not yet handed over as frames (part of a frame)."""
         return self._reader.buffered
 
-    def _read_large(self, sock: socket.socket, size: int) -> Sequence[bytes | memoryview] | None:
-        buff = bytearray(size)
-        got = head = self._reader.take_pending(buff)
+    def _read_large(
+        self, sock: socket.socket, size: int, read: int = 0
+    ) -> Sequence[bytes | memoryview] | None:
+        """Read the rest of a frame of ``size`` bytes into a buffer of its own (`_buffer`).
+        Its first bytes are in `scratch` after the length prefix, ``read`` bytes read in all
+        (a read that began the frame), or else held by the frame reader."""
+        buff = self._buffer(size)
         with memoryview(buff) as view:
+            if read:
+                got = head = read - 4
+                view[:got] = self.view[4:read]
+            else:
+                got = head = self._reader.take_pending(buff)
             while got < size:
                 try:
-                    count = sock.recv_into(view[got:])
+                    count = sock.recv_into(view[got:size])
                 except InterruptedError:
                     continue
                 except OSError:
@@ -371,12 +390,33 @@ class IncomingStream:
                 if count == 0:
                     return None
                 got += count
-        self.bytes_received += size - head
+        self.bytes_received += 4 + size if read else size - head
         self.frames_received += 1
-        frame = memoryview(buff)
+        frame = memoryview(buff) if len(buff) == size else memoryview(buff)[:size]
         if self.latching:
             self.latched = frame
         return [frame]
+
+    def _buffer(self, size: int) -> bytearray:
+        """A buffer for a large frame of ``size`` bytes: the last one when nothing views it any
+        more and it is large enough (not more than twice), else a new one.
+
+        A new ``bytearray`` is zeroed by Python before the frame is read into it, and a fresh
+        one costs page faults too: for 10 MiB both took about as long as the kernel's copy of
+        the frame. A frame's buffer is still in use while anything holds a view of it (a
+        queued frame, a latch, a raw subscriber's message, a numpy array read in place):
+        then ``pop`` refuses to resize it, and another is made.
+        """
+        spare = self._spare
+        if spare is not None and size <= len(spare) <= 2 * size:
+            try:
+                spare.append(spare.pop())
+            except BufferError:
+                pass
+            else:
+                return spare
+        spare = self._spare = bytearray(size)
+        return spare
 
     def take_frames(self) -> Sequence[bytes | memoryview] | None:
         """The complete frames buffered so far (``None``: the stream is out of sync)."""

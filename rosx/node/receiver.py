@@ -348,6 +348,7 @@ class Receiver:
                     else:
                         queue.extend([(frame, header, None) for frame in frames])
                         self._dispatch_all()
+                frames = ()  # handed over: a large frame's buffer may serve the next read
                 entries = self.entries
                 if (
                     len(entries) == 1

@@ -482,6 +482,42 @@ def test_images_arrive_as_published_though_the_message_changes_after(
         assert [p[:2] for p in publications if p[0] == "/camera"] == [["/camera", sent]]
 
 
+def test_large_frames_waiting_for_a_busy_callback_stay_whole(
+    make_node: Callable[..., Node],
+) -> None:
+    """Large frames are read into a buffer that the next one may reuse once nothing views it
+    (`rosx.node.incoming`): frames queued behind a busy callback (read from a second
+    publisher while the first one's message is being handled), and the latch a late callback
+    gets, keep what they held."""
+    first, second, viewer = make_node("cam_one"), make_node("cam_two"), make_node("viewer")
+    release = threading.Event()
+    got: list[bytes] = []
+
+    def busy(msg: Any) -> None:
+        if not got:
+            release.wait(10)
+        got.append(msg.data)
+
+    sub = viewer.subscribe("/burst", Image, busy, queue_size=None)
+    pub_one = first.advertise("/burst", Image, queue_size=None)
+    pub_two = second.advertise("/burst", Image, queue_size=None, latch=True)
+    wait_for(lambda: sub.get_num_connections() == 2 and pub_two.get_num_connections() == 1)
+    wait_for(lambda: pub_one.get_num_connections() == 1)
+    pub_one.publish(Image(encoding="mono8", data=b"first"))
+    wait_for(lambda: sub.subscription.receiver.received == 1)
+    images = [bytes([n]) * (300_000 - n) for n in range(6)]  # each fits the last one's buffer
+    for data in images:
+        pub_two.publish(Image(encoding="mono8", data=data))
+    wait_for(lambda: sub.subscription.receiver.received == 1 + len(images))
+    release.set()
+    wait_for(lambda: len(got) == 1 + len(images))
+    assert got == [b"first", *images]
+    late: list[bytes] = []
+    viewer.subscribe("/burst", Image, lambda m: late.append(m.data))
+    wait_for(lambda: late)
+    assert late == images[-1:]
+
+
 def test_a_latched_image_reaches_a_late_subscriber_whole(make_node: Callable[..., Node]) -> None:
     a, b = make_node("still"), make_node("late_viewer")
     pub = a.advertise("/still", Image, latch=True)
