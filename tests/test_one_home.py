@@ -102,7 +102,7 @@ def test_the_masters_default_address_is_defined_once() -> None:
 def test_signal_handlers_are_installed_by_rosx_signals_only() -> None:
     # The zygote sets its forked children's dispositions back to the defaults, which is not
     # handling a signal.
-    assert _found(_signal_signal, {"rosx/signals.py", "rosx/launch/zygote.py"}) == []
+    assert _found(_signal_signal, {"rosx/signals.py", "rosx/launch/run/zygote.py"}) == []
 
 
 def test_only_the_master_client_asks_whether_a_master_is_up() -> None:

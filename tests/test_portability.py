@@ -45,8 +45,8 @@ GUARDED = {
     "rosx/node/subscription.py": "FIONREAD (fcntl, termios): what a drained subscription waits for",
     "commands/rosx_commands/rosbag/play.py": "space and s keys read in cbreak mode (termios, tty)",
     "turtle/rosx_turtle/keyboard.py": "turtle_teleop_key's raw keys (termios)",
-    "rosx/launch/monitor.py": "roslaunch stops each node's process group (killpg, SIGKILL)",
-    "rosx/launch/zygote.py": "roslaunch's fork server for Python nodes (fork, setsid, SIGCHLD)",
+    "rosx/launch/run/monitor.py": "roslaunch stops each node's process group (killpg, SIGKILL)",
+    "rosx/launch/run/zygote.py": "roslaunch's fork server for Python nodes (fork, setsid, SIGCHLD)",
     "rosx/node/slices.py": "short time slices and hand-offs (uname, sched_getscheduler, sched_yield)",
     "rosx/transport/descriptors.py": "the descriptor limit its servers keep a reserve under (resource)",
 }

@@ -3,7 +3,7 @@
 Options, ``-h`` and usage errors are roslaunch's (optparse, exit status 2). The printing
 options (``--nodes``, ``--args NODE``, ``--find-node NODE``, ``--files``, ``--dump-params``,
 ``--ros-args``) load the files and print (`rosx.launch.printing`); otherwise the files are
-loaded, then run (`rosx.launch.runner`): the core when no master answers, the parameters, every
+loaded, then run (`rosx.launch.run.runner`): the core when no master answers, the parameters, every
 node as its own process, until Ctrl-C. ``--core`` runs the core alone, as ``roscore`` does.
 
 A launch file with a mistake starts nothing: the error names its file, line and tag, on one
@@ -288,7 +288,8 @@ def _print_option(
 ) -> int:
     """The printing options: load the files as roslaunch loads them for it, and print."""
     from rosx.launch import errors, loader, printing  # noqa: PLC0415
-    from rosx.launch.runner import provided_program  # noqa: PLC0415
+    from rosx.launch.run.command import run_command  # noqa: PLC0415
+    from rosx.launch.run.runner import provided_program  # noqa: PLC0415
 
     try:
         plan = loader.load_launch(
@@ -297,6 +298,7 @@ def _print_option(
             env.environ,
             index,
             with_core=not opts["dump_params"],
+            run=run_command,
             args_only=opts["ros_args"] and not (opts["node_args"] or opts["find_node"]),
             argv=argv,
         )
@@ -354,15 +356,16 @@ def _launch(
     port: int | None,
     index: PackageIndex,
 ) -> int:
-    from rosx.launch.console import LaunchConsole  # noqa: PLC0415
     from rosx.launch.errors import LaunchError  # noqa: PLC0415
     from rosx.launch.loader import load_launch  # noqa: PLC0415
-    from rosx.launch.runner import LaunchFailedError, LaunchRun, LaunchSettings  # noqa: PLC0415
+    from rosx.launch.run.command import run_command  # noqa: PLC0415
+    from rosx.launch.run.console import LaunchConsole  # noqa: PLC0415
+    from rosx.launch.run.runner import LaunchFailedError, LaunchRun, LaunchSettings  # noqa: PLC0415
     from rosx_commands.invocation import script_command  # noqa: PLC0415
     from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
 
     try:
-        plan = load_launch(files, cli_args, env.environ, index, argv=argv)
+        plan = load_launch(files, cli_args, env.environ, index, argv=argv, run=run_command)
     except LaunchError as error:
         raise _rlexception(str(error)) from None
     settings = LaunchSettings(

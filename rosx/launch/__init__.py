@@ -1,8 +1,10 @@
-"""roslaunch's launch files as a plan: parse, resolve, print (layer 7b, "launch").
+"""roslaunch's launch files as a plan: parse, resolve, print; and, in `rosx.launch.run`, run.
 
-Pure: nothing here opens a socket or starts a node. The runner (``rosx roslaunch``) builds a
-`model.LaunchPlan` with `load_launch` and then runs it; the printing options are functions of a
-plan.
+The plan is pure: no module of it starts a process, opens a socket, runs a thread, waits in
+``select`` or handles a signal (two import contracts in pyproject.toml hold it, and
+``tests/launch/test_plan_is_pure.py`` that they name every module of it). ``rosx roslaunch``
+builds a `model.LaunchPlan` with `load_launch`, then `rosx.launch.run.runner.LaunchRun` runs it;
+the printing options are functions of a plan.
 
 Modules:
 
@@ -10,7 +12,7 @@ Modules:
 * `errors`: `LaunchError` (file, line, tag, message; one-line ``str()``).
 * `loader`: `load_launch` (XML → plan), `resolve_launch_arguments` (``PKG FILE`` / paths,
   ``name:=value``), `roscore_params`; built on `xmldoc` (XML with line numbers), `context`
-  (the scope rules), `substitution` and `evaluate` (substitution args, ``$(eval)``) and
+  (the scope rules), `substitution` (substitution args, ``$(eval)`` with `rosx.expression`) and
   `values` (``<param>`` typing, ``textfile``/``binfile``/``command``, rosparam YAML).
 * `printing`: `summary_text` (the SUMMARY block), `nodes_text` (``--nodes``),
   `node_args_text` (``--args NODE``), `files_text` (``--files``), `dump_params_text`
@@ -22,19 +24,21 @@ Typical use::
 
     index = PackageIndex.from_environ(os.environ)
     files, cli_args = resolve_launch_arguments(argv, index)
-    plan = load_launch(files, cli_args, os.environ, index, argv=argv)
+    plan = load_launch(files, cli_args, os.environ, index, argv=argv, run=run_command)
     print(summary_text(plan), end="")
 
 The printing options load as roslaunch does for each: ``with_core=False`` for ``--dump-params``
 (roscore's part is not read), ``args_only=True`` for ``--ros-args``, ``core_params={}`` for all
 (they do not show roscore's parameters).
 
-The one exception to "pure": ``<param command="…">`` runs its command while loading, as
-roslaunch does (`values.run_command`, replaceable through ``load_launch(run=…)``).
+``<param command="…">`` runs its command while the files are read, as roslaunch does: the
+caller passes the runner (`rosx.launch.run.command.run_command`) as ``load_launch(run=…)``;
+without one, such a parameter is refused.
 
-This layer imports `rosx.names`, `rosx.msg` (rosparam's YAML rules), `rosx.packages` (the
-package index, for ``$(find)``), `rosx.workspace` (how ``rosrun`` finds executables) and, for
-roscore's parameters, `rosx.core.params`' constants; nothing above.
+The plan imports `rosx.names`, `rosx.msg` (rosparam's YAML rules), `rosx.packages` (the package
+index, for ``$(find)``), `rosx.workspace` (how ``rosrun`` finds executables), `rosx.expression`,
+`rosx.master.defaults` and, for roscore's parameters, `rosx.core.params`' constants. The runner
+adds the core, the master client, the client's script runner and the transport.
 """
 
 from __future__ import annotations

@@ -22,7 +22,6 @@ from rosx.launch import substitution
 from rosx.launch.errors import LaunchError
 from rosx.launch.model import LaunchPlan, MasterSettings
 from rosx.launch.reader import AbortError, Reader
-from rosx.launch.values import run_command
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping, Sequence
@@ -140,7 +139,8 @@ def load_launch(
             printing options, which do not show them, pass ``{}`` and skip importing the core.
         args_only: Read ``<arg>`` tags only (``--ros-args``).
         anonymous: Makes ``$(anon id)`` names (default: rosgraph's ``anonymous_name``).
-        run: Runs ``<param command=…>`` commands (default: a subprocess).
+        run: Runs ``<param command=…>`` commands (`rosx.launch.run.command.run_command`
+            for a real launch); None: a file with one is refused, as the plan runs nothing.
         argv: The command line, searched for ``__ns:=`` (the namespace of everything).
 
     Raises:
@@ -157,7 +157,7 @@ def load_launch(
     world = substitution.World(environ, package_index, anonymous or anonymous_name)
     plan = LaunchPlan()
     plan.master = MasterSettings(environ.get("ROS_MASTER_URI") or plan.master.uri)
-    reader = Reader(plan, world, run or run_command, args_only)
+    reader = Reader(plan, world, run, args_only)
     if with_core:
         reader.add_core(roscore_params() if core_params is None else core_params)
     try:

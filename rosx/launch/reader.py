@@ -49,7 +49,11 @@ class Reader:
     """Reads launch files into one plan (roslaunch's ``XmlLoader`` + ``ROSLaunchConfig``)."""
 
     def __init__(
-        self, plan: LaunchPlan, world: substitution.World, run: CommandRunner, args_only: bool
+        self,
+        plan: LaunchPlan,
+        world: substitution.World,
+        run: CommandRunner | None,
+        args_only: bool,
     ) -> None:
         self.plan = plan
         self.world = world

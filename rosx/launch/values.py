@@ -83,8 +83,9 @@ def binary_value(path: str) -> bytes:
         raise ValueConversionError(f"cannot read binfile [{path}]: {_reason(error)}") from None
 
 
-def command_value(name: str, command: str, type_: str, run: CommandRunner) -> Any:
-    """``command``: the standard output of the command line, converted to ``type_``."""
+def command_value(name: str, command: str, type_: str, run: CommandRunner | None) -> Any:
+    """``command``: the standard output of the command line (run by ``run``), converted to
+    ``type_``; without ``run`` (a plan read for a look only) the parameter is refused."""
     import shlex  # noqa: PLC0415
 
     try:
@@ -93,6 +94,10 @@ def command_value(name: str, command: str, type_: str, run: CommandRunner) -> An
         raise ValueConversionError(f"Cannot load command parameter [{name}]: {error}") from None
     if not argv:
         raise ValueConversionError(f"Cannot load command parameter [{name}]: the command is empty")
+    if run is None:
+        raise ValueConversionError(
+            f"Cannot load command parameter [{name}]: commands are not run here [{argv}]"
+        )
     try:
         code, output = run(argv)
     except FileNotFoundError:
@@ -108,14 +113,6 @@ def command_value(name: str, command: str, type_: str, run: CommandRunner) -> An
             f"Cannot load command parameter [{name}]: command [{argv}] returned with code [{code}]"
         )
     return convert_value(output, type_)
-
-
-def run_command(argv: list[str]) -> tuple[int, str]:
-    """Run ``argv`` to its end (for ``<param command=…>``); its exit code and stdout."""
-    import subprocess  # noqa: PLC0415
-
-    done = subprocess.run(argv, stdout=subprocess.PIPE, check=False)
-    return done.returncode, done.stdout.decode("utf-8", errors="replace")
 
 
 def load_yaml(text: str, *, rosparam: bool = True) -> Any:
@@ -178,6 +175,5 @@ __all__ = [
     "convert_value",
     "flatten",
     "load_yaml",
-    "run_command",
     "text_value",
 ]

@@ -187,6 +187,7 @@ print(json.dumps(head + "\\n\\nNODES\\n" + rest.split("\\n\\nNODES\\n", 1)[1]))
 @pytest.mark.parametrize("name", VALID)
 def test_summary_as_roslaunch(name: str) -> None:
     from rosx.launch import load_launch, summary_text
+    from rosx.launch.run.command import run_command
     from rosx.packages.index import PackageIndex
 
     path = str(CORPUS / "valid" / name)
@@ -195,7 +196,7 @@ def test_summary_as_roslaunch(name: str) -> None:
     theirs = ros1_python(
         script, ROS_PACKAGE_PATH=env["ROS_PACKAGE_PATH"], CORPUS_VAR="corpus-value"
     )
-    plan = load_launch([path], {}, env, PackageIndex.from_environ(env))
+    plan = load_launch([path], {}, env, PackageIndex.from_environ(env), run=run_command)
     mine = summary_text(plan)
     # roscore's /rosdistro and /rosversion come from `rosversion` in ROS 1, from rosx's core here.
     core = re.compile(r"^ \* /ros(distro|version): .*\n", re.M)

@@ -9,6 +9,7 @@ from typing import Any
 import pytest
 
 from rosx.launch import LaunchPlan, load_launch
+from rosx.launch.run.command import run_command
 from rosx.packages.index import PackageIndex
 
 PACKAGE_XML = """<?xml version="1.0"?>
@@ -54,6 +55,7 @@ def load(write: Write, index: PackageIndex) -> Load:
         path = write("main.launch", text)
         options.setdefault("anonymous", lambda name: f"{name}_ANON")
         options.setdefault("with_core", False)
+        options.setdefault("run", run_command)
         return load_launch(
             [str(path)], cli_args or {}, environ or {"CORPUS": "c"}, index, **options
         )

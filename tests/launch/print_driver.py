@@ -22,6 +22,7 @@ from rosx.launch import (
     resolve_launch_arguments,
     ros_args_text,
 )
+from rosx.launch.run.command import run_command
 from rosx.packages.index import PackageIndex
 
 
@@ -40,6 +41,7 @@ def main(argv: list[str], environ: Mapping[str, str]) -> tuple[int, str, str]:
             environ,
             index,
             with_core=option != "--dump-params",
+            run=run_command,
             core_params={},
             args_only=option == "--ros-args",
             argv=rest,

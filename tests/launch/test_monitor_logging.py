@@ -10,9 +10,9 @@ from pathlib import Path
 
 import pytest
 
-from rosx.launch.console import LaunchConsole
-from rosx.launch.monitor import LocalProcess, ProcessMonitor
-from rosx.launch.zygote import ForkedProcess, ZygoteClient
+from rosx.launch.run.console import LaunchConsole
+from rosx.launch.run.monitor import LocalProcess, ProcessMonitor
+from rosx.launch.run.zygote import ForkedProcess, ZygoteClient
 from tests.support.procs import wait_for
 
 Streams = tuple[io.StringIO, io.StringIO, ProcessMonitor]

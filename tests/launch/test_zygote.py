@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from rosx.launch.zygote import ZygoteClient, ZygoteError
+from rosx.launch.run.zygote import ZygoteClient, ZygoteError
 from tests.support.procs import wait_for
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="the helper forks: POSIX only")
@@ -72,7 +72,7 @@ def test_a_helper_started_without_stdout_gives_its_nodes_their_logs(tmp_path: Pa
     launcher = (
         "import os, sys, time\n"
         "os.close(1)\n"
-        "from rosx.launch.zygote import ZygoteClient\n"
+        "from rosx.launch.run.zygote import ZygoteClient\n"
         "client = ZygoteClient(dict(os.environ), on_exit=lambda: None)\n"
         "assert client.wait_ready(60)\n"
         f"pid = client.start({str(script)!r}, [], dict(os.environ), {str(tmp_path)!r},\n"

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import pytest
 
-from rosx.launch.runner import provided_program
+from rosx.launch.run.runner import provided_program
 from rosx.packages import crawl
 from rosx.workspace import programs
 from rosx.workspace.programs import (

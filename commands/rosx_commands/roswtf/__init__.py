@@ -65,16 +65,21 @@ def _launch_rules(files: list[str], env: Environment, findings: Findings) -> str
     """roswtf's static checks of launch files; the text of a file that cannot be loaded."""
     from rosx.launch.errors import LaunchError  # noqa: PLC0415
     from rosx.launch.loader import load_launch  # noqa: PLC0415
+    from rosx.launch.run.command import run_command  # noqa: PLC0415
     from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
     from rosx.workspace.executables import find_executables  # noqa: PLC0415
 
     index = PackageIndex.from_environ(env.environ)
     for file in files:
         try:
-            load_launch([file], environ=env.environ, package_index=index, core_params={})
+            load_launch(
+                [file], environ=env.environ, package_index=index, core_params={}, run=run_command
+            )
         except LaunchError as error:
             return f"Unable to load roslaunch file [{file}]: {error}"
-    plan = load_launch(files, environ=env.environ, package_index=index, core_params={})
+    plan = load_launch(
+        files, environ=env.environ, package_index=index, core_params={}, run=run_command
+    )
     missing_packages: list[str] = []
     missing_nodes: list[str] = []
     for node in plan.nodes:

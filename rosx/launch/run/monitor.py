@@ -6,7 +6,8 @@ environment, working folder and output: the terminal (``output="screen"``) or
 in its own session and process group, so the terminal's Ctrl-C reaches only the launcher, which
 then stops every node itself.
 
-`ProcessMonitor` owns them. Its rules are ROS 1's (``roslaunch.pmon``, ``nodeprocess``):
+`ProcessMonitor` owns them. Its rules are ROS 1's (``roslaunch.pmon``, ``nodeprocess``); what
+follows an exit is decided by the table of `rosx.launch.run.policy`, this module does it:
 
 * a process that exits is reported once: ``[NAME] process has finished cleanly`` (bold) or
   ``[NAME] process has died [pid P, exit code C, cmd …].`` (red), each with its log file line;
@@ -42,6 +43,15 @@ import sys
 import time
 from typing import TYPE_CHECKING
 
+from rosx.launch.run.policy import (
+    Action,
+    Ending,
+    launch_ends,
+    next_wake,
+    on_exit,
+    report_style,
+    respawn_due,
+)
 from rosx.signals import handling
 
 if TYPE_CHECKING:
@@ -49,7 +59,7 @@ if TYPE_CHECKING:
     from pathlib import Path
     from typing import IO
 
-    from rosx.launch.console import LaunchConsole
+    from rosx.launch.run.console import LaunchConsole
 
 #: ROS 1's defaults (``roslaunch.nodeprocess``), in seconds.
 DEFAULT_SIGINT_TIMEOUT = 15.0
@@ -355,18 +365,27 @@ class ProcessMonitor:
         self._stop_requested = True
 
     def spin(self) -> None:
-        """Watch the processes until the launch ends (see the module's rules)."""
+        """Watch the processes until the launch ends (the rules: `rosx.launch.run.policy`)."""
         while not self._stop_requested:
             ended = self._check_processes()
-            if self._stop_requested:
-                break
-            if self.core_ended is not None and self.core_ended():
-                break
-            if ended and not self.procs and not self._respawns and self.core_ended is None:
+            core_started = self.core_ended is not None
+            ending = launch_ends(
+                stop_requested=self._stop_requested,
+                core_started=core_started,
+                core_ended=core_started and not self._stop_requested and self._core_ended(),
+                ended_for_good=ended,
+                running=len(self.procs),
+                respawning=len(self._respawns),
+            )
+            if ending is Ending.ALL_DIED:
                 self.console.line("all processes on machine have died, roslaunch will exit")
+            if ending is not None:
                 break
             self._restart_due()
             self._wakeup.wait(self._next_wake())
+
+    def _core_ended(self) -> bool:
+        return self.core_ended is not None and self.core_ended()
 
     @property
     def stop_requested(self) -> bool:
@@ -381,25 +400,28 @@ class ProcessMonitor:
             if process in self._respawns or process.poll():
                 continue
             description = process.exit_description()
-            if process.required:
-                rule = "=" * 80
-                self.console.error(
-                    f"{rule}REQUIRED process [{process.name}] has died!\n{description}\n"
-                    f"Initiating shutdown!\n{rule}"
-                )
-                self._stop_requested = True
-                return True
-            if process.exit_code:
-                self.console.error(f"[{process.name}] {description}")
-            else:
-                self.console.bold(f"[{process.name}] {description}")
-            if process.respawn:
-                self._respawns.append(process)
-            else:
-                process.reap()
-                self.procs.remove(process)
-                self.dead.append(process)
-                ended = True
+            for action in on_exit(required=process.required, respawn=process.respawn):
+                if action is Action.REPORT_REQUIRED:
+                    rule = "=" * 80
+                    self.console.error(
+                        f"{rule}REQUIRED process [{process.name}] has died!\n{description}\n"
+                        f"Initiating shutdown!\n{rule}"
+                    )
+                elif action is Action.STOP_LAUNCH:
+                    self._stop_requested = True
+                    return True
+                elif action is Action.REPORT:
+                    if report_style(process.exit_code) == "error":
+                        self.console.error(f"[{process.name}] {description}")
+                    else:
+                        self.console.bold(f"[{process.name}] {description}")
+                elif action is Action.RESPAWN:
+                    self._respawns.append(process)
+                else:  # Action.FORGET
+                    process.reap()
+                    self.procs.remove(process)
+                    self.dead.append(process)
+                    ended = True
         return ended
 
     def _restart_due(self) -> None:
@@ -408,7 +430,7 @@ class ProcessMonitor:
             if self._stop_requested:
                 return
             died = process.time_of_death if process.time_of_death is not None else now
-            if died + process.respawn_delay > now:
+            if not respawn_due(died, process.respawn_delay, now):
                 continue
             self._respawns.remove(process)
             self.console.line(f"[{process.name}] restarting process")
@@ -425,11 +447,11 @@ class ProcessMonitor:
 
     def _next_wake(self) -> float:
         now = time.monotonic()
-        wake = _IDLE
-        for process in self._respawns:
-            died = process.time_of_death if process.time_of_death is not None else now
-            wake = min(wake, died + process.respawn_delay - now)
-        return max(wake, 0.0)
+        deaths = [
+            (now if p.time_of_death is None else p.time_of_death, p.respawn_delay)
+            for p in self._respawns
+        ]
+        return next_wake(deaths, now, _IDLE)
 
     def stop_all(self) -> None:
         """Stop every remaining process, newest first (see the module); never raises."""

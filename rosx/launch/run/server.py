@@ -18,7 +18,7 @@ from rosx.transport.loop_thread import ServerThread
 if TYPE_CHECKING:
     from collections.abc import Mapping
 
-    from rosx.launch.monitor import LocalProcess, ProcessMonitor
+    from rosx.launch.run.monitor import LocalProcess, ProcessMonitor
 
 
 def _info(process: LocalProcess, alive: bool) -> dict[str, Any]:

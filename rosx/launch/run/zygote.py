@@ -3,7 +3,7 @@
 Most of a Python node's start-up is Python's: the interpreter, then ``import rospy`` and the
 message types (about 0.2 s of CPU each). A launch of five nodes on two cores spends a second on
 it. The launcher therefore starts, next to itself and at once, one helper process (``python -m
-rosx.launch.zygote FD``) that imports all of that and waits; each Python node is then a
+rosx.launch.run.zygote FD``) that imports all of that and waits; each Python node is then a
 ``fork`` of it that runs the node's script (`rosx.client.script.run_script`), in a session of
 its own, with the node's environment, working folder, arguments and output. It is still one
 process per node, with its own pid, signals and exit status; only the cost of loading Python is
@@ -26,7 +26,7 @@ talks with the launcher over a socket (`ZygoteClient`), one JSON document a line
 When the launcher goes away (the socket closes) the helper ends; nodes still running are the
 launcher's to stop, as it does. Scripts whose environment changes what the helper loaded
 (``ROS_PACKAGE_PATH``, ``PYTHONPATH``) or that have a ``launch-prefix`` are started the usual
-way instead (`rosx.launch.monitor.LocalProcess`).
+way instead (`rosx.launch.run.monitor.LocalProcess`).
 """
 
 from __future__ import annotations
@@ -41,7 +41,7 @@ import sys
 import threading
 from typing import TYPE_CHECKING, Any
 
-from rosx.launch.monitor import LocalProcess
+from rosx.launch.run.monitor import LocalProcess
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping, Sequence
@@ -234,7 +234,7 @@ class ZygoteClient:
         ours, theirs = socket.socketpair()
         self._socket = ours
         self.process = subprocess.Popen(
-            [sys.executable, "-m", "rosx.launch.zygote", str(theirs.fileno())],
+            [sys.executable, "-m", "rosx.launch.run.zygote", str(theirs.fileno())],
             env=self.environ,
             pass_fds=(theirs.fileno(),),
             start_new_session=True,

@@ -12,7 +12,7 @@
    ``setting /run_id to …``, ``process[rosout-1]…``, ``started core service [/rosout]``);
 4. ``<rosparam command="delete|dump">``, then the ``clear_params`` namespaces are cleared, then
    every parameter is set, before any node starts;
-5. every node on this machine as its own process (`rosx.launch.monitor`), numbered after the
+5. every node on this machine as its own process (`rosx.launch.run.monitor`), numbered after the
    core's (``process[ns/name-N]: started with pid [PID]``);
 6. the processes are watched until Ctrl-C, SIGTERM, a required node's exit or the end of every
    node; then they are stopped newest first, the core last, and ``done`` is printed.
@@ -50,7 +50,7 @@ from typing import TYPE_CHECKING, Any
 
 from rosx.launch.errors import LaunchError
 from rosx.launch.model import CORE_SOURCE
-from rosx.launch.monitor import (
+from rosx.launch.run.monitor import (
     DEFAULT_SIGINT_TIMEOUT,
     DEFAULT_SIGTERM_TIMEOUT,
     LocalProcess,
@@ -67,9 +67,9 @@ from rosx.workspace.programs import bundled_program, overlays
 if TYPE_CHECKING:
     from collections.abc import Mapping, Sequence
 
-    from rosx.launch.console import LaunchConsole
     from rosx.launch.model import LaunchPlan, Node
-    from rosx.launch.zygote import ZygoteClient
+    from rosx.launch.run.console import LaunchConsole
+    from rosx.launch.run.zygote import ZygoteClient
     from rosx.packages.index import PackageIndex
 
 #: The environment variable every launched node gets (see the module docstring).
@@ -219,7 +219,8 @@ class LaunchRun:
         self._counter = 0
         self._master = MasterClient(self.uri, _CALLER, timeout=_CONNECT_TIMEOUT)
         #: Python nodes are forks of a process that has loaded rosx's rospy (see
-        #: `rosx.launch.zygote`); False starts each as a new Python process (Windows cannot fork).
+        #: `rosx.launch.run.zygote`); False starts each as a new Python process (Windows cannot
+        #: fork).
         self.fork_python_nodes = sys.platform != "win32"
         self.zygote: ZygoteClient | None = None
 
@@ -239,7 +240,7 @@ class LaunchRun:
         """
         self._check_plan()
         if self.plan.nodes and self.fork_python_nodes:
-            from rosx.launch.zygote import ZygoteClient  # noqa: PLC0415
+            from rosx.launch.run.zygote import ZygoteClient  # noqa: PLC0415
 
             # Started first, so that it loads Python's side of the nodes while the launcher
             # starts the core.
@@ -269,7 +270,7 @@ class LaunchRun:
 
     def _run(self) -> int:
         from rosx.launch.printing import summary_text  # noqa: PLC0415
-        from rosx.launch.server import LaunchServer  # noqa: PLC0415
+        from rosx.launch.run.server import LaunchServer  # noqa: PLC0415
 
         running = self._master.is_online()
         if self.settings.wait_for_master and not running:
@@ -588,7 +589,7 @@ class LaunchRun:
         }
         cwd = self._cwd(node, executable)
         if self.zygote is not None and argv[: len(self.script_command)] == self.script_command:
-            from rosx.launch.zygote import ForkedProcess  # noqa: PLC0415
+            from rosx.launch.run.zygote import ForkedProcess  # noqa: PLC0415
 
             return ForkedProcess(
                 name,
