@@ -204,3 +204,41 @@ def test_turtlesim_view_draws_the_running_turtlesim(
         assert "/turtlesim" in rows[0].split(), rows
         fits_and_shows_how_to_quit(term, size[0])
         quits_on_ctrl_c(term)
+
+
+def teleop_pane(rows: list[str]) -> list[str]:
+    """The teleop pane as drawn: its title row, its three lines and its bottom border, each
+    without the box's corners and sides (stripped)."""
+    top = next(i for i, row in enumerate(rows) if "Teleop → /turtle1/cmd_vel" in row)
+    left = min(rows[top].find(corner) for corner in "╭┏" if corner in rows[top])
+    box = [row[left:].rstrip() for row in rows[top : top + 5]]
+    return [line.strip("╭╮┏┓╰╯┗┛│┃─━ ") for line in box]
+
+
+def test_rosx_sim_at_80x24_says_in_words_whether_the_arrows_drive(tmp_path: Path) -> None:
+    """At 80x24 the side column is at its narrowest: every line of the teleop pane is whole,
+    and after Tab the pane says the arrows no longer drive the turtle, and how to get back."""
+    with Tmux(tmp_path, (80, 24), ["sim", "--port", str(free_port())]) as term:
+        rows = term.wait_for("arrow keys drive the turtle", STARTUP)
+        assert teleop_pane(rows) == [
+            "Teleop → /turtle1/cmd_vel",
+            "↑ ↓  forward / back   linear.x ±2.0",
+            "← →  turn left/right  angular.z ±2.0",
+            "nothing sent yet",
+            "arrow keys drive the turtle",
+        ]
+        term.keys("Up")
+        term.wait_for("#1 linear.x=2.0 angular.z=0.0")
+        term.keys("Tab")
+        rows = term.wait_for("Arrow keys do not drive the turtle.")
+        assert teleop_pane(rows) == [
+            "Teleop → /turtle1/cmd_vel",
+            "Arrow keys do not drive the turtle.",
+            "To drive: Tab until this is lit.",
+            "#1 linear.x=2.0 angular.z=0.0",
+            "",
+        ]
+        term.keys("BTab")
+        rows = term.wait_for("arrow keys drive the turtle")
+        assert teleop_pane(rows)[3] == "#1 linear.x=2.0 angular.z=0.0"
+        fits_and_shows_how_to_quit(term, 80)

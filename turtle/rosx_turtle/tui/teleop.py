@@ -5,7 +5,13 @@ Down set ``linear.x`` to ±``scale_linear``, Left and Right set ``angular.z`` to
 (2.0 by default), every other field 0. Capital A, B, C and D do the same, as they do in
 turtle_teleop_key (they end the arrows' escape sequences). The pad does not publish itself: it
 calls ``drive(linear, angular)``, which the host wires to its ``/teleop_turtle`` node, and posts
-`TeleopPad.Sent` for whoever wants to know. Its border says whether it owns the keys.
+`TeleopPad.Sent` for whoever wants to know.
+
+Whether the arrow keys drive the turtle now is said in full words, in the pane itself: its lit
+border and "arrow keys drive the turtle" while it has the focus; otherwise (Tab moved the keys
+to a table, where the arrows move a cursor) that they do not, and how to get them back. Every
+line fits the narrowest side column whole (`rosx_turtle.view.layout.SIDE_MIN`), so nothing is
+cut mid-word on an 80x24 terminal.
 """
 
 from __future__ import annotations
@@ -22,7 +28,12 @@ if TYPE_CHECKING:
     from collections.abc import Callable
 
 _FOCUSED = "arrow keys drive the turtle"
-_BLURRED = "press Tab until this is lit to drive"
+#: The first lines while another pane has the keys (each at most 36 columns: the narrowest
+#: side column, less the border and the padding).
+_NOT_DRIVING = (
+    "Arrow keys do not drive the turtle.",
+    "To drive: Tab until this is lit.",
+)
 
 
 class TeleopPad(Static, can_focus=True):
@@ -77,17 +88,24 @@ class TeleopPad(Static, can_focus=True):
         self.scale_angular = scale_angular
         self.sent = 0
         self.last: tuple[float, float] | None = None
-        self.border_title = f"Teleop {node} → {topic}"
-        self.border_subtitle = _BLURRED
+        #: Whether the arrow keys drive the turtle now (the pane has the focus).
+        self.driving = False
+        self.border_title = f"Teleop → {topic}"
+        self.tooltip = f"{node} publishes one Twist on {topic} per arrow key"
+        self.border_subtitle = ""
 
     def on_mount(self) -> None:
         self._describe()
 
     def on_focus(self) -> None:
+        self.driving = True
         self.border_subtitle = _FOCUSED
+        self._describe()
 
     def on_blur(self) -> None:
-        self.border_subtitle = _BLURRED
+        self.driving = False
+        self.border_subtitle = ""
+        self._describe()
 
     def action_drive(self, byte: str) -> None:
         """Send the command turtle_teleop_key sends for key byte ``byte``."""
@@ -101,10 +119,13 @@ class TeleopPad(Static, can_focus=True):
 
     def _describe(self) -> None:
         # Each line fits the narrowest side column (`rosx_turtle.view.layout.SIDE_MIN`).
-        lines = [
-            f"↑ ↓  forward / back   linear.x ±{self.scale_linear}",
-            f"← →  turn left/right  angular.z ±{self.scale_angular}",
-        ]
+        if self.driving:
+            lines = [
+                f"↑ ↓  forward / back   linear.x ±{self.scale_linear}",
+                f"← →  turn left/right  angular.z ±{self.scale_angular}",
+            ]
+        else:
+            lines = list(_NOT_DRIVING)
         if self.last is None:
             lines.append("nothing sent yet")
         else:
