@@ -169,6 +169,35 @@ class _Names:
         return self._graph
 
 
+#: The tools whose argument names a package, and which of their words it is (rospack's sub-
+#: command comes first).
+_PACKAGE_WORD = {"rospack": 1, "roscd": 0, "rosls": 0, "rosed": 0, "roscp": 0, "rosversion": 0}
+
+
+def after_error(tool: str, args: Sequence[str], env: Environment) -> str | None:
+    """The line that helps after ``tool ARGS…`` failed: the names typed with spaces meant
+    (`spaced_words`), else, for a package that is nowhere, what rosx has instead of it."""
+    line = spaced_words(tool, args, env)
+    if line is not None or tool not in _PACKAGE_WORD:
+        return line
+    words = [a for a in args if not a.startswith("-")]
+    at = _PACKAGE_WORD[tool]
+    if len(words) <= at:
+        return None
+    from rosx.packages.index import PackageIndex  # noqa: PLC0415 - hints only
+
+    package = words[at].partition("/")[0]
+    index = PackageIndex.from_environ(env.environ)
+    if not package or package == "log" or package in known_packages(index):
+        return None
+    return unknown_package_line(
+        [package, *words[at + 1 :]],
+        index,
+        lambda fixed: " ".join([tool, *words[:at], *fixed]),
+        tool,
+    )
+
+
 def spaced_words(tool: str, args: Sequence[str], env: Environment) -> str | None:
     """For ``tool ARGS…`` that failed: the name two or more of the arguments make joined with
     ``_``, if one exists (see the module docstring), as a line naming the command meant."""

@@ -30,10 +30,11 @@ def run_tool(argv: Sequence[str], env: Environment | None = None) -> int:
 
 def _hint(tool: str, args: Sequence[str], env: Environment) -> None:
     """After a tool's error, on a terminal: the command meant, when words typed with spaces
-    for underscores make a name that exists (`rosx_commands.hints.spaced_words`)."""
-    from rosx_commands.hints import spaced_words  # noqa: PLC0415 - only after an error
+    for underscores make a name that exists, or what rosx has instead of a package it lacks
+    (`rosx_commands.hints.after_error`)."""
+    from rosx_commands.hints import after_error  # noqa: PLC0415 - only after an error
 
-    line = spaced_words(tool, args, env)
+    line = after_error(tool, args, env)
     if line is not None:
         env.err(line)
 

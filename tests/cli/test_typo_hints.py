@@ -90,3 +90,22 @@ def test_the_shell_names_catkin_make_for_catkin_make_typed_with_a_space(
     assert lines[said + 1] == "[rosx] Did you mean catkin_make? (catkin_make -j4)"
     other = user.run("no_such_program here\necho status=$?", shell, interactive=True)
     assert other.stdout.splitlines()[-1] == "status=127" and "[rosx]" not in other.stderr
+
+
+@pytest.mark.parametrize(
+    ("argv", "error", "hint"),
+    [
+        (["rospack", "find", "gazebo_ros"], "[rospack] Error: package 'gazebo_ros' not found",
+         "[rosx] gazebo_ros is not part of rosx; instead: "
+         "rosx roslaunch turtlebot3_stage turtlebot3_world.launch"),
+        (["roscd", "--where", "move_base/launch"], "roscd: No such package/stack 'move_base/launch'",
+         "[rosx] move_base is not part of rosx ('rosx --help' lists the packages it provides)"),
+        (["rospack", "find", "turtlesm"], "[rospack] Error: package 'turtlesm' not found",
+         "[rospack] Did you mean turtlesim? (rospack find turtlesim)"),
+    ],
+)  # fmt: skip
+def test_a_package_rosx_lacks_is_said_to_be_lacking(
+    master: str, argv: list[str], error: str, hint: str
+) -> None:
+    status, lines = on_a_terminal(argv, master)
+    assert (status, lines) == (1, [error, hint])
