@@ -304,7 +304,12 @@ def _print_option(
         )
         if opts["node_args"]:
             text = printing.node_args_text(
-                plan, opts["node_args"], files, env.environ, index, provided_program
+                plan,
+                opts["node_args"],
+                files,
+                env.environ,
+                index,
+                lambda package, kind: provided_program(package, kind, index),
             )
         elif opts["find_node"]:
             text = printing.find_node_text(plan, opts["find_node"], files, env.environ)
