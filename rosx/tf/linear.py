@@ -8,7 +8,7 @@ fixed-frame lookup uses).
 
 from __future__ import annotations
 
-from math import asin, atan2, cos, pi, sin, sqrt
+from math import asin, atan2, cos, inf, pi, sin, sqrt
 
 Matrix = tuple[tuple[float, float, float], tuple[float, float, float], tuple[float, float, float]]
 #: (tx, ty, tz, qx, qy, qz, qw)
@@ -18,7 +18,7 @@ Transform = tuple[float, float, float, float, float, float, float]
 def matrix(qx: float, qy: float, qz: float, qw: float) -> Matrix:
     """``Matrix3x3::setRotation``: the rotation matrix of a quaternion (rows)."""
     d = qx * qx + qy * qy + qz * qz + qw * qw
-    s = 2.0 / d
+    s = 2.0 / d if d else inf  # C++ divides by zero into inf, and NaNs follow
     xs, ys, zs = qx * s, qy * s, qz * s
     wx, wy, wz = qw * xs, qw * ys, qw * zs
     xx, xy, xz = qx * xs, qx * ys, qx * zs
