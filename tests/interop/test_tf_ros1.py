@@ -87,7 +87,12 @@ def first_block(command: list[str], env: dict[str, str], timeout: float = 30.0) 
     lines: queue.Queue[str] = queue.Queue()
     assert process.stdout is not None
     stream = process.stdout
-    threading.Thread(target=lambda: [lines.put(line) for line in stream], daemon=True).start()
+
+    def pump() -> None:
+        for line in stream:
+            lines.put(line)
+
+    threading.Thread(target=pump, daemon=True).start()
     block: list[str] = []
     deadline = time.monotonic() + timeout
     try:
