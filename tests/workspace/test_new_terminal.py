@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import os
 import select
+import shlex
+import shutil
 import signal
 import subprocess
 from pathlib import Path
@@ -178,3 +180,29 @@ def test_rosx_sim_says_once_how_to_get_the_names(user: NewTerminal) -> None:
     ready.run("rosx shell-init --install bash")
     names = ready.run('eval "$(rosx shell-init bash)"; echo "$PATH"').stdout.strip()
     assert "shell-init" not in _sim_hint(ready, PATH=names)  # the names are there already
+
+
+def test_the_sheets_typos_in_a_new_terminal(user: NewTerminal) -> None:
+    """In a terminal (a pty) set up by ``shell-init --install``: ROS 1's errors, then the
+    command meant, or what rosx has instead of a package it lacks."""
+    if shutil.which("script") is None:
+        pytest.skip("util-linux's script is not installed")
+    user.run("rosx shell-init --install bash")
+    typed = [
+        "rosrun turtlesim turtle teleop key",
+        "rosrun gazebo_ros gzserver",
+        "rosmsg show geometry msgs/Twist",
+        "catkin make",
+    ]
+    terminal = f"bash -i -c {shlex.quote('; '.join(typed))}"  # a terminal's shell, on a pty
+    done = user.run(f"script -qec {shlex.quote(terminal)} /dev/null")
+    lines = [line.rstrip("\r") for line in done.stdout.splitlines()]
+    for meant in (
+        "[rosrun] Did you mean turtle_teleop_key? (rosrun turtlesim turtle_teleop_key)",
+        "[rosx] gazebo_ros is not part of rosx; instead: "
+        "rosx roslaunch turtlebot3_stage turtlebot3_world.launch",
+        "[rosmsg] Did you mean geometry_msgs/Twist? (rosmsg show geometry_msgs/Twist)",
+        "[rosx] Did you mean catkin_make? (catkin_make)",
+    ):
+        assert meant in lines, lines
+    assert "[rospack] Error: package 'gazebo_ros' not found" in lines
