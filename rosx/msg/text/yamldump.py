@@ -183,7 +183,11 @@ class _Emitter:
         split = not key
         if isinstance(value, bytes | bytearray):
             writer.indicator("!!binary", need_space=True)
-            writer.literal(binascii.b2a_base64(value, newline=False).decode("ascii"))
+            encoded = binascii.b2a_base64(value, newline=False).decode("ascii")
+            if encoded:
+                writer.literal(encoded)
+            else:  # PyYAML writes no empty block scalar
+                writer.double_quoted(encoded, split)
             return
         text = _scalar_text(value)
         if not isinstance(value, str):

@@ -29,6 +29,17 @@ class YAMLLoadError(ValueError):
     """Text that is not valid YAML; ``str()`` is PyYAML's description with its marks."""
 
 
+#: The deepest a document may nest collections. PyYAML's scanner and ruamel's take a time
+#: that grows with the square of the depth (5 000 ``[`` take ruamel half a minute), and
+#: PyYAML's composer fails with a RecursionError by 800; real documents nest a few levels.
+MAX_DEPTH = 200
+#: The most values a document may hold once its aliases are expanded. An alias shares its
+#: anchor's value, so a few lines of nested aliases (``b: [*a, *a, …]``, ``c: [*b, *b, …]``)
+#: make a value of billions, which every consumer (the master's XML-RPC, a message, a dump)
+#: walks in full. PyYAML and rosparam set no bound.
+MAX_EXPANDED = 1_000_000
+
+
 #: PyYAML's implicit resolvers (YAML 1.1 as PyYAML reads it): tag, pattern, and the first
 #: characters of the scalars each is tried on ("" for the empty scalar).
 _RESOLVERS = (
@@ -78,7 +89,7 @@ def _loader_factory() -> Any:
     from ruamel.yaml.constructor import SafeConstructor  # noqa: PLC0415
     from ruamel.yaml.events import AliasEvent  # noqa: PLC0415
     from ruamel.yaml.resolver import VersionedResolver  # noqa: PLC0415
-    from ruamel.yaml.scanner import Scanner  # noqa: PLC0415
+    from ruamel.yaml.scanner import Scanner, ScannerError  # noqa: PLC0415
     from ruamel.yaml.tokens import ScalarToken  # noqa: PLC0415
 
     entries: dict[str | None, list[tuple[str, re.Pattern[str]]]] = {}
@@ -114,7 +125,25 @@ def _loader_factory() -> Any:
     )
 
     class PyYAMLScanner(Scanner):
-        """Plain scalars end where PyYAML ends them: in flow context, ``a:{`` is ``a`` + ``:``."""
+        """Plain scalars end where PyYAML ends them: in flow context, ``a:{`` is ``a`` + ``:``.
+        Collections nest at most `MAX_DEPTH` deep."""
+
+        def fetch_flow_collection_start(self, token_class: Any, to_push: str) -> None:
+            self._check_depth(self.flow_level + len(self.indents))
+            super().fetch_flow_collection_start(token_class, to_push)
+
+        def add_indent(self, column: int) -> bool:
+            self._check_depth(self.flow_level + len(self.indents))
+            return bool(super().add_indent(column))
+
+        def _check_depth(self, depth: int) -> None:
+            if depth >= MAX_DEPTH:
+                raise ScannerError(
+                    None,
+                    None,
+                    f"collections nested more than {MAX_DEPTH} deep",
+                    self.reader.get_mark(),
+                )
 
         def scan_plain(self) -> Any:
             reader = self.reader
@@ -151,7 +180,41 @@ def _loader_factory() -> Any:
             return ScalarToken("".join(chunks), True, start_mark, end_mark)
 
     class PyYAMLComposer(Composer):
-        """A reused anchor is an error, not a warning."""
+        """A reused anchor is an error, not a warning; aliases may not make a value its own
+        part, nor expand a document beyond `MAX_EXPANDED` values."""
+
+        def compose_document(self) -> Any:
+            node = super().compose_document()
+            expanded: dict[int, int] = {}
+
+            def size(item: Any, path: set[int]) -> int:
+                known = expanded.get(id(item))
+                if known is not None:
+                    return known
+                if id(item) in path:
+                    raise ComposerError(
+                        None, None, "found an alias inside its own anchor", item.start_mark
+                    )
+                total = 1
+                if isinstance(item.value, list):
+                    path.add(id(item))
+                    for child in item.value:
+                        for part in child if isinstance(child, tuple) else (child,):
+                            total += size(part, path)
+                    path.discard(id(item))
+                if total > MAX_EXPANDED:
+                    raise ComposerError(
+                        None,
+                        None,
+                        f"aliases expand the document beyond {MAX_EXPANDED} values",
+                        item.start_mark,
+                    )
+                expanded[id(item)] = total
+                return total
+
+            if node is not None:
+                size(node, set())
+            return node
 
         def compose_node(self, parent: Any, index: Any) -> Any:
             event = self.parser.peek_event()
@@ -185,6 +248,10 @@ def load(text: str) -> Any:
         return _loader_factory()().load(text)
     except YAMLError as error:
         raise YAMLLoadError(_describe(error, "<unicode string>")) from None
+    except RecursionError:
+        raise YAMLLoadError(_TOO_DEEP) from None
+    except _CONSTRUCTION_ERRORS as error:
+        raise YAMLLoadError(invalid_value(error)) from None
 
 
 def load_all(text: str, *, filename: str | None = None) -> list[Any]:
@@ -196,10 +263,26 @@ def load_all(text: str, *, filename: str | None = None) -> list[Any]:
 
     try:
         return list(_loader_factory()().load_all(text))
+    except RecursionError:
+        raise YAMLLoadError(_TOO_DEEP) from None
+    except _CONSTRUCTION_ERRORS as error:
+        raise YAMLLoadError(invalid_value(error)) from None
     except YAMLError as error:
         if filename is None:
             raise YAMLLoadError(_describe(error, "<unicode string>")) from None
         raise YAMLLoadError(_describe(error, filename, snippets=False)) from None
+
+
+#: Nesting deeper than Python's stack (PyYAML's own recursion fails there too).
+_TOO_DEEP = "the document is nested too deeply"
+#: What a value's constructor raises for a scalar its tag does not fit (``!!int x``, a
+#: timestamp of month 13, ``!!bool 2``): PyYAML lets these escape.
+_CONSTRUCTION_ERRORS = (ValueError, TypeError, OverflowError, LookupError)
+
+
+def invalid_value(error: Exception) -> str:
+    """The text of `YAMLLoadError` for a scalar its tag cannot make a value of."""
+    return f"invalid value: {error}"
 
 
 def split_stream(lines: Iterable[str]) -> Iterator[str]:

@@ -28,7 +28,14 @@ from functools import cache
 from rosx.msg.text.yamldump import dump
 
 # The PyYAML-compatible loader and PyYAML's wording of errors, extended below for rosparam.
-from rosx.msg.text.yamlload import YAMLLoadError, _describe, _loader_factory
+from rosx.msg.text.yamlload import (
+    _CONSTRUCTION_ERRORS,
+    _TOO_DEEP,
+    YAMLLoadError,
+    _describe,
+    _loader_factory,
+    invalid_value,
+)
 from rosx.names.resolution import ns_join
 
 TYPE_CHECKING = False
@@ -61,6 +68,12 @@ def load_value(text: str) -> Any:
         return _params_loader()().load(text)
     except YAMLError as error:
         raise YAMLLoadError(_describe(error, "<unicode string>")) from None
+    except RecursionError:
+        raise YAMLLoadError(_TOO_DEEP) from None
+    except AngleError:
+        raise
+    except _CONSTRUCTION_ERRORS as error:
+        raise YAMLLoadError(invalid_value(error)) from None
 
 
 def load_documents(text: str) -> list[Any]:
@@ -71,6 +84,12 @@ def load_documents(text: str) -> list[Any]:
         return list(_params_loader()().load_all(text))
     except YAMLError as error:
         raise YAMLLoadError(_describe(error, "<unicode string>")) from None
+    except RecursionError:
+        raise YAMLLoadError(_TOO_DEEP) from None
+    except AngleError:
+        raise
+    except _CONSTRUCTION_ERRORS as error:
+        raise YAMLLoadError(invalid_value(error)) from None
 
 
 def dump_value(value: object) -> str:
