@@ -121,11 +121,14 @@ EXAMPLES = {
     # file in ros-visualization/rviz → (classes drawn, classes listed as unsupported)
     "default.rviz": ({"rviz/Grid"}, set()),
     "src/test/rviz_logo.rviz": (
-        {"rviz/Grid", "rviz/TF"},
-        {"rviz/InteractiveMarkers", "rviz/Marker", "rviz/RobotModel"},
+        {"rviz/Grid", "rviz/Marker", "rviz/RobotModel", "rviz/TF"},
+        {"rviz/InteractiveMarkers"},
     ),
-    "src/test/tf_sync_frame.rviz": ({"rviz/TF", "rviz/Grid"}, {"rviz/Axes"}),
-    "src/test/tf_sync_display.rviz": ({"rviz/TF", "rviz/Grid", "rviz/PointCloud2"}, {"rviz/Axes"}),
+    "src/test/tf_sync_frame.rviz": ({"rviz/TF", "rviz/Grid", "rviz/Axes"}, set()),
+    "src/test/tf_sync_display.rviz": (
+        {"rviz/TF", "rviz/Grid", "rviz/Axes", "rviz/PointCloud2"},
+        set(),
+    ),
 }
 
 

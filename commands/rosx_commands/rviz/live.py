@@ -17,6 +17,7 @@ import threading
 import time
 from typing import TYPE_CHECKING, Any
 
+from rosx_commands.rviz.displays.robot_model import RobotModel
 from rosx_commands.toolnode import ToolNode
 
 if TYPE_CHECKING:
@@ -71,12 +72,18 @@ class LiveSource(ToolNode):
         self._started().subscribe("/clock", clock_class, tick)
 
     def sync(self) -> None:
-        """Subscribe the displays that want their topic, unsubscribe the others."""
+        """Subscribe the displays that want their topic, unsubscribe the others; give the
+        robot models their description."""
         manager = self.manager
         if manager is None:
             return
         with manager.lock:
             wanted = {id(display): display for display in manager.displays if display.subscribes}
+            models = [d for d in manager.displays if isinstance(d, RobotModel) and d.enabled]
+        for model in models:
+            text = self._started().params.get(model.parameter, None)
+            manager.receive(model, None if text is None else str(text), self.clock())
+            self.changed()
         with self._lock:
             for key in list(self._subscribers):
                 topic, subscriber = self._subscribers[key]

@@ -155,7 +155,8 @@ class Painter:
             colours = None if colours is None else colours[near]
         cols = np.floor(col).astype(np.intp)
         rows = np.floor(row).astype(np.intp)
-        size = max(1, points.size)
+        size = max(1, points.size, round(points.metres * view.pixels_per_metre))
+        size = min(size, 64)
         if size > 1:
             offsets = np.arange(size) - (size - 1) // 2
             dr, dc = np.meshgrid(offsets, offsets)

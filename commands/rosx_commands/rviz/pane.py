@@ -25,6 +25,7 @@ from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import Horizontal, Vertical, VerticalScroll  # noqa: TID253 - TUI code
 from textual.widgets import Static  # noqa: TID253 - TUI code
 
+from rosx_commands.rviz.image_pane import ImagePane
 from rosx_commands.rviz.panel import DisplaysPanel
 from rosx_commands.rviz.viewport import Placing, Viewport
 from rosx_turtle.tui.feed import Feed
@@ -121,6 +122,7 @@ class RvizPane(Vertical):
             )
             with VerticalScroll(id="side"):
                 yield DisplaysPanel(self.manager, id="displays")
+                yield ImagePane(self.manager, id="image")
         yield Static("", id="status", markup=False)
 
     @property
@@ -186,6 +188,7 @@ class RvizPane(Vertical):
     def on_viewport_drawn(self, message: Viewport.Drawn) -> None:
         self.panel.follow = self.viewport.follow
         self.panel.update_from()
+        self.query_one(ImagePane).update_from()
 
     def on_displays_panel_toggle(self, message: DisplaysPanel.Toggle) -> None:
         self.action_toggle_display(message.index)

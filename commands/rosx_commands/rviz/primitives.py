@@ -20,14 +20,15 @@ RGB = tuple[int, int, int]
 
 @dataclass
 class Points:
-    """``xy`` (``(n, 2)`` metres) drawn ``size`` pixels wide (at least), each in ``colour``
-    or in its row of ``colours`` (``(n, 3)``)."""
+    """``xy`` (``(n, 2)`` metres) drawn ``size`` pixels wide, or ``metres`` wide when that is
+    more, each in ``colour`` or in its row of ``colours`` (``(n, 3)``)."""
 
     xy: Floats
     colour: RGB = (255, 255, 255)
     colours: Colours | None = None
     size: int = 1
     alpha: float = 1.0
+    metres: float = 0.0
 
 
 @dataclass
@@ -47,6 +48,9 @@ class Polygon:
     corners: Floats
     colour: RGB = (255, 255, 255)
     alpha: float = 1.0
+
+    def __post_init__(self) -> None:
+        self.corners = self.corners[:, :2]
 
 
 @dataclass
@@ -80,6 +84,15 @@ class Layer:
     segments: list[Segments] = field(default_factory=list)
     points: list[Points] = field(default_factory=list)
     labels: list[Label] = field(default_factory=list)
+
+    def extend(self, other: Layer) -> Layer:
+        """Add ``other``'s drawing to this one (drawn after it); this layer."""
+        self.images += other.images
+        self.polygons += other.polygons
+        self.segments += other.segments
+        self.points += other.points
+        self.labels += other.labels
+        return self
 
 
 __all__ = ["RGB", "Image", "Label", "Layer", "Points", "Polygon", "Segments"]
