@@ -95,8 +95,11 @@ class Painter:
         self._base_key: object = None
         self._base: Image | None = None
 
-    def paint(self, view: View, layers: list[Layer], background: RGB) -> Picture:
-        """The picture of ``layers`` as ``view`` sees them over ``background``."""
+    def paint(
+        self, view: View, layers: list[Layer], background: RGB, thickness: int = 1
+    ) -> Picture:
+        """The picture of ``layers`` as ``view`` sees them over ``background``; points and
+        lines ``thickness`` times as thick (a larger picture of the same view)."""
         images = [image for layer in layers for image in layer.images]
         key = (view.key, background, tuple((id(image), image.version) for image in images))
         if key != self._base_key or self._base is None:
@@ -108,9 +111,9 @@ class Painter:
             for polygon in layer.polygons:
                 self._polygon(pixels, view, polygon)
             for segments in layer.segments:
-                self._segments(pixels, view, segments)
+                self._segments(pixels, view, segments, thickness)
             for points in layer.points:
-                self._points(pixels, view, points)
+                self._points(pixels, view, points, thickness)
             for label in layer.labels:
                 col, row = view.to_pixels(np.array([label.x]), np.array([label.y]))
                 labels.append(
@@ -144,7 +147,7 @@ class Painter:
         return flat.reshape(height, width, 3)
 
     @staticmethod
-    def _points(pixels: Image, view: View, points: Points) -> None:
+    def _points(pixels: Image, view: View, points: Points, thickness: int = 1) -> None:
         if len(points.xy) == 0:
             return
         col, row = view.to_pixels(points.xy[:, 0], points.xy[:, 1])
@@ -155,8 +158,8 @@ class Painter:
             colours = None if colours is None else colours[near]
         cols = np.floor(col).astype(np.intp)
         rows = np.floor(row).astype(np.intp)
-        size = max(1, points.size, round(points.metres * view.pixels_per_metre))
-        size = min(size, 64)
+        size = max(points.size * thickness, round(points.metres * view.pixels_per_metre), 1)
+        size = min(size, 64 * thickness)
         if size > 1:
             offsets = np.arange(size) - (size - 1) // 2
             dr, dc = np.meshgrid(offsets, offsets)
@@ -170,7 +173,7 @@ class Painter:
         _blend(pixels, rows[inside], cols[inside], paint, points.alpha)
 
     @staticmethod
-    def _segments(pixels: Image, view: View, segments: Segments) -> None:
+    def _segments(pixels: Image, view: View, segments: Segments, thickness: int = 1) -> None:
         ends = segments.ends
         if len(ends) == 0:
             return
@@ -190,8 +193,16 @@ class Painter:
         owner = np.repeat(np.arange(len(clipped)), counts)
         xs = clipped[owner, 0, 0] + delta[owner, 0] * share
         ys = clipped[owner, 0, 1] + delta[owner, 1] * share
-        cols = np.clip(np.floor(xs).astype(np.intp), 0, width - 1)
-        rows = np.clip(np.floor(ys).astype(np.intp), 0, height - 1)
+        cols = np.floor(xs).astype(np.intp)
+        rows = np.floor(ys).astype(np.intp)
+        if thickness > 1:  # a square brush
+            offsets = np.arange(thickness) - (thickness - 1) // 2
+            dr, dc = np.meshgrid(offsets, offsets)
+            rows = (rows[:, None] + dr.ravel()[None, :]).ravel()
+            cols = (cols[:, None] + dc.ravel()[None, :]).ravel()
+            owner = np.repeat(owner, thickness * thickness)
+        cols = np.clip(cols, 0, width - 1)
+        rows = np.clip(rows, 0, height - 1)
         if segments.colours is not None:
             paint: npt.NDArray[np.float64] | RGB = segments.colours[keep_index[owner]].astype(
                 np.float64

@@ -30,8 +30,8 @@ def write_png(
 
     big = View(view.x, view.y, view.pixels_per_metre * enlarge, view.angle)
     big.resize(view.width * enlarge, view.height * enlarge)
-    layers = manager.layers(now, 1.0 / big.pixels_per_metre)
-    picture = Painter().paint(big, layers, background)
+    layers = manager.layers(now, 1.0 / view.pixels_per_metre)  # shapes sized as on screen
+    picture = Painter().paint(big, layers, background, thickness=max(1, enlarge // 3))
     image = Image.fromarray(picture.pixels, "RGB")
     draw = ImageDraw.Draw(image)
     for label in picture.labels:

@@ -1,5 +1,6 @@
-"""rviz's LaserScan: each ``sensor_msgs/LaserScan`` as the points its beams hit (beams
-outside ``range_min``…``range_max`` or not finite give none, as laser_geometry projects)."""
+"""rviz's LaserScan: each ``sensor_msgs/LaserScan`` as the points its beams hit. As
+laser_geometry projects for rviz, a beam gives no point when it is not finite, below
+``range_min``, or at ``range_max`` and beyond (a beam that hit nothing)."""
 
 from __future__ import annotations
 
@@ -19,7 +20,7 @@ def scan_points(msg: Any) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float
     """The points (``(n, 3)``, in the scan's frame) and intensities of a scan's valid beams."""
     ranges = np.asarray(msg.ranges, dtype=np.float64)
     angles = msg.angle_min + np.arange(ranges.size) * msg.angle_increment
-    valid = np.isfinite(ranges) & (ranges >= msg.range_min) & (ranges <= msg.range_max)
+    valid = np.isfinite(ranges) & (ranges >= msg.range_min) & (ranges < msg.range_max)
     r, a = ranges[valid], angles[valid]
     xyz = np.column_stack([r * np.cos(a), r * np.sin(a), np.zeros(r.size)])
     intensities = np.asarray(msg.intensities, dtype=np.float64)
