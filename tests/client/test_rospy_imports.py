@@ -10,7 +10,6 @@ import json
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 from typing import Any
 
@@ -186,8 +185,7 @@ def test_init_node_waits_for_the_master_as_rospy_does(tmp_path: Path) -> None:
     )
     try:
         assert process.stderr is not None
-        line = process.stderr.readline()
-        time.sleep(0.3)
+        line = process.stderr.readline()  # printed with the signal handlers in place
         process.send_signal(signal.SIGINT)
         _, rest = process.communicate(timeout=10)
     finally:

@@ -10,7 +10,6 @@ import contextlib
 import re
 import signal
 import sys
-import time
 from collections.abc import Iterator
 
 import pytest
@@ -27,11 +26,14 @@ from rosx_turtle.tui.pond import PondView
 from rosx_turtle.tui.status import PoseLine
 from rosx_turtle.view.adapt import follow
 from rosx_turtle.view.scene import Scene
+from rosx_turtle.view.status import status_text
+from tests.support.pilot import run, until
 from tests.support.procs import wait_for
-from tests.tui.conftest import run
 from tests.tui.terminal import BLUE_BACKGROUND, Terminal, on_a_terminal
 
 Twist = get_message_class("geometry_msgs/Twist")
+#: The pose line once a turtle at the centre went 2 m/s for turtlesim's 1 s command timeout.
+STOPPED = re.compile(r"turtle1 → x=7\.\d\d y=5\.54 θ=0\.00")
 PROGRAM = (
     "import sys\nfrom rosx_turtle.tui.pond_run import run_turtlesim_node\n"
     "sys.exit(run_turtlesim_node(sys.argv[1:]))"
@@ -47,6 +49,12 @@ def master() -> Iterator[str]:
 def moving(scenes: Feed[Scene]) -> bool:
     scene = scenes.value
     return scene is None or any(t.linear_velocity or t.angular_velocity for t in scene.turtles)
+
+
+def shown(scenes: Feed[Scene]) -> str:
+    """The pose line of the latest scene."""
+    scene = scenes.value
+    return "" if scene is None else status_text(scene.turtles)
 
 
 def nodes_on(uri: str) -> set[str]:
@@ -70,17 +78,15 @@ def test_the_pond_follows_a_running_turtlesim(master: str) -> None:
 
         async def watch() -> tuple[str, str, int, int]:
             async with app.run_test(size=(80, 30)) as pilot:
-                await pilot.pause(0.2)
                 pond, poses = app.query_one(PondView), app.query_one(PoseLine)
+                await until(pilot, lambda: poses.text.startswith("turtle1"), "the first pose")
                 before, frames = poses.text, pond.frames
                 twist = Twist()
                 twist.linear.x = 2.0
                 publisher.publish(twist)
-                await pilot.pause(0.3)
-                deadline = time.monotonic() + 5
-                while time.monotonic() < deadline and moving(scenes):
-                    await pilot.pause(0.1)
-                await pilot.pause(0.1)
+                await until(pilot, lambda: poses.text != before, "the turtle to move")
+                await until(pilot, lambda: not moving(scenes), "the turtle to stop")
+                await until(pilot, lambda: poses.text == shown(scenes), "the last pose drawn")
                 return before, poses.text, frames, pond.frames
 
         before, after, frames_before, frames_after = run(watch())
@@ -89,7 +95,7 @@ def test_the_pond_follows_a_running_turtlesim(master: str) -> None:
         driver.shutdown("test over")
         sim.shutdown("test over")
     assert before == "turtle1 → x=5.54 y=5.54 θ=0.00"
-    assert re.fullmatch(r"turtle1 → x=7\.\d\d y=5\.54 θ=0\.00", after)  # about 2 m on
+    assert STOPPED.fullmatch(after)  # about 2 m on
     assert frames_after - frames_before >= 5  # the pond was redrawn as the turtle went
 
 

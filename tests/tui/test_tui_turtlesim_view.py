@@ -17,8 +17,8 @@ from rosx_turtle.tui.pond import PondView
 from rosx_turtle.view.remote import RemotePond
 from rosx_turtle.view.scene import Scene, TurtlePose
 from tests.support.cli import clean_environ
+from tests.support.pilot import run, until
 from tests.support.procs import free_port, port_open, running, wait_for
-from tests.tui.conftest import run
 from tests.tui.terminal import BLUE_BACKGROUND, on_a_terminal
 
 MULTISIM = Path(__file__).resolve().parents[2] / "turtle" / "rosx_turtle" / "launch"
@@ -35,11 +35,11 @@ def test_ponds_come_and_go_as_the_graph_says() -> None:
         async with app.run_test(size=(100, 30)) as pilot:
             app.add_pond("/turtlesim1/sim", feed)
             app.add_pond("/turtlesim2/sim", Feed(pond.scene()))
-            await pilot.pause(0.2)
+            await until(pilot, lambda: len(app.query(PondView)) == 2, "both ponds")
             shown = len(app.query(PondView))
             waiting = bool(app.query_one("#waiting").display)
             app.remove_pond("/turtlesim1/sim")
-            await pilot.pause(0.1)
+            await until(pilot, lambda: len(app.query(PondView)) == 1, "one pond left")
             return shown, waiting, len(app.query(PondView))
 
     assert run(drive()) == (2, False, 1)
