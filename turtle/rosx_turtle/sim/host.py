@@ -6,9 +6,10 @@ It starts what Lab 1 starts in four terminals: roscore's core (`rosx.core.Core`)
 and reads ``scale_linear``/``scale_angular`` once, in its public namespace, as
 ``turtle_teleop_key`` does. The graph therefore looks the same to ``rostopic``, ``rosnode`` and
 rqt_graph in other terminals. With ``join`` it starts no core: the two nodes register with
-the master already running at that URI. On top it runs the feeds the screen follows: a scene
-after each tick that changes the pond, the graph whenever the master's lists change, and
-turtlesim's log.
+the master already running at that URI. With ``tf_demo`` it also runs turtle_tf2's demo
+(`rosx_turtle.tutorials.tf_demo`): a broadcaster per turtle and the listener that spawns turtle2
+and makes it follow turtle1. On top it runs the feeds the screen follows: a scene after each
+tick that changes the pond, the graph whenever the master's lists change, and turtlesim's log.
 """
 
 from __future__ import annotations
@@ -51,6 +52,7 @@ class SimHost:
         seed: Seeds turtlesim's choice of sprites (None: unpredictable).
         watch: Whether to run the feeds for a screen (`scenes`, `graph` and `logs`).
         join: The URI of a master already running: start no core, register the nodes there.
+        tf_demo: Also run turtle_tf2's demo (turtle2 follows turtle1 through tf).
     """
 
     def __init__(
@@ -62,8 +64,10 @@ class SimHost:
         seed: int | None = None,
         watch: bool = True,
         join: str | None = None,
+        tf_demo: bool = False,
     ) -> None:
         self.core = Core(port, environ) if join is None else None
+        self.tf_demo = tf_demo
         self.joined = join
         self.environ = environ
         self.console = console
@@ -145,6 +149,11 @@ class SimHost:
             param_double(teleop, "scale_angular", 2.0),
         )
         self.cmd_vel = teleop.advertise(CMD_VEL, self._twist, queue_size=1)
+        if self.tf_demo:
+            from rosx_turtle.tutorials.tf_demo import TfDemo  # noqa: PLC0415 - with the demo
+
+            demo = TfDemo(environ).start()
+            self._stops.append(demo.stop)
         if self.watch:
             self._start_watching(turtlesim, uri)
 

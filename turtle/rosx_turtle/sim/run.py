@@ -6,6 +6,9 @@ turtlesim's log lines instead, and runs until SIGINT or SIGTERM. Either way othe
 attach with ``ROS_MASTER_URI``. The first time it runs where ROS 1's command names do not run
 rosx's tools, it says how to make every terminal ready (``rosx shell-init --install``).
 
+``--tf-demo`` adds turtle_tf2's demo (a broadcaster per turtle, the listener that spawns
+turtle2 and makes it follow turtle1), as ``roslaunch turtle_tf2 turtle_tf2_demo.launch`` does.
+
 With ``--join`` it starts no core: turtlesim and teleop (and the screen) join the master already
 running at ``ROS_MASTER_URI`` (or, with ``--port``, the one on that port of this host). When the
 port is taken by a master, it says which nodes run there and how to join it or pick another
@@ -89,6 +92,11 @@ def _parse(argv: Sequence[str], env: Env) -> argparse.Namespace:
     parser.add_argument(
         "--headless", action="store_true", help="no screen: print log lines, run until Ctrl-C"
     )
+    parser.add_argument(
+        "--tf-demo",
+        action="store_true",
+        help="also run turtle_tf2's demo: turtle2 follows turtle1 through tf",
+    )
     return parser.parse_args(list(argv))
 
 
@@ -104,7 +112,13 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
     port_number = DEFAULT_MASTER_PORT if options.port is None else options.port
     join = _join_uri(options.port, env) if options.join else None
     host = SimHost(
-        port_number, env.environ, console=console, seed=seed, watch=not headless, join=join
+        port_number,
+        env.environ,
+        console=console,
+        seed=seed,
+        watch=not headless,
+        join=join,
+        tf_demo=options.tf_demo,
     )
     try:
         host.start()
