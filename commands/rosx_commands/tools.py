@@ -51,6 +51,10 @@ TOOLS: dict[str, tuple[str, str]] = {
         "rosx_commands.rqt_topic:rqt_topic",
         "Monitor topics: type, bandwidth, rate and the latest message.",
     ),
+    "rqt_tf_tree": (
+        "rosx_commands.rqt_tf_tree:rqt_tf_tree",
+        "Show the tf tree live: frames, broadcasters, rates and delays.",
+    ),
     "rqt": ("rosx_commands.rqt:rqt", "The rqt tools as tabs of one terminal app."),
     "rviz": (
         "rosx_commands.rviz:rviz",

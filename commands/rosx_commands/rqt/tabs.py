@@ -51,4 +51,5 @@ TABS: tuple[Tab, ...] = (
     Tab("console", "Console", "rosx_commands.rqt_console.app:console_tab"),
     Tab("logger_level", "Logger levels", "rosx_commands.rqt_logger_level.app:logger_level_tab"),
     Tab("rviz", "rviz", "rosx_commands.rviz.run:rviz_tab"),
+    Tab("tf_tree", "TF tree", "rosx_commands.rqt_tf_tree.app:tf_tree_tab"),
 )
