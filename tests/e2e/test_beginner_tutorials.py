@@ -314,10 +314,11 @@ def test_the_beginner_tutorials(terminal: Terminal) -> None:  # noqa: PLR0915 - 
         "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- '[2.0, 0.0, 0.0]' '[0.0, 0.0, 1.8]'"
     )
     wait_for(lambda: t.run("rostopic echo -n 1 /turtle1/pose") != before, what="the turtle moving")
-    # timeout runs a program: rosx's, from shell-init's folder in this HOME, not Debian's
-    # /usr/bin/rostopic where the ROS 1 reference is installed.
+    # timeout runs a program: rosx's, from the workspace's devel/bin (sourced after shell-init,
+    # it comes first, as Noetic's does), not Debian's /usr/bin/rostopic where the ROS 1
+    # reference is installed.
     found = Path(t.run("type -P rostopic").strip())
-    assert found.parent.parent == t.home / ".cache" / "rosx" and found.name == "rostopic"
+    assert found == t.home / "catkin_ws" / "devel" / "bin" / "rostopic"
     assert f'exec {sys.executable} -m rosx_commands rostopic "$@"' in found.read_text()
 
     # timeout's SIGINT after 3 s is the tutorial's Ctrl-C; on a loaded machine the first report
