@@ -58,12 +58,14 @@ class Cells:
         self, chars: npt.NDArray[np.str_], fore: npt.NDArray[np.int64], back: npt.NDArray[np.int64]
     ) -> list[Segment]:
         keys = (fore << 24) | back
-        starts = np.flatnonzero(keys[1:] != keys[:-1]) + 1
-        segments = []
-        for begin, end in pairwise([0, *starts.tolist(), len(keys)]):
-            style = self.painter.style(int(fore[begin]), int(back[begin]))
-            segments.append(Segment("".join(chars[begin:end].tolist()), style))
-        return segments
+        bounds = [0, *(np.flatnonzero(keys[1:] != keys[:-1]) + 1).tolist(), len(keys)]
+        text = "".join(chars.tolist())
+        fores, backs = fore.tolist(), back.tolist()
+        style = self.painter.style
+        return [
+            Segment(text[begin:end], style(fores[begin], backs[begin]))
+            for begin, end in pairwise(bounds)
+        ]
 
 
 def _mix(one: npt.NDArray[np.int64], two: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:

@@ -64,19 +64,27 @@ def compose(outer: Transform, inner: Transform) -> Transform:
 
 
 def apply(transform: Transform, points: Points) -> Points:
-    """``points`` (``(n, 3)``, or ``(n, 2)`` on z = 0) moved by ``transform``; ``(n, 3)``."""
+    """``points`` (``(n, 3)``, or ``(n, 2)`` on z = 0) moved by ``transform``; ``(n, 3)``.
+
+    Column by column: for a cloud of many points this is several times quicker than a matrix
+    product with an inner size of three."""
     tx, ty, tz, qx, qy, qz, qw = transform
-    if points.shape[1] == 2:
-        points = np.column_stack([points, np.zeros(len(points))])
+    x, y = points[:, 0], points[:, 1]
+    flat = points.shape[1] == 2
+    z = None if flat else points[:, 2]
+    moved = np.empty((len(points), 3), dtype=np.float64)
     if (qx, qy, qz) == (0.0, 0.0, 0.0):
-        moved = points.astype(np.float64, copy=True)
-        moved[:, 0] += tx
-        moved[:, 1] += ty
-        moved[:, 2] += tz
+        moved[:, 0] = x + tx
+        moved[:, 1] = y + ty
+        moved[:, 2] = tz if z is None else z + tz
         return moved
-    moved = points @ rotation_matrix(qx, qy, qz, qw).T
-    moved += np.array([tx, ty, tz])
-    return np.asarray(moved, dtype=np.float64)
+    r = rotation_matrix(qx, qy, qz, qw)
+    for row, offset in enumerate((tx, ty, tz)):
+        column = r[row, 0] * x + r[row, 1] * y + offset
+        if z is not None:
+            column += r[row, 2] * z
+        moved[:, row] = column
+    return moved
 
 
 def pose_transform(pose: Any) -> Transform:
