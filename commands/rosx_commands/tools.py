@@ -60,6 +60,14 @@ TOOLS: dict[str, tuple[str, str]] = {
         "rosx_commands.rviz:rviz",
         "rviz's 2-D displays and tools: maps, lasers, tf, paths, markers; goals and poses.",
     ),
+    "axclient": (
+        "rosx_commands.actionlib_tools:axclient",
+        "Send goals to an action server and watch them (actionlib_tools' axclient.py).",
+    ),
+    "axserver": (
+        "rosx_commands.actionlib_tools:axserver",
+        "Serve an action by hand: feedback, succeed, abort (actionlib_tools' axserver.py).",
+    ),
     "sim": ("rosx_commands.sim:sim", "Run a master, turtlesim and teleop in one terminal UI."),
     "rosbridge": (
         "rosx_commands.rosbridge:rosbridge",

@@ -24,6 +24,7 @@ from rosx.actionlib import SimpleActionClient, SimpleActionServer
 from rosx.actionlib.states import Status
 from rosx.msg.codec.classes import get_message_class
 from tests.e2e.test_tutorial_nodes import ROSCPP_LINE, ROSPY_LINE, Runs, lines
+from tests.support.cli import rosx
 from tests.support.client import fresh_rospy
 from tests.support.procs import stop, wait_for
 from tests.support.upstream import export, needs_upstream
@@ -76,6 +77,10 @@ def test_the_python_server_grows_the_sequence_and_stops_when_canceled(
     with runs.node("actionlib_tutorials", "fibonacci_server.py") as server:
         client = SimpleActionClient("fibonacci", FibonacciAction)
         assert client.wait_for_server(rospy.Duration(30))
+        listed = rosx("rostopic", "list", environ=runs.env).out.split()
+        assert [t for t in listed if t.startswith("/fibonacci/")] == [
+            f"/fibonacci/{t}" for t in ("cancel", "feedback", "goal", "result", "status")
+        ]
         feedback: list[list[int]] = []
         client.send_goal(
             FibonacciGoal(order=3), feedback_cb=lambda f: feedback.append(list(f.sequence))
