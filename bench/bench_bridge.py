@@ -13,15 +13,16 @@ publisher (a rosx node in a process of its own) feeds both, and the same WebSock
   p99 (the first half second ignored);
 * ``image``: 1 MiB ``sensor_msgs/Image`` as fast as the publisher can, to a ``cbor-raw``
   client: MiB/s received;
-* ``clients``: Twist at 50 Hz to 100 clients at once: messages per second delivered in all,
+* ``clients``: Twist at 200 Hz to 100 clients at once: messages per second delivered in all,
   and the share of what was published that the slowest client got;
 * ``topics``: ``/rosapi/topics_and_raw_types`` with 1 200 topics in the graph: the median
   time of one call.
 
-and the ratios rosx / rosbridge_suite. rosbridge_suite's source is a directory holding its
+and the ratios rosx / rosbridge_suite, medians of ``--rounds`` rounds in which the two bridges
+take turns. rosbridge_suite's source is a directory holding its
 ``ros1`` branch, prepared as bench/README.md says (``--rosbridge-suite DIR``, else
 ``$ROSBRIDGE_SUITE``); without it, its side is skipped with one line. Run:
-``python bench/bench_bridge.py [--seconds S] [--only CASE] [--rosbridge-suite DIR]``.
+``python bench/bench_bridge.py [--seconds S] [--rounds N] [--only CASE] [--rosbridge-suite DIR]``.
 """
 
 from __future__ import annotations
@@ -50,6 +51,7 @@ from bench.interpreter import ROS1_PYTHON  # noqa: E402
 
 CASES = ("twist", "latency", "image", "clients", "topics")
 ROSX_PROGRAMS = ROOT / "rosx/packages/noetic/lib"
+RAW_TYPES = "/rosapi/topics_and_raw_types"
 
 #: The publisher process: ``MODE TOPIC SECONDS`` (a rosx node, the same for both bridges).
 PUBLISHER = r"""
@@ -78,7 +80,7 @@ while pub.get_num_connections() == 0 and time.monotonic() < deadline:
     time.sleep(0.01)
 print("ready", flush=True)
 sys.stdin.readline()
-period = {"latency": 1 / 200, "clients": 1 / 50}.get(mode, 0.0)
+period = {"latency": 1 / 200, "clients": 1 / 200}.get(mode, 0.0)
 end = time.monotonic() + seconds
 sent = 0
 next_at = time.monotonic()
@@ -102,9 +104,15 @@ class Bridge:
     """One bridge implementation's processes."""
 
     def __init__(
-        self, name: str, master: str, port: int, procs: list[subprocess.Popen[bytes]]
+        self,
+        name: str,
+        master: str,
+        port: int,
+        procs: list[subprocess.Popen[bytes]],
+        rosapi: str = "",
     ) -> None:
         self.name = name
+        self.rosapi = rosapi
         self.master = master
         self.port = port
         self.procs = procs
@@ -149,6 +157,9 @@ def start_suite(source: Path, master: str) -> Bridge:
         os.environ,
         ROS_MASTER_URI=master,
         ROS_PACKAGE_PATH=f"{source}:/usr/share",
+        # Its nodes run beside rosx's, under names of their own (a second node of one name
+        # makes the master shut the first down).
+        ROS_NAMESPACE="/suite",
         PYTHONPATH=":".join(map(str, paths)),
     )
     quiet = {"stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL, "env": env}
@@ -161,10 +172,18 @@ def start_suite(source: Path, master: str) -> Bridge:
             ],
             **quiet,  # type: ignore[call-overload]
         ),
-        subprocess.Popen([ROS1_PYTHON, str(source / "rosapi/scripts/rosapi_node")], **quiet),  # type: ignore[call-overload]
+        # rosapi_node's services have absolute names: the one measured is remapped beside rosx's
+        subprocess.Popen(
+            [
+                ROS1_PYTHON,
+                str(source / "rosapi/scripts/rosapi_node"),
+                f"{RAW_TYPES}:=/suite{RAW_TYPES}",
+            ],
+            **quiet,  # type: ignore[call-overload]
+        ),
     ]
     wait_port(port, procs)
-    return Bridge("rosbridge_suite", master, port, procs)
+    return Bridge("rosbridge_suite", master, port, procs, rosapi="/suite")
 
 
 def start_rosx(master: str) -> Bridge:
@@ -201,7 +220,7 @@ def publisher(master: str, mode: str, topic: str, seconds: float) -> subprocess.
 async def _subscribe(url: str, topic: str, msg_type: str, compression: str = "none") -> Any:
     from websockets.asyncio.client import connect
 
-    ws = await connect(url, max_size=None, compression=None, ping_interval=None)
+    ws = await connect(url, max_size=None, compression=None, ping_interval=None, close_timeout=1)
     request = {"op": "subscribe", "topic": topic, "type": msg_type, "compression": compression}
     await ws.send(json.dumps(request))
     return ws
@@ -288,8 +307,7 @@ def case_clients(bridge: Bridge, seconds: float) -> tuple[float, float]:
 
         await asyncio.gather(*(_read(ws, until, counter(i)) for i, ws in enumerate(clients)))
         sent = _finish(proc)
-        for ws in clients:
-            await ws.close()
+        await asyncio.gather(*(ws.close() for ws in clients))
         return sum(counts) / seconds, min(counts) / max(1, sent)
 
     return asyncio.run(run())
@@ -309,11 +327,17 @@ def case_topics(bridge: Bridge, seconds: float) -> float:
                 start = time.monotonic()
                 await ws.send(
                     json.dumps(
-                        {"op": "call_service", "service": "/rosapi/topics_and_raw_types", "id": n}
+                        {
+                            "op": "call_service",
+                            "service": f"{bridge.rosapi}{RAW_TYPES}",
+                            "id": n,
+                        }
                     )
                 )
                 answer = json.loads(await ws.recv())
                 times.append(time.monotonic() - start)
+                if not answer.get("result"):
+                    raise RuntimeError(str(answer.get("values"))[:300])
                 assert len(answer["values"]["topics"]) >= 1200, answer
             return statistics.median(times[1:]) * 1000
 
@@ -347,18 +371,33 @@ def _finish(proc: subprocess.Popen[str]) -> int:
 # -- main -------------------------------------------------------------------------------------
 
 
-def measure(bridge: Bridge, cases: list[str], seconds: float) -> dict[str, Any]:
-    results: dict[str, Any] = {}
-    for case in cases:
-        run = {"twist": case_twist, "latency": case_latency, "image": case_image,
-               "clients": case_clients, "topics": case_topics}[case]  # fmt: skip
-        try:
-            results[case] = run(bridge, seconds)
-        except Exception as exc:  # one case failing still leaves the others' figures
-            results[case] = None
-            print(f"  {bridge.name} {case}: failed ({type(exc).__name__}: {exc})", flush=True)
-        print(f"  {bridge.name} {case}: {results[case]}", flush=True)
-    return results
+RUNS: dict[str, Callable[[Bridge, float], Any]] = {
+    "twist": case_twist,
+    "latency": case_latency,
+    "image": case_image,
+    "clients": case_clients,
+    "topics": case_topics,
+}
+
+
+def measure_once(bridge: Bridge, case: str, seconds: float) -> Any:
+    try:
+        value = RUNS[case](bridge, seconds)
+    except Exception as exc:  # one case failing still leaves the others' figures
+        print(f"  {bridge.name} {case}: failed ({type(exc).__name__}: {exc})", flush=True)
+        return None
+    print(f"  {bridge.name} {case}: {value}", flush=True)
+    return value
+
+
+def median_of(values: list[Any]) -> Any:
+    """The median of a case's rounds (element by element for pairs); None if none ran."""
+    found = [v for v in values if v is not None]
+    if not found:
+        return None
+    if isinstance(found[0], tuple):
+        return tuple(statistics.median(column) for column in zip(*found, strict=True))
+    return statistics.median(found)
 
 
 def ratio(mine: float | None, theirs: float | None) -> str:
@@ -381,7 +420,7 @@ def report(rosx: dict[str, Any], suite: dict[str, Any] | None) -> None:
         ("publish → client latency p50, ms", "latency", 0, "≤ 0.3x"),
         ("publish → client latency p99, ms", "latency", 1, ""),
         ("1 MiB Image, cbor-raw, MiB/s", "image", None, "≥ 100 MiB/s"),
-        ("Twist at 50 Hz to 100 clients, msgs/s delivered", "clients", 0, ""),
+        ("Twist at 200 Hz to 100 clients, msgs/s delivered", "clients", 0, ""),
         ("  share the slowest of 100 clients got", "clients", 1, ""),
         ("topics_and_raw_types, 1 200 topics, ms", "topics", None, ""),
     ]
@@ -400,6 +439,7 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=3.0, help="each case's measuring window")
     parser.add_argument("--only", choices=CASES, action="append", help="run only this case")
+    parser.add_argument("--rounds", type=int, default=3, help="rounds; the medians are shown")
     parser.add_argument(
         "--rosbridge-suite",
         default=os.environ.get("ROSBRIDGE_SUITE", "/tmp/rosbridge_suite"),
@@ -410,33 +450,35 @@ def main() -> int:
     interpreter.run_on(args.python)
     cases = args.only or list(CASES)
     source = Path(args.rosbridge_suite)
+    has_suite = (source / "rosbridge_server/scripts/rosbridge_websocket.py").exists()
+    if not has_suite or not Path(ROS1_PYTHON).exists():
+        print(f"rosbridge_suite: no source at {source} (see bench/README.md): its side is skipped")
     master_proc, master = start_master()
+    bridges: list[Bridge] = []
     try:
-        suite = None
-        if (source / "rosbridge_server/scripts/rosbridge_websocket.py").exists() and Path(
-            ROS1_PYTHON
-        ).exists():
-            bridge = start_suite(source, master)
-            try:
-                suite = measure(bridge, cases, args.seconds)
-            finally:
-                bridge.stop()
-        else:
-            print(
-                f"rosbridge_suite: no source at {source} (see bench/README.md): its side is skipped"
-            )
-        bridge = start_rosx(master)
-        try:
-            mine = measure(bridge, cases, args.seconds)
-        finally:
-            bridge.stop()
+        if has_suite and Path(ROS1_PYTHON).exists():
+            bridges.append(start_suite(source, master))
+        bridges.append(start_rosx(master))
+        # Both run all along and take turns, case by case and round by round, so a change in
+        # the machine's load meets both.
+        found: dict[str, dict[str, list[Any]]] = {b.name: {c: [] for c in cases} for b in bridges}
+        for _ in range(args.rounds):
+            for case in cases:
+                for bridge in bridges:
+                    found[bridge.name][case].append(measure_once(bridge, case, args.seconds))
     finally:
+        for bridge in bridges:
+            bridge.stop()
         master_proc.send_signal(signal.SIGINT)
         try:
             master_proc.wait(timeout=10)
         except subprocess.TimeoutExpired:
             master_proc.kill()
             master_proc.wait()
+    medians = {
+        name: {c: median_of(v) for c, v in by_case.items()} for name, by_case in found.items()
+    }
+    mine, suite = medians["rosx"], medians.get("rosbridge_suite")
     report(mine, suite)
     return 0
 
