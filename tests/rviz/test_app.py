@@ -3,6 +3,7 @@ and hiding displays, saving the config and a PNG (a source that records, a fixed
 
 from __future__ import annotations
 
+import asyncio
 import math
 from pathlib import Path
 from typing import Any
@@ -218,5 +219,34 @@ def test_follow_centres_the_view_on_a_frame() -> None:
             await settle(pilot)
             assert (app.view.x, app.view.y) == pytest.approx((1.5, 0.5))
             assert "Target Frame: base_link" in panel_text(app)
+
+    run(drive())
+
+
+def test_rviz_is_a_tab_of_rqt_and_waits_for_its_master(tmp_path: Path) -> None:
+    from rosx_commands.context import Environment
+    from rosx_commands.rqt.app import make_rqt_app
+    from rosx_commands.rviz.pane import RvizPane
+    from tests.support.cli import clean_environ
+    from tests.support.procs import free_port
+
+    uri = f"http://127.0.0.1:{free_port()}/"  # nobody answers there
+    env = Environment(environ=clean_environ(ROS_MASTER_URI=uri, HOME=str(tmp_path)))
+    app = make_rqt_app(env, first="rviz")
+
+    async def drive() -> None:
+        async with app.run_test(size=(120, 40)) as pilot:
+            pane = app.query_one(RvizPane)
+            deadline = asyncio.get_running_loop().time() + 30
+            while not pane.message and asyncio.get_running_loop().time() < deadline:
+                await pilot.pause(0.05)
+            assert pane.message == f"Waiting for the master {uri}"
+            assert [line for line, _ in pane.panel.lines][:5] == [
+                "Fixed Frame: map",
+                "─" * (pane.panel.size.width - 1),
+                "1 ■ Grid",
+                "  rviz/Grid",
+                "  ✓ OK",
+            ]
 
     run(drive())
