@@ -18,6 +18,7 @@ is added only when stderr is a terminal.
 
 from __future__ import annotations
 
+import io
 import sys
 
 from rosx_commands.context import CommandError, Environment
@@ -76,7 +77,6 @@ def command_error(error: BaseException, env: Environment, status: int) -> Comman
 def error_line(error: BaseException) -> str:
     """``error`` as one line for a terminal UI's status line: the core's errors in ROS 1's
     words (`command_error`), any other as its text."""
-    import io  # noqa: PLC0415 - only on failure
 
     quiet = Environment(stdout=io.StringIO(), stderr=io.StringIO(), environ={})
     mapped = command_error(error, quiet, 1)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from pathlib import Path
 
 from rosx.msg.describe import describe_msg, describe_srv
 from rosx.msg.parser import InvalidMsgSpecError
@@ -172,7 +173,6 @@ def _show(tool: _Tool, argv: list[str], alias: str) -> int:
 
 def _show_from_bag(tool: _Tool, bag: str, type_name: str, raw: bool) -> int:
     """``rosmsg show -b BAG TYPE``: the definition the bag recorded for ``TYPE``."""
-    from pathlib import Path  # noqa: PLC0415
 
     from rosx.bag.errors import BagError  # noqa: PLC0415
     from rosx.bag.reader import BagReader  # noqa: PLC0415

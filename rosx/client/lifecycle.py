@@ -30,6 +30,7 @@ from rosx.names import (
     is_legal_base_name,
     strip_remap_args,
 )
+from rosx.node.rosout import console_line, print_console
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
@@ -182,14 +183,10 @@ def _start_node(
 
 
 def _line(level: int, message: str) -> str:
-    from rosx.node.rosout import console_line  # noqa: PLC0415
-
     return console_line(level, message)
 
 
 def _console(level: int, line: str) -> None:
-    from rosx.node.rosout import print_console  # noqa: PLC0415
-
     print_console(level, line, stdout=sys.stdout, stderr=sys.stderr)
 
 

@@ -21,6 +21,7 @@ Classes are built on first access (module ``__getattr__``), not when the module 
 from __future__ import annotations
 
 import functools
+import importlib
 import importlib.abc
 import importlib.machinery
 import sys
@@ -187,8 +188,6 @@ class _HelperLoader(importlib.abc.Loader):
         self.source = source
 
     def exec_module(self, module: types.ModuleType) -> None:
-        import importlib  # noqa: PLC0415
-
         served = importlib.import_module(self.source)
         module.__doc__ = served.__doc__
         for name in dir(served):

@@ -15,6 +15,7 @@ re-exports (`ns_join`, `namespace`, `canonicalize_name`, `is_global`…). The ru
 from __future__ import annotations
 
 import os
+import sys
 from typing import TYPE_CHECKING
 
 from rosx.client import state
@@ -65,7 +66,6 @@ def get_ros_namespace(
     env: Mapping[str, str] | None = None, argv: Sequence[str] | None = None
 ) -> str:
     """The namespace of ``__ns:=`` in ``argv``, else of ``ROS_NAMESPACE``, global with ``/``."""
-    import sys  # noqa: PLC0415 - the live argv, read when asked
 
     return ros_namespace(os.environ if env is None else env, sys.argv if argv is None else argv)
 

@@ -8,6 +8,7 @@ stdout, from WARNING on to stderr, coloured on a terminal unless ``colorize`` is
 from __future__ import annotations
 
 import logging
+import sys
 from typing import TextIO
 
 from rosx.node.rosout import DEBUG, ERROR, FATAL, INFO, WARN, console_line, print_console
@@ -49,7 +50,6 @@ class RosStreamHandler(logging.Handler):
         if self._colorize:
             print_console(level, line, stdout=self._stdout, stderr=self._stderr)
             return
-        import sys  # noqa: PLC0415 - the streams current when the record comes
 
         stream = (self._stdout or sys.stdout) if level < WARN else (self._stderr or sys.stderr)
         stream.write(line + "\n")

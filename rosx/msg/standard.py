@@ -19,7 +19,10 @@ as before.
 from __future__ import annotations
 
 import contextlib
+import marshal
 import os
+import sys
+import time
 from functools import cache
 from pathlib import Path
 
@@ -67,7 +70,6 @@ def _texts() -> dict[str, str]:
 def _store_tag() -> Tag | None:
     """What identifies rosbags' Noetic store and this Python, found without importing rosbags."""
     import importlib.util  # noqa: PLC0415
-    import sys  # noqa: PLC0415
 
     spec = importlib.util.find_spec("rosbags")
     if spec is None or not spec.submodule_search_locations:
@@ -92,8 +94,6 @@ def _cache_path(tag: Tag) -> Path | None:
 
 
 def _read_cache(path: Path, tag: Tag) -> dict[str, str] | None:
-    import marshal  # noqa: PLC0415
-
     try:
         content = marshal.loads(path.read_bytes())
     except (OSError, EOFError, ValueError, TypeError):
@@ -106,8 +106,6 @@ def _read_cache(path: Path, tag: Tag) -> dict[str, str] | None:
 
 
 def _write_cache(path: Path, tag: Tag, texts: dict[str, str]) -> None:
-    import marshal  # noqa: PLC0415
-
     partial = path.with_name(f"{path.name}.{os.getpid()}")
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -122,7 +120,6 @@ def _write_cache(path: Path, tag: Tag, texts: dict[str, str]) -> None:
 
 def _remove_stale(kept: Path) -> None:
     """Remove the other cache files not written for `STALE_DAYS` days."""
-    import time  # noqa: PLC0415
 
     oldest = time.time() - STALE_DAYS * 86400
     for other in kept.parent.glob(f"{_CACHE_STEM}*.marshal"):

@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING, Any
 from rosx.graph.state import registrations
 from rosx.msg.codec.classes import get_message_class
 from rosx.signals import stop_on_signals
+from rosx.terminal import is_terminal
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.program import master_address, start_when_master_is_up
@@ -251,7 +252,6 @@ def _screen_mode(node: Node) -> None:
 def run_turtlesim_view(argv: Sequence[str], env: Env | None = None) -> int:
     """Run turtlesim_view: the ponds on a terminal, their turtles as lines otherwise."""
     from rosx.names.anonymous import anonymous_name  # noqa: PLC0415
-    from rosx.terminal import is_terminal  # noqa: PLC0415
 
     env = env or ProcessEnv()
     args = NodeArgs.parse(argv, anonymous_name("turtlesim_view"))

@@ -18,6 +18,7 @@ import time
 from typing import TYPE_CHECKING, Any
 
 from rosx.names.remap_args import strip_remap_args
+from rosx.terminal import is_terminal
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import Environment, ExitStatus
 from rosx_commands.errors import unreachable
@@ -329,7 +330,6 @@ def _run(player: Player, options: optparse.Values, env: Environment) -> int:
 @contextlib.contextmanager
 def _keys(player: Player, env: Environment) -> Iterator[None]:
     """Space and ``s`` from a terminal on stdin, read without echo or line buffering."""
-    from rosx.terminal import is_terminal  # noqa: PLC0415 - with the player's other imports
 
     stdin = env.stdin
     if not is_terminal(stdin) or sys.platform == "win32":

@@ -12,6 +12,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from rosx.msg.text.yamlparams import AngleError, YAMLLoadError, load_documents, load_value
 from rosx.names.resolution import GLOBAL_NS, ns_join
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
@@ -109,8 +110,6 @@ def _read_file(filename: str, *, text: bool) -> str | bytes:
 
 
 def _load_value(text: str) -> Any:
-    from rosx.msg.text.yamlparams import AngleError, YAMLLoadError, load_value  # noqa: PLC0415
-
     try:
         return load_value(text)
     except YAMLLoadError as error:
@@ -164,8 +163,6 @@ def _read_source(env: Environment, filename: str, verbose: bool) -> str:
 
 
 def _load_documents(text: str, filename: str) -> list[Any]:
-    from rosx.msg.text.yamlparams import AngleError, YAMLLoadError, load_documents  # noqa: PLC0415
-
     try:
         return load_documents(text)
     except YAMLLoadError as error:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import threading
 from typing import TYPE_CHECKING, Any
 
+from rosx.msg.text.fieldpath import FieldPathError, field_type, parse_field_path
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import CommandError, Environment, ExitStatus
 from rosx_commands.rostopic.listing import resolve
@@ -136,7 +137,6 @@ class Printer:
         # Bound once: the callback runs for every message.
         from rosx.msg.text.echo import echo_record, format_value  # noqa: PLC0415
         from rosx.msg.text.echocsv import csv_header, csv_row  # noqa: PLC0415
-        from rosx.msg.text.fieldpath import FieldPathError  # noqa: PLC0415
         from rosx.node.clock import now  # noqa: PLC0415
 
         self._format, self._record = format_value, echo_record
@@ -303,7 +303,6 @@ def _field_path(
     """
     if not text.strip("/"):
         return None, None
-    from rosx.msg.text.fieldpath import FieldPathError, field_type, parse_field_path  # noqa: PLC0415
 
     try:
         path = parse_field_path(text)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import time
+
 from rosx.graph.state import registrations
 from rosx.names.resolution import make_global_ns
 from rosx.names.script import ros_namespace, script_resolve_name
@@ -41,7 +43,6 @@ def topic_rows(master: MasterClient) -> tuple[TopicRows, TopicRows]:
 def _list_bag(env: Environment, bag: str, topic: str | None) -> int:
     """``rostopic list -b BAG [TOPIC]``: topics in order of their first message, or how many
     messages ``topic`` (and its namespace) has, and when the first and last were recorded."""
-    import time  # noqa: PLC0415
     from pathlib import Path  # noqa: PLC0415
 
     from rosx.bag.errors import BagError  # noqa: PLC0415

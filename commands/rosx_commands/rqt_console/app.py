@@ -24,7 +24,15 @@ from textual.widgets import Input, Static  # noqa: TID253 - TUI code
 
 from rosx_commands.errors import error_line
 from rosx_commands.paneapp import PaneApp
-from rosx_commands.rqt_console.model import DEFAULT_LIMIT, Kind, Log, Rule, RuleError, details
+from rosx_commands.rqt_console.model import (
+    DEFAULT_LIMIT,
+    Kind,
+    Log,
+    Rule,
+    RuleError,
+    Rules,
+    details,
+)
 from rosx_commands.rqt_console.table import LogTable
 
 if TYPE_CHECKING:
@@ -213,8 +221,6 @@ class ConsolePane(Vertical):
         self._status()
 
     def action_drop_rule(self) -> None:
-        from rosx_commands.rqt_console.model import Rules  # noqa: PLC0415
-
         self.set_rules(Rules(self.entries.rules.rules[:-1]))
 
     def action_clear_rules(self) -> None:

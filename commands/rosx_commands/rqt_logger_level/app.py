@@ -21,7 +21,7 @@ from textual.widgets.option_list import Option  # noqa: TID253 - TUI code
 
 from rosx_commands.errors import error_line
 from rosx_commands.paneapp import PaneApp
-from rosx_commands.rqt_logger_level.source import LEVELS
+from rosx_commands.rqt_logger_level.source import LEVELS, LiveSource
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -224,6 +224,5 @@ def make_level_app(source: LevelSource) -> LevelApp:
 
 def logger_level_tab(env: Any) -> LevelPane:
     """rqt_logger_level as a tab of ``rosx rqt``: the nodes of ``env``'s master."""
-    from rosx_commands.rqt_logger_level.source import LiveSource  # noqa: PLC0415
 
     return LevelPane(LiveSource(env.master_uri))

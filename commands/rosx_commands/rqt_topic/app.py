@@ -19,7 +19,13 @@ from textual.containers import Vertical  # noqa: TID253 - TUI code
 from textual.widgets import Static, Tree  # noqa: TID253 - TUI code
 
 from rosx_commands.paneapp import PaneApp
-from rosx_commands.rqt_topic.monitor import Field, Reading, bytes_per_second, fields
+from rosx_commands.rqt_topic.monitor import (
+    Field,
+    LiveTopicSource,
+    Reading,
+    bytes_per_second,
+    fields,
+)
 
 if TYPE_CHECKING:
     from textual.widgets.tree import TreeNode
@@ -241,6 +247,5 @@ def make_topic_app(source: TopicSource, *, periodic: bool = True) -> TopicApp:
 
 def topic_tab(env: Environment) -> TopicPane:
     """rqt_topic as a tab of ``rosx rqt``."""
-    from rosx_commands.rqt_topic.monitor import LiveTopicSource  # noqa: PLC0415
 
     return TopicPane(LiveTopicSource(env))

@@ -59,7 +59,9 @@ from rosx.launch.run.monitor import (
 from rosx.master.client import MasterClient, MasterError, MasterUnreachable
 from rosx.master.defaults import master_uri as default_master_uri
 from rosx.names.resolution import ns_join
+from rosx.packages.crawl import split_package_path
 from rosx.transport.address import advertised_host, http_uri, is_local_host
+from rosx.wire.xmlrpc_http import parse_http_uri
 from rosx.workspace import logdir
 from rosx.workspace.executables import is_python_script
 from rosx.workspace.programs import bundled_program, overlays
@@ -144,8 +146,6 @@ def master_uri(environ: Mapping[str, str], port: int | None) -> str:
 
 
 def _uri_host_port(uri: str) -> tuple[str, int]:
-    from rosx.wire.xmlrpc_http import parse_http_uri  # noqa: PLC0415
-
     try:
         host, port, _ = parse_http_uri(uri)
     except ValueError:
@@ -261,7 +261,6 @@ class LaunchRun:
     def _crawled(self, environ: Mapping[str, str]) -> dict[str, Path] | None:
         """The package index's crawl, when it is of ``environ``'s package path (the nodes
         need it anyway, so it is done here once for the launcher and the helper)."""
-        from rosx.packages.crawl import split_package_path  # noqa: PLC0415
 
         package_path = split_package_path(environ.get("ROS_PACKAGE_PATH"))
         if self.package_index.package_path != package_path:

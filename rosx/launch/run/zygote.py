@@ -37,6 +37,7 @@ import os
 import select
 import signal
 import socket
+import subprocess
 import sys
 import threading
 from typing import TYPE_CHECKING, Any
@@ -227,7 +228,6 @@ class ZygoteClient:
         on_exit: Callable[[], object],
         crawled: Mapping[str, Path] | None = None,
     ) -> None:
-        import subprocess  # noqa: PLC0415
 
         self.environ = dict(environ)
         self.on_exit = on_exit

@@ -14,7 +14,7 @@ from __future__ import annotations
 import copy
 from typing import TYPE_CHECKING, Any
 
-from rosx.msg.codec.rostime import TVal
+from rosx.msg.codec.rostime import Duration, Time, TVal
 from rosx.msg.spec import PRIMITIVE_TYPES
 
 if TYPE_CHECKING:
@@ -109,8 +109,6 @@ _INLINE_DEPTH = 4
 
 def _nested_class(kind: str, resolver: Any) -> type | None:
     if kind in ("time", "duration"):
-        from rosx.msg.codec.rostime import Duration, Time  # noqa: PLC0415
-
         return Time if kind == "time" else Duration
     if "[" in kind or "/" not in kind or resolver is None:
         return None

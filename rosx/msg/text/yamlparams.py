@@ -21,6 +21,7 @@ with keys that are not strings.
 
 from __future__ import annotations
 
+import datetime as dt
 import math
 import re
 from functools import cache
@@ -129,7 +130,6 @@ def check_value(value: object, name: str = "") -> None:
                 raise ParamValueError(f"cannot set parameter [{path}]{_colon_hint(key, item)}")
             check_value(item, path)
         return
-    import datetime as dt  # noqa: PLC0415 - kept off rosparam get's start-up
 
     if isinstance(value, dt.datetime):
         return  # sent as XML-RPC's dateTime.iso8601, as ROS 1's rosparam sends it
@@ -141,7 +141,6 @@ def check_value(value: object, name: str = "") -> None:
 def _describe_value(value: object) -> str:
     if value is None:
         return "null (an empty value)"
-    import datetime as dt  # noqa: PLC0415 - kept off rosparam get's start-up
 
     if isinstance(value, dt.date):
         return f"a date ({value}); quote it for a string"

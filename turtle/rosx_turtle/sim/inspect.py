@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from rosx.graph.describe import NodeContactError, UnknownTopicError, node_info, topic_description
 from rosx.master.client import MasterClient, MasterError
+from rosx.msg.codec.classes import get_message_class
 from rosx.transport.errors import TransportError
 
 if TYPE_CHECKING:
@@ -60,7 +61,6 @@ class Inspector:
     def echo(self, topic: str, offer: Callable[[str], object]) -> Callable[[], None]:
         """Call ``offer(text)`` with each message of ``topic`` as ``rostopic echo`` prints it
         (on the topic's thread); returns the function that stops echoing."""
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
         from rosx.msg.text.echo import echo_record, format_message  # noqa: PLC0415
 
         def arrived(raw: RawMessage) -> None:
