@@ -38,7 +38,7 @@ def message_md5(spec: MsgSpec, lookup: Lookup, md5_of: Callable[[str], str] | No
 
 
 def service_md5(spec: SrvSpec, lookup: Lookup, md5_of: Callable[[str], str] | None = None) -> str:
-    import hashlib  # noqa: PLC0415
+    import hashlib  # noqa: PLC0415 - hashlib is not needed at start-up
 
     digest = hashlib.md5(md5_text(spec.request, lookup, md5_of).encode())
     digest.update(md5_text(spec.response, lookup, md5_of).encode())

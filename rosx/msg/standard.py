@@ -69,7 +69,7 @@ def _texts() -> dict[str, str]:
 
 def _store_tag() -> Tag | None:
     """What identifies rosbags' Noetic store and this Python, found without importing rosbags."""
-    import importlib.util  # noqa: PLC0415
+    import importlib.util  # noqa: PLC0415 - importlib is not needed at start-up
 
     spec = importlib.util.find_spec("rosbags")
     if spec is None or not spec.submodule_search_locations:
@@ -84,7 +84,7 @@ def _store_tag() -> Tag | None:
 
 def _cache_path(tag: Tag) -> Path | None:
     """Where the texts of ``tag``'s rosbags and Python are kept (None: no usable folder)."""
-    import zlib  # noqa: PLC0415
+    import zlib  # noqa: PLC0415 - zlib is not needed at start-up
 
     folder = cache_folder(os.environ)
     if folder is None:

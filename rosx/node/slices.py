@@ -74,7 +74,7 @@ def _setattr() -> Callable[[bytes], int] | None:
         number = _SYSCALLS.get(os.uname().machine)
     if number is None:
         return None
-    import ctypes  # noqa: PLC0415
+    import ctypes  # noqa: PLC0415 - ctypes is not needed at start-up
 
     try:
         syscall = ctypes.CDLL(None, use_errno=True).syscall
@@ -132,7 +132,7 @@ _YIELD_LETTING_GIL_GO = os.sched_yield if hasattr(os, "sched_yield") else None
 def _sched_yield() -> Callable[[], int] | None:
     """``sched_yield`` called with the GIL held (so no other thread of this process takes the
     GIL meanwhile), loaded on first use."""
-    import ctypes  # noqa: PLC0415
+    import ctypes  # noqa: PLC0415 - ctypes is not needed at start-up
 
     try:
         call = ctypes.PyDLL(None).sched_yield

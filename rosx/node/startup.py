@@ -39,7 +39,7 @@ def load_private_params(raw: Mapping[str, str]) -> dict[str, Any]:
         ParamArgsError: a value is not YAML, or not something the Parameter Server stores.
     """
     from rosx.msg.text.yamlload import YAMLLoadError, load  # noqa: PLC0415 - ruamel loads lazily
-    from rosx.msg.text.yamlparams import ParamValueError, check_value  # noqa: PLC0415
+    from rosx.msg.text.yamlparams import ParamValueError, check_value  # noqa: PLC0415 - the text forms load on first use
 
     values: dict[str, Any] = {}
     for name, text in raw.items():

@@ -149,7 +149,7 @@ def foreign_address_warning(environ: Mapping[str, str], remap: str | None = None
     it: no traffic, no name look-up); a host name is left to the resolver.
     """
     import ipaddress  # noqa: PLC0415 -- the other helpers are string work; keep them import-cheap
-    import socket  # noqa: PLC0415
+    import socket  # noqa: PLC0415 - socket is not needed at start-up
 
     override = address_override(environ, remap)
     if override is None:

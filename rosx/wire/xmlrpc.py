@@ -233,7 +233,7 @@ def _refuse_doctype(*_: object) -> None:
 
 def _date_time(text: str) -> DateTime:
     # The value class rospy hands its users; rare, and costly to import at start-up.
-    from xmlrpc.client import DateTime  # noqa: PLC0415
+    from xmlrpc.client import DateTime  # noqa: PLC0415 - xmlrpc is not needed at start-up
 
     return DateTime(text.strip())
 

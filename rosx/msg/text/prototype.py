@@ -97,7 +97,7 @@ class _Builder:
         return self._mapping(items)
 
     def _value(self, value: object) -> object:
-        from rosx.msg.spec import Field  # noqa: PLC0415
+        from rosx.msg.spec import Field  # noqa: PLC0415 - the message layer loads on first use
 
         if isinstance(value, Field):
             return self.scalar(value.base_type)
@@ -132,7 +132,7 @@ class _Builder:
 
 def _scalar(value: object) -> str:
     if isinstance(value, _Binary):
-        import base64  # noqa: PLC0415
+        import base64  # noqa: PLC0415 - base64 is not needed at start-up
 
         return f'!!binary "{base64.b64encode(value).decode()}"'
     if isinstance(value, bool):

@@ -57,7 +57,7 @@ def load_args(words: Sequence[str], *, empty_is_string: bool = False) -> list[An
 def substitution_keys(now: Time, store: TypeStore | None = None) -> dict[str, object]:
     """The words that stand for values: ``now`` (a time) and ``auto`` (a header stamped now)."""
     # Classes come with the code generator, which loading arguments alone does not need.
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     header = get_message_class(HEADER_TYPE, store)(stamp=now)
     return {"now": now, "auto": header}

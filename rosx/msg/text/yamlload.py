@@ -84,13 +84,13 @@ _RESOLVERS = (
 @cache
 def _loader_factory() -> Any:
     # ruamel.yaml takes 10-20 ms to import: only commands that read YAML pay for it.
-    from ruamel.yaml import YAML  # noqa: PLC0415
-    from ruamel.yaml.composer import Composer, ComposerError  # noqa: PLC0415
-    from ruamel.yaml.constructor import SafeConstructor  # noqa: PLC0415
-    from ruamel.yaml.events import AliasEvent  # noqa: PLC0415
-    from ruamel.yaml.resolver import VersionedResolver  # noqa: PLC0415
-    from ruamel.yaml.scanner import Scanner, ScannerError  # noqa: PLC0415
-    from ruamel.yaml.tokens import ScalarToken  # noqa: PLC0415
+    from ruamel.yaml import YAML  # noqa: PLC0415 - ruamel loads only on this path
+    from ruamel.yaml.composer import Composer, ComposerError  # noqa: PLC0415 - ruamel loads only on this path
+    from ruamel.yaml.constructor import SafeConstructor  # noqa: PLC0415 - ruamel loads only on this path
+    from ruamel.yaml.events import AliasEvent  # noqa: PLC0415 - ruamel loads only on this path
+    from ruamel.yaml.resolver import VersionedResolver  # noqa: PLC0415 - ruamel loads only on this path
+    from ruamel.yaml.scanner import Scanner, ScannerError  # noqa: PLC0415 - ruamel loads only on this path
+    from ruamel.yaml.tokens import ScalarToken  # noqa: PLC0415 - ruamel loads only on this path
 
     entries: dict[str | None, list[tuple[str, re.Pattern[str]]]] = {}
     for name, pattern, firsts in _RESOLVERS:

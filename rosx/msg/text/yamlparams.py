@@ -125,7 +125,7 @@ def check_value(value: object, name: str = "") -> None:
             path = ns_join(name, key) if name else key
             if item is None and ":" in key:
                 # The hint for ``{x:5}`` (the message-arguments module's, loaded only here).
-                from rosx.msg.text.yamlargs import _colon_hint  # noqa: PLC0415
+                from rosx.msg.text.yamlargs import _colon_hint  # noqa: PLC0415 - the text forms load on first use
 
                 raise ParamValueError(f"cannot set parameter [{path}]{_colon_hint(key, item)}")
             check_value(item, path)
