@@ -259,7 +259,7 @@ class Bag:
         self, topic_filters: Iterable[str] | str | None = None
     ) -> TypesAndTopicsTuple:
         """Each type's md5sum, and each topic's type, count, connections, median frequency."""
-        from rosx.bag.info import _median_frequency  # noqa: PLC0415
+        from rosx.bag.info import _median_frequency  # noqa: PLC0415 - bag code loads only for bags
 
         bag = self._read()
         ids = self._connection_ids(topic_filters)
@@ -306,7 +306,7 @@ class Bag:
         return self.read_messages()
 
     def __str__(self) -> str:
-        from rosx.bag.info import format_text, summarize  # noqa: PLC0415
+        from rosx.bag.info import format_text, summarize  # noqa: PLC0415 - bag code loads only for bags
 
         return format_text(summarize(self._read(), self._filename))
 

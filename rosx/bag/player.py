@@ -136,7 +136,7 @@ class Player:
 
     def serve_pause(self) -> None:
         """Serve ``~pause_playback``, as ROS 1's player does."""
-        from rosx.msg.codec.classes import get_service_class  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_service_class  # noqa: PLC0415 - message classes load on first use
 
         set_bool = get_service_class("std_srvs/SetBool")
         self.node.advertise_service("~pause_playback", set_bool, self._pause_requested)
@@ -366,8 +366,8 @@ class Player:
                 self._cond.wait(min(remaining, 0.1))
 
     def _publish_clock(self) -> None:
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
-        from rosx.msg.codec.rostime import Time  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
+        from rosx.msg.codec.rostime import Time  # noqa: PLC0415 - message classes load on first use
 
         clock_class = get_message_class("rosgraph_msgs/Clock")
         publisher = self.node.advertise("/clock", clock_class, queue_size=1)

@@ -170,7 +170,7 @@ class Recorder:
         """Subscribe to the named topics, open the first bag, start the writer (and discovery,
         when asked)."""
         if self.options.publish:
-            from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+            from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
             string = get_message_class("std_msgs/String")
             self._begin_write = self.node.advertise("begin_write", string, queue_size=1, latch=True)

@@ -285,7 +285,7 @@ def compress(compression: str, data: bytes) -> bytes:
 
         return bz2.compress(data)
     if compression == "lz4":
-        import lz4.frame  # noqa: PLC0415
+        import lz4.frame  # noqa: PLC0415 - lz4 loads only on this path
 
         # ROS 1's roslz4 reads only frames laid out as it writes them: 1 MiB independent
         # blocks, a content checksum and no content size (lz4's defaults differ).
@@ -344,7 +344,7 @@ def _decompress(compression: str, data: bytes, size: int) -> bytes:
             import bz2  # noqa: PLC0415 - only bags that use it pay for it
 
             return bz2.BZ2Decompressor().decompress(data, max_length=size + 1)
-        import lz4.frame  # noqa: PLC0415
+        import lz4.frame  # noqa: PLC0415 - lz4 loads only on this path
 
         out: bytes = lz4.frame.LZ4FrameDecompressor().decompress(data, max_length=size + 1)
         return out

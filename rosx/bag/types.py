@@ -55,7 +55,7 @@ def message_class(conn: Connection, store: TypeStore | None = None) -> type[Mess
     Raises:
         Exception: neither the store nor the recorded definition gives the type.
     """
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     key = (conn.type, conn.md5sum)
     with _lock:

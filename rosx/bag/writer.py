@@ -101,7 +101,7 @@ class BagWriter:
             raise ValueError(f"mode {mode!r} is not 'w' or 'a'")
 
     def _reopen(self) -> None:
-        from rosx.bag.reader import BagReader  # noqa: PLC0415
+        from rosx.bag.reader import BagReader  # noqa: PLC0415 - bag code loads only for bags
 
         with BagReader(self.path) as bag:
             end = bag.index_pos

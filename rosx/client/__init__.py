@@ -119,7 +119,7 @@ _load = lazy_names(__name__, _HOMES)
 def __getattr__(name: str) -> Any:
     # std_msgs/Header needs the standard type store, loaded only when a script asks for it.
     if name == "Header":
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
         return get_message_class("std_msgs/Header")
     return _load(name)

@@ -154,8 +154,8 @@ def _make_node(
 def _start_node(
     name: str, log_level: int, xmlrpc_port: int, tcpros_port: int, disable_rosout: bool
 ) -> Node:
-    from rosx.node.startup import ParamArgsError  # noqa: PLC0415
-    from rosx.transport.errors import TransportError  # noqa: PLC0415
+    from rosx.node.startup import ParamArgsError  # noqa: PLC0415 - the node runtime loads with the first node
+    from rosx.transport.errors import TransportError  # noqa: PLC0415 - the network code loads only to talk
 
     told = False
     while True:

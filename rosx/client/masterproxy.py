@@ -32,7 +32,7 @@ class MasterProxy:
     """The master at ``uri``, called as the process's node (see the module docstring)."""
 
     def __init__(self, uri: str) -> None:
-        from rosx.transport.client import ServerProxy  # noqa: PLC0415
+        from rosx.transport.client import ServerProxy  # noqa: PLC0415 - the network code loads only to talk
 
         self.uri = uri
         #: The master's plain XML-RPC proxy (no caller, no resolution), as rospy's ``target``.
@@ -82,7 +82,7 @@ class MasterProxy:
 
     def search_param(self, key: str) -> str | None:
         """The closest ``key`` up the node's namespaces, or None (a remapped key first)."""
-        from rosx.client.names import get_mappings  # noqa: PLC0415
+        from rosx.client.names import get_mappings  # noqa: PLC0415 - the rospy API loads only when used
 
         key = get_mappings().get(key, key)
         code, status, value = self.target.searchParam(state.CLIENT.caller_id(), key)
@@ -94,7 +94,7 @@ class MasterProxy:
 
     def get_param_cached(self, key: str) -> Any:
         """``key``'s value, from the cache the master keeps current once the node runs."""
-        from rosx.client.params import get_param_cached  # noqa: PLC0415
+        from rosx.client.params import get_param_cached  # noqa: PLC0415 - the rospy API loads only when used
 
         return get_param_cached(key)
 

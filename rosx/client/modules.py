@@ -61,7 +61,7 @@ def _exports(package: str, kind: str, names: Sequence[str]) -> list[str]:
 
 
 def _lookup(package: str, kind: str, name: str) -> type:
-    from rosx.msg.codec.classes import get_message_class, get_service_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class, get_service_class  # noqa: PLC0415 - message classes load on first use
 
     if kind == "srv":
         for suffix in ("Request", "Response"):

@@ -120,7 +120,7 @@ def scoped_name(caller_id: str, name: str) -> str:
         ROSException: ``caller_id`` is not global.
     """
     if not is_global(caller_id):
-        from rosx.client.exceptions import ROSException  # noqa: PLC0415
+        from rosx.client.exceptions import ROSException  # noqa: PLC0415 - the rospy API loads only when used
 
         raise ROSException("caller_id must be global")
     return canonicalize(name)[len(namespace_of(caller_id)) :]

@@ -24,11 +24,11 @@ def _params() -> ParamClient:
     node = client.node
     if node is not None and client.caller_override is None:
         return node.params
-    from rosx.node.params import ParamCache, ParamClient  # noqa: PLC0415
+    from rosx.node.params import ParamCache, ParamClient  # noqa: PLC0415 - the node runtime loads with the first node
 
     master = client.master()
     if client.caller_override is not None:
-        from rosx.master.client import MasterClient  # noqa: PLC0415
+        from rosx.master.client import MasterClient  # noqa: PLC0415 - the master's code loads only to talk to one
 
         master = MasterClient(client.master_uri(), client.caller_override)
     return ParamClient(master, client.resolve_name, lambda: "", ParamCache())

@@ -100,7 +100,7 @@ def read_points_list(
 
 def create_cloud(header: Any, fields: Sequence[Any], points: Iterable[Sequence[Any]]) -> Any:
     """A ``sensor_msgs/PointCloud2`` of ``points`` (see the module's docstring)."""
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     layout = struct.Struct(_get_struct_fmt(False, fields))
     rows = list(points)
@@ -124,7 +124,7 @@ def create_cloud(header: Any, fields: Sequence[Any], points: Iterable[Sequence[A
 
 def create_cloud_xyz32(header: Any, points: Iterable[Sequence[float]]) -> Any:
     """A cloud of ``points`` (x, y, z) as FLOAT32 fields ``x``, ``y``, ``z``."""
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     field = get_message_class("sensor_msgs/PointField")
     fields = [field(name, offset, 7, 1) for name, offset in (("x", 0), ("y", 4), ("z", 8))]

@@ -57,7 +57,7 @@ def get_master_uri(env: Mapping[str, str] | None = None, argv: Sequence[str] | N
             if len(parts) != 2 or not parts[1]:
                 raise ValueError(f"__master remapping argument '{arg}' improperly specified")
             return parts[1]
-    from rosx.master.defaults import DEFAULT_MASTER_URI  # noqa: PLC0415
+    from rosx.master.defaults import DEFAULT_MASTER_URI  # noqa: PLC0415 - the master's code loads only to talk to one
 
     return (os.environ if env is None else env).get(ROS_MASTER_URI, DEFAULT_MASTER_URI)
 
@@ -76,9 +76,9 @@ class Master:
     """The ROS master's API with its return codes checked (see the module docstring)."""
 
     def __init__(self, caller_id: str, master_uri: str | None = None) -> None:
-        from rosx.client.rosgraph_names import make_caller_id  # noqa: PLC0415
-        from rosx.wire.errors import ProtocolError  # noqa: PLC0415
-        from rosx.wire.xmlrpc_http import parse_http_uri  # noqa: PLC0415
+        from rosx.client.rosgraph_names import make_caller_id  # noqa: PLC0415 - the rospy API loads only when used
+        from rosx.wire.errors import ProtocolError  # noqa: PLC0415 - protocol code loads only when used
+        from rosx.wire.xmlrpc_http import parse_http_uri  # noqa: PLC0415 - protocol code loads only when used
 
         uri = get_master_uri() if master_uri is None else master_uri
         try:
@@ -90,9 +90,9 @@ class Master:
         self._client: MasterClient | None = None
 
     def _call(self, method: str, *params: Any) -> Any:
-        from rosx.master.client import MasterClient, MasterUnreachable  # noqa: PLC0415
-        from rosx.master.client import MasterError as Refused  # noqa: PLC0415
-        from rosx.transport.errors import ConnectError  # noqa: PLC0415
+        from rosx.master.client import MasterClient, MasterUnreachable  # noqa: PLC0415 - the master's code loads only to talk to one
+        from rosx.master.client import MasterError as Refused  # noqa: PLC0415 - the master's code loads only to talk to one
+        from rosx.transport.errors import ConnectError  # noqa: PLC0415 - the network code loads only to talk
 
         if self._client is None:
             self._client = MasterClient(self.master_uri, self.caller_id)

@@ -141,7 +141,7 @@ def get_message_class(message_type: str, reload_on_error: bool = False) -> Any:
     """The class of message ``message_type`` (``time`` and ``duration`` too), or None if there
     is no such type; ValueError for a name without its package."""
     from rosx.msg.codec import rostime  # noqa: PLC0415 - on first use
-    from rosx.msg.codec.classes import get_message_class as message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class as message_class  # noqa: PLC0415 - message classes load on first use
     from rosx.msg.store import UnknownTypeError  # noqa: PLC0415 - on first use
 
     if message_type in ("time", "duration"):
@@ -155,7 +155,7 @@ def get_message_class(message_type: str, reload_on_error: bool = False) -> Any:
 
 def get_service_class(service_type: str, reload_on_error: bool = False) -> Any:
     """The class of service ``service_type``, or None if there is no such type."""
-    from rosx.msg.codec.classes import get_service_class as service_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_service_class as service_class  # noqa: PLC0415 - message classes load on first use
     from rosx.msg.store import UnknownTypeError  # noqa: PLC0415 - on first use
 
     if "/" not in service_type:

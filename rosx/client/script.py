@@ -46,7 +46,7 @@ def shim_environ(environ: Mapping[str, str], dirs: Sequence[Path] = (SHIM_DIR,))
 def prepare_imports(dirs: Sequence[Path] = (SHIM_DIR,)) -> None:
     """Make ``import rospy`` (and the modules of the other ``dirs``) and ``<package>.msg``
     give rosx's, in this process."""
-    from rosx.client.modules import install  # noqa: PLC0415
+    from rosx.client.modules import install  # noqa: PLC0415 - the rospy API loads only when used
 
     for shim in reversed([str(d) for d in dirs]):
         if shim not in sys.path:
@@ -106,7 +106,7 @@ def run_script(
 
 
 def _execute(code: types.CodeType, main: types.ModuleType, path: str, err: TextIO) -> int:
-    from rosx.client import state  # noqa: PLC0415
+    from rosx.client import state  # noqa: PLC0415 - the rospy API loads only when used
 
     try:
         exec(code, main.__dict__)
@@ -130,8 +130,8 @@ def _execute(code: types.CodeType, main: types.ModuleType, path: str, err: TextI
 def _stopped_by_signal(error: BaseException) -> bool:
     """Whether ``error`` is the API's answer to Ctrl-C or SIGTERM (``init_node`` interrupted
     while it waited for the master, say): the user asked to stop, nothing went wrong."""
-    from rosx.client import state  # noqa: PLC0415
-    from rosx.client.exceptions import ROSException  # noqa: PLC0415
+    from rosx.client import state  # noqa: PLC0415 - the rospy API loads only when used
+    from rosx.client.exceptions import ROSException  # noqa: PLC0415 - the rospy API loads only when used
 
     client = state.CLIENT
     return isinstance(error, ROSException) and client.shutdown_reason.startswith("signal-")

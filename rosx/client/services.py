@@ -121,7 +121,7 @@ class ServiceProxy:
         self._client_node: Node | None = None
 
     def _service_client(self) -> ServiceClient:
-        from rosx.node import ServiceClient  # noqa: PLC0415
+        from rosx.node import ServiceClient  # noqa: PLC0415 - the node runtime loads with the first node
 
         node = state.CLIENT.node
         if self._client is None or self._client_node is not node:
@@ -172,7 +172,7 @@ def wait_for_service(service: str, timeout: float | None = None) -> None:
         ROSException: ``timeout`` seconds (or a `Duration`) passed first.
         ROSInterruptException: the node shut down meanwhile.
     """
-    from rosx.node.service_client import contact_service  # noqa: PLC0415
+    from rosx.node.service_client import contact_service  # noqa: PLC0415 - the node runtime loads with the first node
 
     seconds = None if timeout is None else getattr(timeout, "to_sec", lambda: timeout)()
     if seconds is not None and float(seconds) == 0.0:

@@ -140,7 +140,7 @@ class Client:
         """The master's URI: the node's, else ``__master:=``, else ``ROS_MASTER_URI``."""
         if self.node is not None:
             return self.node.master.uri
-        from rosx.master.defaults import master_uri  # noqa: PLC0415
+        from rosx.master.defaults import master_uri  # noqa: PLC0415 - the master's code loads only to talk to one
 
         return master_uri(os.environ, self.args.master)
 
@@ -150,7 +150,7 @@ class Client:
             return self.node.master
         with self.lock:
             if self._master is None:
-                from rosx.master.client import MasterClient  # noqa: PLC0415
+                from rosx.master.client import MasterClient  # noqa: PLC0415 - the master's code loads only to talk to one
 
                 self._master = MasterClient(self.master_uri(), self.caller_id())
             return self._master

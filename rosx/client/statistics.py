@@ -104,8 +104,8 @@ class SubscriptionStatistics:
                 statistics.publish(self._message(publisher, report))
 
     def _message(self, publisher: str, r: WindowReport) -> Any:
-        from rosx.client.timing import Duration, Time  # noqa: PLC0415
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+        from rosx.client.timing import Duration, Time  # noqa: PLC0415 - the rospy API loads only when used
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
         d = Duration.from_nsec
         return get_message_class(_TYPE)(

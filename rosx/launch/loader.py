@@ -79,7 +79,7 @@ def load_mappings(argv: Sequence[str]) -> dict[str, str]:
 
     ``_param:=value`` private-parameter arguments are left out; ``__ns:=`` and the like stay.
     """
-    from rosx.names.remap_args import is_legal_remap  # noqa: PLC0415
+    from rosx.names.remap_args import is_legal_remap  # noqa: PLC0415 - name rules load only when used
 
     mappings: dict[str, str] = {}
     for arg in argv:
@@ -92,7 +92,7 @@ def load_mappings(argv: Sequence[str]) -> dict[str, str]:
 
 
 def _find_in_package(package: str, name: str, package_index: PackageIndex) -> list[str]:
-    from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415
+    from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415 - the package index loads only when used
 
     try:
         package_index.find(package)
@@ -146,12 +146,12 @@ def load_launch(
     Raises:
         LaunchError: Anything wrong in any file; nothing of the plan is returned.
     """
-    from rosx.names.anonymous import anonymous_name  # noqa: PLC0415
-    from rosx.names.script import ros_namespace  # noqa: PLC0415
+    from rosx.names.anonymous import anonymous_name  # noqa: PLC0415 - name rules load only when used
+    from rosx.names.script import ros_namespace  # noqa: PLC0415 - name rules load only when used
 
     environ = os.environ if environ is None else environ
     if package_index is None:
-        from rosx.packages.index import PackageIndex  # noqa: PLC0415
+        from rosx.packages.index import PackageIndex  # noqa: PLC0415 - the package index loads only when used
 
         package_index = PackageIndex.from_environ(environ)
     world = substitution.World(environ, package_index, anonymous or anonymous_name)
@@ -174,7 +174,7 @@ def load_launch(
 
 def roscore_params() -> dict[str, Any]:
     """What roslaunch's ``roscore.xml`` sets: ``/rosversion`` and ``/rosdistro``, as rosx's core."""
-    from rosx.core.params import ROSDISTRO, ROSVERSION  # noqa: PLC0415
+    from rosx.core.params import ROSDISTRO, ROSVERSION  # noqa: PLC0415 - the core loads only when one starts
 
     return {"/rosversion": ROSVERSION, "/rosdistro": ROSDISTRO}
 

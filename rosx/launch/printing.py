@@ -81,7 +81,7 @@ def nodes_text(plan: LaunchPlan) -> str:
 
 
 def _wanted(name: str, environ: Mapping[str, str]) -> str:
-    from rosx.names.script import ros_namespace, script_resolve_name  # noqa: PLC0415
+    from rosx.names.script import ros_namespace, script_resolve_name  # noqa: PLC0415 - name rules load only when used
 
     try:
         namespace = ros_namespace(environ)
@@ -164,7 +164,7 @@ def files_text(plan: LaunchPlan) -> str:
 
 def dump_params_text(plan: LaunchPlan) -> str:
     """``--dump-params``: the parameters as YAML (``yaml.safe_dump`` of name -> value)."""
-    from rosx.msg.text.yamldump import dump  # noqa: PLC0415
+    from rosx.msg.text.yamldump import dump  # noqa: PLC0415 - the text forms load on first use
 
     return dump({name: p.value for name, p in plan.params.items()}) + "\n"
 

@@ -36,8 +36,8 @@ def node_program(node: Node, package_index: PackageIndex) -> Path:
         LaunchError: roslaunch's ``Cannot locate node of type [T] in package [P]…``, or the
             package is not found; the error names the ``<node>`` tag.
     """
-    from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415
-    from rosx.workspace.executables import find_executables  # noqa: PLC0415
+    from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415 - the package index loads only when used
+    from rosx.workspace.executables import find_executables  # noqa: PLC0415 - workspace code loads only when used
 
     tag = "test" if hasattr(node, "test_name") else "node"
     try:

@@ -87,7 +87,7 @@ class World:
         """``$(find package)``, or the directory to read ``path`` from when one follows it:
         the first package on the package path, as ROS 1, unless only rosx's own package of
         that name has ``path`` (see `PackageIndex.directories`)."""
-        from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415
+        from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415 - the package index loads only when used
 
         try:
             first = self.package_index.find(package)

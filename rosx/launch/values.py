@@ -86,7 +86,7 @@ def binary_value(path: str) -> bytes:
 def command_value(name: str, command: str, type_: str, run: CommandRunner | None) -> Any:
     """``command``: the standard output of the command line (run by ``run``), converted to
     ``type_``; without ``run`` (a plan read for a look only) the parameter is refused."""
-    import shlex  # noqa: PLC0415
+    import shlex  # noqa: PLC0415 - shlex is not needed at start-up
 
     try:
         argv = shlex.split(command)
@@ -125,8 +125,8 @@ def load_yaml(text: str, *, rosparam: bool = True) -> Any:
     Raises:
         ValueConversionError: The text is not YAML (PyYAML's description of the problem).
     """
-    from rosx.msg.text.yamlload import load  # noqa: PLC0415
-    from rosx.msg.text.yamlparams import load_value  # noqa: PLC0415
+    from rosx.msg.text.yamlload import load  # noqa: PLC0415 - the text forms load on first use
+    from rosx.msg.text.yamlparams import load_value  # noqa: PLC0415 - the text forms load on first use
 
     try:
         return load_value(text) if rosparam else load(text)

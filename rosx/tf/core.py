@@ -573,7 +573,7 @@ class BufferCore:
         Raises:
             TransformException: a frame is unknown or the frames do not connect.
         """
-        from rosx.tf.exceptions import TransformException  # noqa: PLC0415
+        from rosx.tf.exceptions import TransformException  # noqa: PLC0415 - tf code loads only when used
 
         with self._lock:
             target_id = self.validate("get_latest_common_time", target)
@@ -729,13 +729,13 @@ class BufferCore:
 
     def frames_as_yaml(self, current_time: float = 0.0) -> str:
         """tf2's ``allFramesAsYAML`` (``transform_delay`` when ``current_time`` > 0, in s)."""
-        from rosx.tf.describe import frames_yaml  # noqa: PLC0415
+        from rosx.tf.describe import frames_yaml  # noqa: PLC0415 - tf code loads only when used
 
         return frames_yaml(self.frames(), current_time)
 
     def frames_as_dot(self, current_time: float = 0.0) -> str:
         """tf2's ``_allFramesAsDot``: the tree in Graphviz's language, as view_frames draws."""
-        from rosx.tf.describe import frames_dot  # noqa: PLC0415
+        from rosx.tf.describe import frames_dot  # noqa: PLC0415 - tf code loads only when used
 
         return frames_dot(self.frames(), current_time)
 

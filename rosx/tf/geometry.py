@@ -94,7 +94,7 @@ def do_transform_wrench(wrench: Any, transform: Any) -> Any:
 
 def register() -> None:
     """Make these the buffers' ``transform()`` of the four stamped types."""
-    from rosx.tf.interface import ConvertRegistration, TransformRegistration  # noqa: PLC0415
+    from rosx.tf.interface import ConvertRegistration, TransformRegistration  # noqa: PLC0415 - tf code loads only when used
 
     converts = ConvertRegistration()
     transforms = TransformRegistration()

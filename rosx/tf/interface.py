@@ -112,7 +112,7 @@ def convert(a: Any, b_type: Any) -> Any:
 
 def Stamped(obj: Any, stamp: Any, frame_id: str) -> Any:  # noqa: N802 - tf2_ros's name
     """``obj`` with a ``header`` of ``stamp`` and ``frame_id``."""
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     obj.header = get_message_class("std_msgs/Header")(frame_id=frame_id, stamp=stamp)
     return obj

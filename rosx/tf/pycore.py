@@ -77,7 +77,7 @@ def _transform_of(msg: Any, exact_types: bool) -> tuple[str, str, int, Transform
 
 def _message_classes() -> tuple[type[Any], type[Any]]:
     from rosx.client.timing import Time  # noqa: PLC0415 - rospy's Time, as the binding returns
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     return get_message_class("geometry_msgs/TransformStamped"), Time
 

@@ -73,12 +73,12 @@ class ScriptEndpoint:
         return get_name()
 
     def ready(self) -> bool:
-        from rosx.client import state  # noqa: PLC0415
+        from rosx.client import state  # noqa: PLC0415 - the rospy API loads only when used
 
         return state.CLIENT.initialized
 
     def is_shutdown(self) -> bool:
-        from rosx.client.lifecycle import is_shutdown  # noqa: PLC0415
+        from rosx.client.lifecycle import is_shutdown  # noqa: PLC0415 - the rospy API loads only when used
 
         return is_shutdown()
 
@@ -90,7 +90,7 @@ class ScriptEndpoint:
         queue_size: int | None,
         tcp_nodelay: bool = False,
     ) -> Handle:
-        from rosx.client.topics import Subscriber  # noqa: PLC0415
+        from rosx.client.topics import Subscriber  # noqa: PLC0415 - the rospy API loads only when used
 
         return Subscriber(
             topic, data_class, callback, queue_size=queue_size, tcp_nodelay=tcp_nodelay
@@ -99,7 +99,7 @@ class ScriptEndpoint:
     def advertise(
         self, topic: str, data_class: type[Message], queue_size: int, latch: bool
     ) -> Publishing:
-        from rosx.client.topics import Publisher  # noqa: PLC0415
+        from rosx.client.topics import Publisher  # noqa: PLC0415 - the rospy API loads only when used
 
         return Publisher(topic, data_class, queue_size=queue_size, latch=latch)
 
@@ -109,7 +109,7 @@ class ScriptEndpoint:
         service_class: type[ServiceDefinition],
         handler: Callable[[Any], object],
     ) -> Handle:
-        from rosx.client.services import Service  # noqa: PLC0415
+        from rosx.client.services import Service  # noqa: PLC0415 - the rospy API loads only when used
 
         return Service(name, service_class, handler)
 
@@ -189,14 +189,14 @@ def forget(place: Endpoint, what: str) -> None:
 
 def message_class(name: str) -> type[Message]:
     """The class of message type ``name`` (``tf2_msgs/TFMessage``…)."""
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     return get_message_class(name)
 
 
 def service_class(name: str) -> type[ServiceDefinition]:
     """The class of service type ``name`` (``tf2_msgs/FrameGraph``)."""
-    from rosx.msg.codec.classes import get_service_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_service_class  # noqa: PLC0415 - message classes load on first use
 
     return get_service_class(name)
 

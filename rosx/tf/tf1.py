@@ -30,7 +30,7 @@ def strip_leading_slash(s: str) -> str:
 
 
 def _message(name: str) -> Any:
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     return get_message_class(name)
 
@@ -231,7 +231,7 @@ class Transformer:
         averaging_interval: Any,
     ) -> tuple[tuple[float, ...], tuple[float, ...]]:
         """`lookupTwist` expressed in ``reference_frame`` at ``ref_point``."""
-        from rosx.client.timing import Duration, Time  # noqa: PLC0415
+        from rosx.client.timing import Duration, Time  # noqa: PLC0415 - the rospy API loads only when used
 
         np = _numpy()
         tf = _transformations()
@@ -356,7 +356,7 @@ class TransformListener(TransformerROS):
     """A `TransformerROS` filled from ``/tf`` and ``/tf_static``."""
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
-        from rosx.tf.listener import TransformListener as Listener  # noqa: PLC0415
+        from rosx.tf.listener import TransformListener as Listener  # noqa: PLC0415 - tf code loads only when used
 
         TransformerROS.__init__(self, *args, **kwargs)
         self._listener = Listener(self._buffer, node=kwargs.get("node"))
@@ -367,7 +367,7 @@ class TransformBroadcaster:
     """tf's broadcaster: ``sendTransform(translation, rotation, time, child, parent)``."""
 
     def __init__(self, queue_size: int = 100, node: Node | None = None) -> None:
-        from rosx.tf.broadcaster import TransformBroadcaster as Broadcaster  # noqa: PLC0415
+        from rosx.tf.broadcaster import TransformBroadcaster as Broadcaster  # noqa: PLC0415 - tf code loads only when used
 
         self.tf2_broadcaster = Broadcaster(node=node)
 

@@ -124,7 +124,7 @@ def is_local_host(host: str) -> bool:
     ROS 1 (rosgraph.network.is_local_address) asks the same; used to warn when
     ``ROS_MASTER_URI`` names another machine. Looks the name up, so it may block briefly.
     """
-    import socket  # noqa: PLC0415 -- the other helpers are string work; keep them import-cheap
+    import socket  # noqa: PLC0415 - the other helpers are string work; keep them import-cheap
 
     if is_loopback_host(host):
         return True
@@ -148,7 +148,7 @@ def foreign_address_warning(environ: Mapping[str, str], remap: str | None = None
     nothing to say why. Only a literal IPv4 or IPv6 address is checked (by binding a socket to
     it: no traffic, no name look-up); a host name is left to the resolver.
     """
-    import ipaddress  # noqa: PLC0415 -- the other helpers are string work; keep them import-cheap
+    import ipaddress  # noqa: PLC0415 - the other helpers are string work; keep them import-cheap
     import socket  # noqa: PLC0415 - socket is not needed at start-up
 
     override = address_override(environ, remap)

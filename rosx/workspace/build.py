@@ -232,7 +232,7 @@ class CatkinMake:
             if not any((manifest.directory / kind).is_dir() for kind in ("msg", "srv", "action")):
                 continue
             # The message system loads only for packages that have types.
-            from rosx.workspace.types import build_types, type_paths  # noqa: PLC0415
+            from rosx.workspace.types import build_types, type_paths  # noqa: PLC0415 - workspace code loads only when used
 
             for path in type_paths(manifest, chosen)["action"]:
                 yield f"-- Generating .msg files for action {manifest.name}/{path.stem} {path}"
@@ -249,7 +249,7 @@ class CatkinMake:
         self._write(built)
         yield from _progress(built)
         if self.install:
-            from rosx.workspace.install import install_space  # noqa: PLC0415
+            from rosx.workspace.install import install_space  # noqa: PLC0415 - workspace code loads only when used
 
             yield "Install the project..."
             for path in install_space(layout, ordered, self._setup_files):
@@ -262,7 +262,7 @@ class CatkinMake:
         Raises:
             BuildError: a folder or file it names does not exist (CMake's error).
         """
-        from rosx.workspace.cmake import TYPE_FOLDERS, type_files, unsupported  # noqa: PLC0415
+        from rosx.workspace.cmake import TYPE_FOLDERS, type_files, unsupported  # noqa: PLC0415 - workspace code loads only when used
 
         path = manifest.directory / "CMakeLists.txt"
         try:
@@ -351,7 +351,7 @@ NO_CPP = "-- rosx compiles no C++: these C++ targets are not built (rosx runs Py
 
 
 def _cpp_targets(manifests: list[Manifest]) -> list[tuple[str, list[str]]]:
-    from rosx.workspace.cmake import cpp_targets  # noqa: PLC0415
+    from rosx.workspace.cmake import cpp_targets  # noqa: PLC0415 - workspace code loads only when used
 
     found = []
     for manifest in manifests:

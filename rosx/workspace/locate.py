@@ -46,7 +46,7 @@ def locate(target: str, environ: Mapping[str, str], notes: list[str] | None = No
         return workspace_dir(environ)
     package, _, rest = target.partition("/")
     if package == "log":
-        from rosx.workspace.logdir import current_log_dir  # noqa: PLC0415
+        from rosx.workspace.logdir import current_log_dir  # noqa: PLC0415 - workspace code loads only when used
 
         directory, running = current_log_dir(environ)
         if not running and notes is not None:

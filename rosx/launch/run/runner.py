@@ -228,7 +228,7 @@ class LaunchRun:
 
     def _script_environ(self, environ: Mapping[str, str]) -> dict[str, str]:
         """``environ`` for a Python node: the shim directories first on ``PYTHONPATH``."""
-        from rosx.client.script import SHIM_DIR, shim_environ  # noqa: PLC0415
+        from rosx.client.script import SHIM_DIR, shim_environ  # noqa: PLC0415 - the rospy API loads only when used
 
         return shim_environ(environ, self.settings.shim_dirs or (SHIM_DIR,))
 
@@ -240,7 +240,7 @@ class LaunchRun:
         """
         self._check_plan()
         if self.plan.nodes and self.fork_python_nodes:
-            from rosx.launch.run.zygote import ZygoteClient  # noqa: PLC0415
+            from rosx.launch.run.zygote import ZygoteClient  # noqa: PLC0415 - launch code loads only for launch files
 
             # Started first, so that it loads Python's side of the nodes while the launcher
             # starts the core.
@@ -268,8 +268,8 @@ class LaunchRun:
         return self.package_index.path_packages
 
     def _run(self) -> int:
-        from rosx.launch.printing import summary_text  # noqa: PLC0415
-        from rosx.launch.run.server import LaunchServer  # noqa: PLC0415
+        from rosx.launch.printing import summary_text  # noqa: PLC0415 - launch code loads only for launch files
+        from rosx.launch.run.server import LaunchServer  # noqa: PLC0415 - launch code loads only for launch files
 
         running = self._master.is_online()
         if self.settings.wait_for_master and not running:
@@ -402,7 +402,7 @@ class LaunchRun:
             ok, value = self._ask("getParam", "/run_id")
             if ok and isinstance(value, str) and value:
                 return value
-            import uuid  # noqa: PLC0415
+            import uuid  # noqa: PLC0415 - uuid is not needed at start-up
 
             return str(uuid.uuid1())
         from rosx.core import Core  # noqa: PLC0415 - the master's code only when it starts
@@ -445,7 +445,7 @@ class LaunchRun:
         core = [p for p in self.plan.params.values() if p.source.file == CORE_SOURCE]
         if not core:
             return
-        from rosx.workspace.environment import ROS_ETC_DIR  # noqa: PLC0415
+        from rosx.workspace.environment import ROS_ETC_DIR  # noqa: PLC0415 - workspace code loads only when used
 
         etc = self.environ.get("ROS_ETC_DIR") or str(ROS_ETC_DIR)
         self.console.plain(f"... loading XML file [{Path(etc, 'roscore.xml')}]")
@@ -480,7 +480,7 @@ class LaunchRun:
         return started
 
     def _start_core(self, port: int) -> None:
-        from rosx.core import PortInUseError  # noqa: PLC0415
+        from rosx.core import PortInUseError  # noqa: PLC0415 - the core loads only when one starts
 
         assert self.core is not None
         self.console.bold(f"process[master]: started with pid [{os.getpid()}]")
@@ -507,7 +507,7 @@ class LaunchRun:
     # -- parameters ------------------------------------------------------------------------
 
     def _run_rosparam_commands(self) -> None:
-        from rosx.msg.text.yamlparams import dump_value  # noqa: PLC0415
+        from rosx.msg.text.yamlparams import dump_value  # noqa: PLC0415 - the text forms load on first use
 
         for step in self.plan.rosparam_commands:
             if step.command == "delete":
@@ -555,7 +555,7 @@ class LaunchRun:
                 self.console.error(f"local launch of {node.package}/{node.type} failed")
 
     def _node_process(self, node: Node, counter: int) -> LocalProcess | None:
-        from rosx.launch.process import node_command_line, node_environment  # noqa: PLC0415
+        from rosx.launch.process import node_command_line, node_environment  # noqa: PLC0415 - launch code loads only for launch files
 
         try:
             index = self.package_index
@@ -588,7 +588,7 @@ class LaunchRun:
         }
         cwd = self._cwd(node, executable)
         if self.zygote is not None and argv[: len(self.script_command)] == self.script_command:
-            from rosx.launch.run.zygote import ForkedProcess  # noqa: PLC0415
+            from rosx.launch.run.zygote import ForkedProcess  # noqa: PLC0415 - launch code loads only for launch files
 
             return ForkedProcess(
                 name,

@@ -56,22 +56,22 @@ def _preload(crawled: Mapping[str, str] | None) -> None:
     """Import what a rospy node imports, and the types every node uses; ``crawled`` is the
     launcher's crawl of the package path (the helper's own), which it then need not redo."""
     if crawled is not None:
-        from pathlib import Path  # noqa: PLC0415
+        from pathlib import Path  # noqa: PLC0415 - pathlib is not needed at start-up
 
-        from rosx.msg.store import share_package_index  # noqa: PLC0415
-        from rosx.packages.crawl import split_package_path  # noqa: PLC0415
-        from rosx.packages.index import PackageIndex  # noqa: PLC0415
+        from rosx.msg.store import share_package_index  # noqa: PLC0415 - the type store loads on first use
+        from rosx.packages.crawl import split_package_path  # noqa: PLC0415 - the package index loads only when used
+        from rosx.packages.index import PackageIndex  # noqa: PLC0415 - the package index loads only when used
 
         package_path = split_package_path(os.environ.get("ROS_PACKAGE_PATH"))
         found = {name: Path(directory) for name, directory in crawled.items()}
         share_package_index(PackageIndex(package_path, crawled=found))
 
-    from rosx.client.script import prepare_imports  # noqa: PLC0415
+    from rosx.client.script import prepare_imports  # noqa: PLC0415 - the rospy API loads only when used
 
     prepare_imports()
     import rospy  # type: ignore[import-not-found]  # noqa: F401, PLC0415 - rosx's, via the shim
 
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     for name in ("rosgraph_msgs/Log", "std_msgs/String", "geometry_msgs/Twist"):
         with contextlib.suppress(Exception):
@@ -111,7 +111,7 @@ def _child(
                 os.close(stdout)
             if sys.stdout is None:
                 sys.stdout = open(1, "w", closefd=False)  # noqa: SIM115
-        from rosx.client.script import run_script  # noqa: PLC0415
+        from rosx.client.script import run_script  # noqa: PLC0415 - the rospy API loads only when used
 
         code = run_script(request["script"], request["args"])
     except KeyboardInterrupt:
@@ -255,7 +255,7 @@ class ZygoteClient:
 
     def accepts(self, environ: Mapping[str, str]) -> bool:
         """Whether a node with ``environ`` can be forked from the helper."""
-        from rosx.client.script import shim_environ  # noqa: PLC0415
+        from rosx.client.script import shim_environ  # noqa: PLC0415 - the rospy API loads only when used
 
         loaded = shim_environ(self.environ)
         return not self._gone and all(environ.get(k) == loaded.get(k) for k in LOADED_FROM)
