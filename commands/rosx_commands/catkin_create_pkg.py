@@ -14,7 +14,7 @@ from rosx_commands.context import CommandError, Environment, ExitStatus
 
 
 def _catkin_create_pkg(argv: list[str], env: Environment) -> int:
-    from rosx_commands.argparser import ToolArgumentParser  # noqa: PLC0415
+    from rosx_commands.argparser import ToolArgumentParser  # noqa: PLC0415 - this tool's parts load only when used
 
     parser = ToolArgumentParser(env, "catkin_create_pkg")
     parser.description = "Creates a new catkin package"
@@ -50,7 +50,7 @@ def _catkin_create_pkg(argv: list[str], env: Environment) -> int:
         create_package,
         plan_package,
     )
-    from rosx_commands.invocation import working_directory  # noqa: PLC0415
+    from rosx_commands.invocation import working_directory  # noqa: PLC0415 - this tool's parts load only when used
 
     request = PackageRequest(
         name=args.name[0],

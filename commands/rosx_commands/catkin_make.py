@@ -23,7 +23,7 @@ _DESCRIPTION = (
 
 
 def _catkin_make(argv: list[str], env: Environment) -> int:
-    from rosx_commands.argparser import ToolArgumentParser  # noqa: PLC0415
+    from rosx_commands.argparser import ToolArgumentParser  # noqa: PLC0415 - this tool's parts load only when used
 
     parser = ToolArgumentParser(env, "catkin_make")
     parser.description = _DESCRIPTION
@@ -71,10 +71,10 @@ def _catkin_make(argv: list[str], env: Environment) -> int:
     )
     args, targets = parser.parse_known_args(argv)
 
-    from rosx.workspace.build import CatkinMake, workspace_layout  # noqa: PLC0415
-    from rosx.workspace.errors import BuildError  # noqa: PLC0415
-    from rosx_commands.invocation import self_command, working_directory  # noqa: PLC0415
-    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
+    from rosx.workspace.build import CatkinMake, workspace_layout  # noqa: PLC0415 - workspace code loads only when used
+    from rosx.workspace.errors import BuildError  # noqa: PLC0415 - workspace code loads only when used
+    from rosx_commands.invocation import self_command, working_directory  # noqa: PLC0415 - this tool's parts load only when used
+    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415 - this tool's parts load only when used
 
     layout = workspace_layout(working_directory(env), args.directory, args.source, args.build)
     # --pkg only narrows what make builds; rosx builds every package's types (it is cheap).

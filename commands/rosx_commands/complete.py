@@ -86,7 +86,7 @@ class _Line:
     @property
     def index(self) -> PackageIndex:
         if self._index is None:
-            from rosx.packages.index import PackageIndex  # noqa: PLC0415
+            from rosx.packages.index import PackageIndex  # noqa: PLC0415 - the package index loads only when used
 
             self._index = PackageIndex.from_environ(self.env.environ)
         return self._index
@@ -94,7 +94,7 @@ class _Line:
     @property
     def store(self) -> TypeStore:
         if self._store is None:
-            from rosx.msg.store import TypeStore  # noqa: PLC0415
+            from rosx.msg.store import TypeStore  # noqa: PLC0415 - the type store loads on first use
 
             self._store = TypeStore.from_environ(self.env.environ)
         return self._store
@@ -104,7 +104,7 @@ class _Line:
 
 
 def _walk_files(line: _Line, package: str) -> list[Path]:
-    from rosx.packages.crawl import libexec_dir  # noqa: PLC0415
+    from rosx.packages.crawl import libexec_dir  # noqa: PLC0415 - the package index loads only when used
 
     directory = line.package_dir(package)
     if directory is None:
@@ -154,9 +154,9 @@ def _locations(line: _Line) -> list[str]:
 
 
 def _master_lists(line: _Line, what: str) -> list[str]:
-    from rosx.graph.state import registrations  # noqa: PLC0415
-    from rosx.master.client import MasterClient, MasterError  # noqa: PLC0415
-    from rosx.transport.errors import TransportError  # noqa: PLC0415
+    from rosx.graph.state import registrations  # noqa: PLC0415 - graph code loads only when asked for
+    from rosx.master.client import MasterClient, MasterError  # noqa: PLC0415 - the master's code loads only to talk to one
+    from rosx.transport.errors import TransportError  # noqa: PLC0415 - the network code loads only to talk
 
     master = MasterClient(line.env.master_uri, "/rosx_complete", timeout=MASTER_TIMEOUT)
     try:
@@ -175,8 +175,8 @@ def _master_lists(line: _Line, what: str) -> list[str]:
 
 
 def _topic_type(line: _Line, topic: str) -> str | None:
-    from rosx.master.client import MasterClient, MasterError  # noqa: PLC0415
-    from rosx.transport.errors import TransportError  # noqa: PLC0415
+    from rosx.master.client import MasterClient, MasterError  # noqa: PLC0415 - the master's code loads only to talk to one
+    from rosx.transport.errors import TransportError  # noqa: PLC0415 - the network code loads only to talk
 
     master = MasterClient(line.env.master_uri, "/rosx_complete", timeout=MASTER_TIMEOUT)
     try:
@@ -202,8 +202,8 @@ def _types(line: _Line, kind: str) -> list[str]:
 
 
 def _proto(line: _Line, kind: str, name: str) -> list[str]:
-    from rosx.msg.store import UnknownTypeError  # noqa: PLC0415
-    from rosx.msg.text.prototype import prototype  # noqa: PLC0415
+    from rosx.msg.store import UnknownTypeError  # noqa: PLC0415 - the type store loads on first use
+    from rosx.msg.text.prototype import prototype  # noqa: PLC0415 - the text forms load on first use
 
     store = line.store
     try:
@@ -252,8 +252,8 @@ def _roslaunch(line: _Line) -> list[str]:
 
 
 def _launch_args(line: _Line) -> list[str]:
-    from rosx.launch.errors import LaunchError  # noqa: PLC0415
-    from rosx.launch.loader import load_launch, resolve_launch_arguments  # noqa: PLC0415
+    from rosx.launch.errors import LaunchError  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.launch.loader import load_launch, resolve_launch_arguments  # noqa: PLC0415 - launch code loads only for launch files
 
     given = [w for w in line.words[1 : line.cword] if ":=" not in w][:2]
     try:
@@ -320,10 +320,10 @@ def _rosservice(line: _Line) -> list[str]:
 
 
 def _service_proto(line: _Line, service: str) -> list[str]:
-    from rosx.master.client import MasterClient, MasterError  # noqa: PLC0415
-    from rosx.node.errors import ServiceError  # noqa: PLC0415
-    from rosx.node.service_client import probe_service  # noqa: PLC0415
-    from rosx.transport.errors import TransportError  # noqa: PLC0415
+    from rosx.master.client import MasterClient, MasterError  # noqa: PLC0415 - the master's code loads only to talk to one
+    from rosx.node.errors import ServiceError  # noqa: PLC0415 - the node runtime loads with the first node
+    from rosx.node.service_client import probe_service  # noqa: PLC0415 - the node runtime loads with the first node
+    from rosx.transport.errors import TransportError  # noqa: PLC0415 - the network code loads only to talk
 
     master = MasterClient(line.env.master_uri, "/rosx_complete", timeout=MASTER_TIMEOUT)
     try:
@@ -351,7 +351,7 @@ def candidates(line: _Line) -> list[str]:
     """Every candidate for the current word (before filtering by what is typed)."""
     command = Path(line.word(0)).name
     if command == "rosx" and line.cword == 1:
-        from rosx_commands.tools import TOOLS  # noqa: PLC0415
+        from rosx_commands.tools import TOOLS  # noqa: PLC0415 - this tool's parts load only when used
 
         return [*TOOLS, "roscd", "rosls"]
     if command == "rosx":

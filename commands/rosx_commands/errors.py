@@ -44,7 +44,7 @@ def command_error(error: BaseException, env: Environment, status: int) -> Comman
     # A class whose module was never imported cannot have raised: look only at loaded ones.
     loaded = sys.modules
     if "rosx.master.client" in loaded:
-        from rosx.master.client import MasterError, MasterUnreachable  # noqa: PLC0415
+        from rosx.master.client import MasterError, MasterUnreachable  # noqa: PLC0415 - the master's code loads only to talk to one
 
         if isinstance(error, MasterUnreachable):
             return unreachable(env, error.uri, status)
@@ -53,7 +53,7 @@ def command_error(error: BaseException, env: Environment, status: int) -> Comman
             text = error.status
             return CommandError(text if text.startswith("ERROR: ") else f"ERROR: {text}", status)
     if "rosx.node.service_client" in loaded:
-        from rosx.node.service_client import ServiceRefused  # noqa: PLC0415
+        from rosx.node.service_client import ServiceRefused  # noqa: PLC0415 - the node runtime loads with the first node
 
         if isinstance(error, ServiceRefused):
             # rospy under Python 3 shows the server's text as bytes, and so does rosservice.
@@ -62,12 +62,12 @@ def command_error(error: BaseException, env: Environment, status: int) -> Comman
                 status,
             )
     if "rosx.node.errors" in loaded:
-        from rosx.node.errors import ServiceError  # noqa: PLC0415
+        from rosx.node.errors import ServiceError  # noqa: PLC0415 - the node runtime loads with the first node
 
         if isinstance(error, ServiceError):
             return CommandError(f"ERROR: {error}", status)
     if "rosx.graph.describe" in loaded:
-        from rosx.graph.describe import NodeContactError, UnknownTopicError  # noqa: PLC0415
+        from rosx.graph.describe import NodeContactError, UnknownTopicError  # noqa: PLC0415 - graph code loads only when asked for
 
         if isinstance(error, UnknownTopicError | NodeContactError):
             return CommandError(f"ERROR: {error}", status)

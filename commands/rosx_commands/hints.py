@@ -153,7 +153,7 @@ class _Names:
         if self._graph is None:
             self._graph = set()
             from rosx.graph.fetch import fetch_state  # noqa: PLC0415 - hints only
-            from rosx.master.client import MasterError, MasterUnreachable  # noqa: PLC0415
+            from rosx.master.client import MasterError, MasterUnreachable  # noqa: PLC0415 - the master's code loads only to talk to one
 
             try:
                 state = fetch_state(self.env.master_uri, "/rosx_hints", bus_info=False)

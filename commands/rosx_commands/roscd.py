@@ -32,7 +32,7 @@ def roscd(argv: Sequence[str], env: Environment) -> int:
         (env.stderr if where else env.stdout).write(_ROSCD_USAGE + "\n")
         return ExitStatus.OK
 
-    from rosx.workspace.locate import LocateError, locate  # noqa: PLC0415
+    from rosx.workspace.locate import LocateError, locate  # noqa: PLC0415 - workspace code loads only when used
 
     notes: list[str] = []
     try:
@@ -57,7 +57,7 @@ def rosls(argv: Sequence[str], env: Environment) -> int:
         env.out(_ROSLS_USAGE)
         return ExitStatus.OK
 
-    from rosx.workspace.locate import LocateError, locate  # noqa: PLC0415
+    from rosx.workspace.locate import LocateError, locate  # noqa: PLC0415 - workspace code loads only when used
 
     try:
         directory = locate(args[0] if args else "", env.environ)

@@ -24,7 +24,7 @@ _UNSUPPORTED = "rosclean is not supported on this platform"
 
 
 def _folders(env: Environment) -> list[tuple[Path, str]]:
-    from rosx.workspace.logdir import log_dir, ros_home  # noqa: PLC0415
+    from rosx.workspace.logdir import log_dir, ros_home  # noqa: PLC0415 - workspace code loads only when used
 
     folders = [
         (log_dir(env.environ), "ROS node logs"),
@@ -119,7 +119,7 @@ def _purge(env: Environment, yes: bool, size: int | None) -> int:
 
 
 def _rosclean(argv: list[str], env: Environment) -> int:
-    from rosx_commands.argparser import ToolArgumentParser  # noqa: PLC0415
+    from rosx_commands.argparser import ToolArgumentParser  # noqa: PLC0415 - this tool's parts load only when used
 
     parser = ToolArgumentParser(env, "rosclean")
     commands = parser.add_commands("{check,purge}")

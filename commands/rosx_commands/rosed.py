@@ -25,7 +25,7 @@ _ROSCP_USAGE = (
 
 
 def _files(package_dir: Path, name: str) -> list[Path]:
-    from rosx.packages.crawl import libexec_dir  # noqa: PLC0415
+    from rosx.packages.crawl import libexec_dir  # noqa: PLC0415 - the package index loads only when used
 
     found: list[Path] = []
     roots = [r for r in (libexec_dir(package_dir), package_dir) if r is not None]
@@ -54,7 +54,7 @@ def _choose(paths: list[Path], env: Environment) -> Path | None:
 def find_file(package: str, name: str, env: Environment) -> Path | None:
     """The file ``name`` of ``package``, as rosbash's ``_roscmd`` finds it; None (with
     rosbash's message printed) when there is none."""
-    from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
+    from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415 - the package index loads only when used
 
     try:
         directory = PackageIndex.from_environ(env.environ).find(package)
@@ -115,7 +115,7 @@ def roscp(argv: Sequence[str], env: Environment) -> int:
     path = find_file(args[0], args[1], env)
     if path is None:
         return ExitStatus.ERROR
-    from rosx_commands.invocation import working_directory  # noqa: PLC0415
+    from rosx_commands.invocation import working_directory  # noqa: PLC0415 - this tool's parts load only when used
 
     target = working_directory(env) / args[2]
     try:

@@ -287,9 +287,9 @@ def _print_option(
     index: PackageIndex,
 ) -> int:
     """The printing options: load the files as roslaunch loads them for it, and print."""
-    from rosx.launch import errors, loader, printing  # noqa: PLC0415
-    from rosx.launch.run.command import run_command  # noqa: PLC0415
-    from rosx.launch.run.runner import provided_program  # noqa: PLC0415
+    from rosx.launch import errors, loader, printing  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.launch.run.command import run_command  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.launch.run.runner import provided_program  # noqa: PLC0415 - launch code loads only for launch files
 
     try:
         plan = loader.load_launch(
@@ -328,7 +328,7 @@ def _print_option(
 
 
 def _write_pid(opts: dict[str, Any], env: Environment, port: int | None) -> Path | None:
-    from rosx.workspace.logdir import ros_home  # noqa: PLC0415
+    from rosx.workspace.logdir import ros_home  # noqa: PLC0415 - workspace code loads only when used
 
     if not (opts["pid_fn"] or opts["core"]):
         return None
@@ -361,13 +361,13 @@ def _launch(
     port: int | None,
     index: PackageIndex,
 ) -> int:
-    from rosx.launch.errors import LaunchError  # noqa: PLC0415
-    from rosx.launch.loader import load_launch  # noqa: PLC0415
-    from rosx.launch.run.command import run_command  # noqa: PLC0415
-    from rosx.launch.run.console import LaunchConsole  # noqa: PLC0415
-    from rosx.launch.run.runner import LaunchFailedError, LaunchRun, LaunchSettings  # noqa: PLC0415
-    from rosx_commands.invocation import script_command  # noqa: PLC0415
-    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
+    from rosx.launch.errors import LaunchError  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.launch.loader import load_launch  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.launch.run.command import run_command  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.launch.run.console import LaunchConsole  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.launch.run.runner import LaunchFailedError, LaunchRun, LaunchSettings  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx_commands.invocation import script_command  # noqa: PLC0415 - this tool's parts load only when used
+    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415 - this tool's parts load only when used
 
     try:
         plan = load_launch(files, cli_args, env.environ, index, argv=argv, run=run_command)
@@ -413,10 +413,10 @@ def _roslaunch(argv: list[str], env: Environment) -> int:
             kind = name.split("_")[0]
             raise _rlexception(f"{kind}_timeout must be a positive number, received {opts[name]:f}")
 
-    from rosx.launch.errors import LaunchError  # noqa: PLC0415
-    from rosx.launch.loader import resolve_launch_arguments  # noqa: PLC0415
-    from rosx.msg.store import share_package_index  # noqa: PLC0415
-    from rosx.packages.index import PackageIndex  # noqa: PLC0415
+    from rosx.launch.errors import LaunchError  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.launch.loader import resolve_launch_arguments  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.msg.store import share_package_index  # noqa: PLC0415 - the type store loads on first use
+    from rosx.packages.index import PackageIndex  # noqa: PLC0415 - the package index loads only when used
 
     # One crawl of the package path for the whole launch: the files, the nodes' programs, and
     # the types of the core it may start.

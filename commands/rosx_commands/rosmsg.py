@@ -174,9 +174,9 @@ def _show(tool: _Tool, argv: list[str], alias: str) -> int:
 def _show_from_bag(tool: _Tool, bag: str, type_name: str, raw: bool) -> int:
     """``rosmsg show -b BAG TYPE``: the definition the bag recorded for ``TYPE``."""
 
-    from rosx.bag.errors import BagError  # noqa: PLC0415
-    from rosx.bag.reader import BagReader  # noqa: PLC0415
-    from rosx.bag.types import DefinitionStore, split_definition  # noqa: PLC0415
+    from rosx.bag.errors import BagError  # noqa: PLC0415 - bag code loads only for bags
+    from rosx.bag.reader import BagReader  # noqa: PLC0415 - bag code loads only for bags
+    from rosx.bag.types import DefinitionStore, split_definition  # noqa: PLC0415 - bag code loads only for bags
 
     if not Path(bag).exists():
         raise CommandError(f"ERROR: bag file [{bag}] does not exist")

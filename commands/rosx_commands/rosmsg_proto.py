@@ -80,8 +80,8 @@ class _Failed(Exception):  # noqa: N818 - rosmsg-proto's report
 
 
 def _text(args: list[str], options: object, parser: ToolParser, environ: Mapping[str, str]) -> str:
-    from rosx.msg.store import TypeStore, UnknownTypeError  # noqa: PLC0415
-    from rosx.msg.text.prototype import prototype  # noqa: PLC0415
+    from rosx.msg.store import TypeStore, UnknownTypeError  # noqa: PLC0415 - the type store loads on first use
+    from rosx.msg.text.prototype import prototype  # noqa: PLC0415 - the text forms load on first use
 
     if len(args) < 2:
         raise _Failed("Insufficient arguments", ExitStatus.EX_USAGE)

@@ -110,7 +110,7 @@ def info(argv: list[str], env: Environment) -> int:
     quiet = options.quiet
     if not nodes:
         parser.error("You must specify at least one node name")
-    from rosx.graph.describe import (  # noqa: PLC0415
+    from rosx.graph.describe import (  # noqa: PLC0415 - graph code loads only when asked for
         InvalidNodeUriError,
         node_connections,
         node_description,

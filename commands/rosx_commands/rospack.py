@@ -52,8 +52,8 @@ class _Failed(Exception):  # noqa: N818 - a report, worded by rospack
 
 
 def _package_here(env: Environment) -> str | None:
-    from rosx.packages.manifest import ManifestError, read_manifest  # noqa: PLC0415
-    from rosx_commands.invocation import working_directory  # noqa: PLC0415
+    from rosx.packages.manifest import ManifestError, read_manifest  # noqa: PLC0415 - the package index loads only when used
+    from rosx_commands.invocation import working_directory  # noqa: PLC0415 - this tool's parts load only when used
 
     here = working_directory(env)
     try:
@@ -70,8 +70,8 @@ def _provided(package: str) -> bool:
 
 
 def _answer(command: str, package: str, index: PackageIndex) -> list[str]:
-    from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415
-    from rosx.packages.manifest import ManifestError  # noqa: PLC0415
+    from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415 - the package index loads only when used
+    from rosx.packages.manifest import ManifestError  # noqa: PLC0415 - the package index loads only when used
 
     if command == "find":
         try:
@@ -120,7 +120,7 @@ def rospack(argv: Sequence[str], env: Environment) -> int:
         env.stdout.write(USAGE)
         return ExitStatus.OK
 
-    from rosx.packages.index import PackageIndex  # noqa: PLC0415
+    from rosx.packages.index import PackageIndex  # noqa: PLC0415 - the package index loads only when used
 
     index = PackageIndex.from_environ(env.environ, provides=_provided)
     if command in _LIST_COMMANDS:

@@ -106,7 +106,7 @@ def _choose(paths: list[Path], env: Environment) -> Path | None:
 
 def _cpp_notice(executable: str, directory: Path, env: Environment) -> None:
     """Say once, plainly, when the executable is a C++ target of the package (never built)."""
-    from rosx.workspace.cmake import cpp_targets  # noqa: PLC0415
+    from rosx.workspace.cmake import cpp_targets  # noqa: PLC0415 - workspace code loads only when used
 
     if executable in cpp_targets(directory / "CMakeLists.txt"):
         env.err(
@@ -136,7 +136,7 @@ def _options(argv: list[str]) -> tuple[list[str], bool, list[str]] | None:
 
 def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
     """What ``rosrun ARGV…`` does: a program to become, one to run here, or an exit status."""
-    from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
+    from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415 - the package index loads only when used
     from rosx.workspace.executables import find_executables  # noqa: PLC0415 - not for -h
     from rosx.workspace.programs import bundled_program, overlays  # noqa: PLC0415 - not for -h
 

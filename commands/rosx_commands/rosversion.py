@@ -17,7 +17,7 @@ from rosx_commands.context import Environment, ExitStatus
 
 
 def _parser(env: Environment) -> argparse.ArgumentParser:
-    from rosx_commands.argparser import ToolArgumentParser  # noqa: PLC0415
+    from rosx_commands.argparser import ToolArgumentParser  # noqa: PLC0415 - this tool's parts load only when used
 
     parser = ToolArgumentParser(env, "rosversion")
     # rospkg's description has its two lines the wrong way round; kept as it prints.
@@ -39,9 +39,9 @@ def _parser(env: Environment) -> argparse.ArgumentParser:
 
 
 def _rosversion(argv: list[str], env: Environment) -> int:
-    from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
-    from rosx.packages.manifest import ManifestError  # noqa: PLC0415
-    from rosx.workspace.environment import DISTRO  # noqa: PLC0415
+    from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415 - the package index loads only when used
+    from rosx.packages.manifest import ManifestError  # noqa: PLC0415 - the package index loads only when used
+    from rosx.workspace.environment import DISTRO  # noqa: PLC0415 - workspace code loads only when used
 
     args = _parser(env).parse_args(argv)
     end = "" if args.skip_newline else "\n"

@@ -19,7 +19,7 @@ def run_script(argv: Sequence[str], env: Environment) -> int:
     if not args or args[0] in ("-h", "--help"):
         (env.stdout if args else env.stderr).write(_USAGE + "\n")
         return ExitStatus.OK if args else ExitStatus.USAGE
-    from rosx.client.script import run_script as run  # noqa: PLC0415
-    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415
+    from rosx.client.script import run_script as run  # noqa: PLC0415 - the rospy API loads only when used
+    from rosx_commands.scripts import shim_dirs  # noqa: PLC0415 - this tool's parts load only when used
 
     return run(args[0], args[1:], stderr=env.stderr, shim_dirs=shim_dirs())

@@ -18,6 +18,6 @@ if TYPE_CHECKING:
 def shim_dirs() -> tuple[Path, ...]:
     """The shim directories, in the order they go on ``sys.path`` / ``PYTHONPATH``."""
     from rosx import actionlib, bag, tf  # noqa: PLC0415 - constants only: these load no module
-    from rosx.client import script  # noqa: PLC0415
+    from rosx.client import script  # noqa: PLC0415 - the rospy API loads only when used
 
     return (script.SHIM_DIR, bag.SHIM_DIR, tf.SHIM_DIR, actionlib.SHIM_DIR)

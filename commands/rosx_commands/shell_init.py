@@ -31,10 +31,10 @@ _MARK = "# rosx: ROS 1's command names in every terminal"
 
 def shell_init(argv: Sequence[str], env: Environment) -> int:
     """Print the shell code for the shell named in ``argv`` (bash by default)."""
-    from rosx.workspace.shell import ROS_COMMANDS, SHELLS  # noqa: PLC0415
-    from rosx.workspace.shell import shell_init as code  # noqa: PLC0415
-    from rosx_commands.invocation import self_command  # noqa: PLC0415
-    from rosx_commands.tools import TOOLS  # noqa: PLC0415
+    from rosx.workspace.shell import ROS_COMMANDS, SHELLS  # noqa: PLC0415 - workspace code loads only when used
+    from rosx.workspace.shell import shell_init as code  # noqa: PLC0415 - workspace code loads only when used
+    from rosx_commands.invocation import self_command  # noqa: PLC0415 - this tool's parts load only when used
+    from rosx_commands.tools import TOOLS  # noqa: PLC0415 - this tool's parts load only when used
 
     args = list(argv)
     if args and args[0] in ("-h", "--help"):
@@ -56,7 +56,7 @@ def shell_init(argv: Sequence[str], env: Environment) -> int:
 
 def _written_folder(env: Environment, rosx: str, commands: Sequence[str]) -> str | None:
     """The folder of the command programs, written; None (with a note) where it cannot be."""
-    from rosx.workspace.path_commands import command_folder, write_commands  # noqa: PLC0415
+    from rosx.workspace.path_commands import command_folder, write_commands  # noqa: PLC0415 - workspace code loads only when used
 
     folder = command_folder(env.environ, rosx)
     if folder is None:

@@ -45,7 +45,7 @@ class ToolNode:
         """The node, started by the first caller; may block on the master."""
         with self._node_lock:
             if self._node is None:
-                from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415
+                from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415 - name rules load only when used
                 from rosx.node import Node  # noqa: PLC0415 - only a live tool needs the runtime
 
                 self._node = Node(

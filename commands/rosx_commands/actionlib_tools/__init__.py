@@ -111,7 +111,7 @@ def _axserver(argv: list[str], env: Environment) -> int:
 
 
 def _types(action_type: str, env: Environment) -> ActionTypes:
-    from rosx_commands.actionlib_tools.forms import FormError, action_types  # noqa: PLC0415
+    from rosx_commands.actionlib_tools.forms import FormError, action_types  # noqa: PLC0415 - this tool's parts load only when used
 
     try:
         return action_types(action_type)

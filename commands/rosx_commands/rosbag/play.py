@@ -216,10 +216,10 @@ def play(argv: list[str], env: Environment) -> int:
     if not args:
         parser.error("You must specify at least 1 bag file to play back.")
 
-    from rosx.bag.errors import BagError, BagUnindexedError  # noqa: PLC0415
-    from rosx.bag.player import Player, PlayOptions  # noqa: PLC0415
-    from rosx.bag.reader import BagReader  # noqa: PLC0415
-    from rosx.node import Node  # noqa: PLC0415
+    from rosx.bag.errors import BagError, BagUnindexedError  # noqa: PLC0415 - bag code loads only for bags
+    from rosx.bag.player import Player, PlayOptions  # noqa: PLC0415 - bag code loads only for bags
+    from rosx.bag.reader import BagReader  # noqa: PLC0415 - bag code loads only for bags
+    from rosx.node import Node  # noqa: PLC0415 - the node runtime loads with the first node
 
     bags: list[BagReader] = []
     try:
@@ -315,7 +315,7 @@ def _run(player: Player, options: optparse.Values, env: Environment) -> int:
             env.stdout.flush()
         player.run()
 
-    from rosx.signals import STOP_SIGNALS, handling  # noqa: PLC0415
+    from rosx.signals import STOP_SIGNALS, handling  # noqa: PLC0415 - signal handling only where it is set up
 
     worker = threading.Thread(target=play, name="rosx-play", daemon=True)
     with handling(STOP_SIGNALS, lambda signum: player.stop()), _keys(player, env):
@@ -335,9 +335,9 @@ def _keys(player: Player, env: Environment) -> Iterator[None]:
     if not is_terminal(stdin) or sys.platform == "win32":
         yield
         return
-    import select  # noqa: PLC0415
-    import termios  # noqa: PLC0415
-    import tty  # noqa: PLC0415
+    import select  # noqa: PLC0415 - select is not needed at start-up
+    import termios  # noqa: PLC0415 - termios is not needed at start-up
+    import tty  # noqa: PLC0415 - tty is not needed at start-up
 
     fd = stdin.fileno()
     saved = termios.tcgetattr(fd)

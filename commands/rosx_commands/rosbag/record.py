@@ -239,9 +239,9 @@ def record(argv: list[str], env: Environment) -> int:
     if options.udp:
         env.err("rosx records over TCPROS only; --udp is ignored.")
 
-    from rosx.bag.recorder import Recorder, RecordOptions  # noqa: PLC0415
-    from rosx.node import Node  # noqa: PLC0415
-    from rosx.signals import stop_on_signals  # noqa: PLC0415
+    from rosx.bag.recorder import Recorder, RecordOptions  # noqa: PLC0415 - bag code loads only for bags
+    from rosx.node import Node  # noqa: PLC0415 - the node runtime loads with the first node
+    from rosx.signals import stop_on_signals  # noqa: PLC0415 - signal handling only where it is set up
 
     exclude = options.exclude_regex
     record_all = options.all

@@ -222,7 +222,7 @@ def decompress(argv: list[str], env: Environment) -> int:
 
 def reindex(argv: list[str], env: Environment) -> int:
     """Run ``rosbag reindex ARGV…``: rebuild the index of bags whose writer never closed them."""
-    from rosx.bag.reindex import reindex as rebuild  # noqa: PLC0415
+    from rosx.bag.reindex import reindex as rebuild  # noqa: PLC0415 - bag code loads only for bags
 
     parser = _parser(
         env, "rosbag reindex [options] BAGFILE1 [BAGFILE2 ...]", "Reindexes one or more bag files."
@@ -251,9 +251,9 @@ def reindex(argv: list[str], env: Environment) -> int:
 
 def filter_bag(argv: list[str], env: Environment) -> int:
     """Run ``rosbag filter INBAG OUTBAG EXPRESSION``."""
-    from rosx.bag.types import message_class  # noqa: PLC0415
-    from rosx.bag.writer import BagWriter  # noqa: PLC0415
-    from rosx.msg.codec.rostime import Time  # noqa: PLC0415
+    from rosx.bag.types import message_class  # noqa: PLC0415 - bag code loads only for bags
+    from rosx.bag.writer import BagWriter  # noqa: PLC0415 - bag code loads only for bags
+    from rosx.msg.codec.rostime import Time  # noqa: PLC0415 - message classes load on first use
 
     parser = _parser(
         env,
@@ -327,7 +327,7 @@ def filter_bag(argv: list[str], env: Environment) -> int:
 
 def check(argv: list[str], env: Environment) -> int:
     """Run ``rosbag check BAG``: whether every recorded type matches this system's."""
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     parser = _parser(
         env,

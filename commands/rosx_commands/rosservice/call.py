@@ -103,7 +103,7 @@ def call_command(argv: list[str], env: Environment) -> int:
 
 def _load_args(words: list[str]) -> list[Any]:
     from rosx.msg.text.yamlargs import load_args  # noqa: PLC0415 - ruamel loads lazily
-    from rosx.msg.text.yamlload import YAMLLoadError  # noqa: PLC0415
+    from rosx.msg.text.yamlload import YAMLLoadError  # noqa: PLC0415 - the text forms load on first use
 
     try:
         return load_args(words, empty_is_string=True)
@@ -161,8 +161,8 @@ class _Caller:
         self.env.stdout.flush()
 
     def _fill(self, args: list[Any]) -> Message:
-        from rosx.msg.codec.message import MessageException  # noqa: PLC0415
-        from rosx.msg.text.yamlargs import call_error_text, fill_message_args  # noqa: PLC0415
+        from rosx.msg.codec.message import MessageException  # noqa: PLC0415 - message classes load on first use
+        from rosx.msg.text.yamlargs import call_error_text, fill_message_args  # noqa: PLC0415 - the text forms load on first use
 
         request = self.service_class._request_class()
         try:
@@ -174,8 +174,8 @@ class _Caller:
         return request
 
     def _serialize(self, request: Message) -> bytes:
-        from rosx.msg.codec.message import SerializationError  # noqa: PLC0415
-        from rosx.msg.describe import describe_srv  # noqa: PLC0415
+        from rosx.msg.codec.message import SerializationError  # noqa: PLC0415 - message classes load on first use
+        from rosx.msg.describe import describe_srv  # noqa: PLC0415 - the message layer loads on first use
 
         buff = io.BytesIO()
         try:
@@ -191,7 +191,7 @@ class _Caller:
         return buff.getvalue()
 
     def _deserialize(self, data: bytes) -> Message:
-        from rosx.msg.codec.message import DeserializationError  # noqa: PLC0415
+        from rosx.msg.codec.message import DeserializationError  # noqa: PLC0415 - message classes load on first use
 
         try:
             return self.service_class._response_class().deserialize(data)
@@ -201,6 +201,6 @@ class _Caller:
             ) from None
 
     def _format(self, msg: Message) -> str:
-        from rosx.msg.text.echo import format_message  # noqa: PLC0415
+        from rosx.msg.text.echo import format_message  # noqa: PLC0415 - the text forms load on first use
 
         return format_message(msg, nostr=self.options.nostr, noarr=self.options.noarr)

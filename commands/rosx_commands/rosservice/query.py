@@ -111,7 +111,7 @@ def find(argv: list[str], env: Environment) -> int:
     if len(args) > 1:
         parser.error("you may only specify one message type")
     from rosx.node.errors import ServiceError  # noqa: PLC0415 - find only
-    from rosx.node.service_client import probe_service  # noqa: PLC0415
+    from rosx.node.service_client import probe_service  # noqa: PLC0415 - the node runtime loads with the first node
 
     services = Services(env)
     matches = []

@@ -90,7 +90,7 @@ class Services:
                 f"ERROR: Unable to determine type of service [{name}].", SERVICE_ERROR
             )
         from rosx.msg.codec.classes import get_service_class  # noqa: PLC0415 - code generation
-        from rosx.msg.store import UnknownTypeError  # noqa: PLC0415
+        from rosx.msg.store import UnknownTypeError  # noqa: PLC0415 - the type store loads on first use
 
         candidates = [service_type]
         if service_type.endswith("Request"):

@@ -135,9 +135,9 @@ class Printer:
         self.first = True
         self.done = threading.Event()
         # Bound once: the callback runs for every message.
-        from rosx.msg.text.echo import echo_record, format_value  # noqa: PLC0415
-        from rosx.msg.text.echocsv import csv_header, csv_row  # noqa: PLC0415
-        from rosx.node.clock import now  # noqa: PLC0415
+        from rosx.msg.text.echo import echo_record, format_value  # noqa: PLC0415 - the text forms load on first use
+        from rosx.msg.text.echocsv import csv_header, csv_row  # noqa: PLC0415 - the text forms load on first use
+        from rosx.node.clock import now  # noqa: PLC0415 - the node runtime loads with the first node
 
         self._format, self._record = format_value, echo_record
         self._csv_header, self._csv_row = csv_header, csv_row
@@ -262,9 +262,9 @@ def _echo_bag(
 ) -> int:
     """``rostopic echo -b BAG``: the bag's messages of ``topic`` (or all), in time order, with
     the bag's times where a time is printed."""
-    from pathlib import Path  # noqa: PLC0415
+    from pathlib import Path  # noqa: PLC0415 - pathlib is not needed at start-up
 
-    from rosx.bag.api import Bag, ROSBagException  # noqa: PLC0415
+    from rosx.bag.api import Bag, ROSBagException  # noqa: PLC0415 - bag code loads only for bags
 
     if not Path(bag).exists():
         raise CommandError(f"ERROR: bag file [{bag}] does not exist")

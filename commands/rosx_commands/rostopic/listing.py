@@ -43,10 +43,10 @@ def topic_rows(master: MasterClient) -> tuple[TopicRows, TopicRows]:
 def _list_bag(env: Environment, bag: str, topic: str | None) -> int:
     """``rostopic list -b BAG [TOPIC]``: topics in order of their first message, or how many
     messages ``topic`` (and its namespace) has, and when the first and last were recorded."""
-    from pathlib import Path  # noqa: PLC0415
+    from pathlib import Path  # noqa: PLC0415 - pathlib is not needed at start-up
 
-    from rosx.bag.errors import BagError  # noqa: PLC0415
-    from rosx.bag.reader import BagReader  # noqa: PLC0415
+    from rosx.bag.errors import BagError  # noqa: PLC0415 - bag code loads only for bags
+    from rosx.bag.reader import BagReader  # noqa: PLC0415 - bag code loads only for bags
 
     if not Path(bag).exists():
         raise CommandError(f"ERROR: bag file [{bag}] does not exist")

@@ -103,7 +103,7 @@ def pub(argv: list[str], env: Environment) -> int:
         parser.error("args conflict with -f setting")
     topic_name, type_name = args[0], args[1]
     from rosx.msg.text.yamlargs import load_args  # noqa: PLC0415 - YAML loads on first use
-    from rosx.msg.text.yamlload import YAMLLoadError  # noqa: PLC0415
+    from rosx.msg.text.yamlload import YAMLLoadError  # noqa: PLC0415 - the text forms load on first use
 
     try:
         pub_args = load_args(args[2:])
@@ -147,7 +147,7 @@ def _message_class(session: Session, type_name: str) -> type[Message]:
     ``invalid topic type``; any other name that gives no class is an ``invalid message type``,
     with the hint to build its package.
     """
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     try:
         return get_message_class(type_name, session.store)
@@ -163,7 +163,7 @@ def _message_class(session: Session, type_name: str) -> type[Message]:
 
 def _file_documents(filename: str) -> list[Any]:
     """The documents of ``-f FILE``, each as the argument list of one message."""
-    from rosx.msg.text.yamlload import YAMLLoadError, load_all  # noqa: PLC0415
+    from rosx.msg.text.yamlload import YAMLLoadError, load_all  # noqa: PLC0415 - the text forms load on first use
 
     path = Path(filename)
     if not path.is_file():
@@ -178,7 +178,7 @@ def _file_documents(filename: str) -> list[Any]:
 
 def _stdin_documents(env: Environment) -> Iterator[Any]:
     """The ``---``-terminated YAML documents of standard input, read as they come."""
-    from rosx.msg.text.yamlload import load_stream  # noqa: PLC0415
+    from rosx.msg.text.yamlload import load_stream  # noqa: PLC0415 - the text forms load on first use
 
     def invalid(error: Exception) -> None:
         env.stderr.write(f"Invalid YAML: {error}\n")

@@ -69,7 +69,7 @@ class Publishing:
         Raises:
             ValueError: a scalar where a message is needed (``-f``/stdin report it and stop).
         """
-        from rosx.msg.text.yamlargs import fill_message_args, publish_error_text  # noqa: PLC0415
+        from rosx.msg.text.yamlargs import fill_message_args, publish_error_text  # noqa: PLC0415 - the text forms load on first use
 
         try:
             fill_message_args(msg, args, store=self.session.store)
@@ -81,7 +81,7 @@ class Publishing:
         try:
             self.publisher.publish(msg)
         except (MessageException, TypeError, ValueError, OverflowError) as error:
-            from rosx.msg.describe import describe_msg  # noqa: PLC0415
+            from rosx.msg.describe import describe_msg  # noqa: PLC0415 - the message layer loads on first use
 
             store = self.session.store
             text = describe_msg(store.msg(self.msg_class._type), store.msg)
@@ -106,8 +106,8 @@ class Publishing:
 
     def at_rate(self, msg: Message, args: list[Any], rate: float) -> None:
         """Publish ``msg`` ``rate`` times a second until interrupted."""
-        from rosx.node import Rate  # noqa: PLC0415
-        from rosx.node.errors import NodeShutdownError  # noqa: PLC0415
+        from rosx.node import Rate  # noqa: PLC0415 - the node runtime loads with the first node
+        from rosx.node.errors import NodeShutdownError  # noqa: PLC0415 - the node runtime loads with the first node
 
         node = self.publisher.node
         pacer = Rate(rate, shutdown=node.shutdown_event)
@@ -134,7 +134,7 @@ class Publishing:
         try:
             self.publish_message(args, rate, once)
         except ValueError as error:
-            from rosx.msg.text.yamlargs import publish_error_text  # noqa: PLC0415
+            from rosx.msg.text.yamlargs import publish_error_text  # noqa: PLC0415 - the text forms load on first use
 
             fail(publish_error_text(error, self.msg_class()))
         if once:
@@ -144,8 +144,8 @@ class Publishing:
         self, documents: Iterable[Any], rate: float | None, once: bool, *, exactly_one: bool
     ) -> None:
         """YAML documents from ``-f FILE`` or standard input, one message each."""
-        from rosx.node import Rate  # noqa: PLC0415
-        from rosx.node.errors import NodeShutdownError  # noqa: PLC0415
+        from rosx.node import Rate  # noqa: PLC0415 - the node runtime loads with the first node
+        from rosx.node.errors import NodeShutdownError  # noqa: PLC0415 - the node runtime loads with the first node
 
         node = self.publisher.node
         pacer = Rate(rate, shutdown=node.shutdown_event) if rate is not None else None

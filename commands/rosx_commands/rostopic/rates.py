@@ -216,7 +216,7 @@ def delay(argv: list[str], env: Environment) -> int:
 def _delay_callback(env: Environment, tracker: DelayTracker) -> Callable[[Any], None]:
     def callback(msg: Any) -> None:
         if not getattr(msg, "_has_header", False):
-            from rosx.node.rosout import ERROR, console_line  # noqa: PLC0415
+            from rosx.node.rosout import ERROR, console_line  # noqa: PLC0415 - the node runtime loads with the first node
 
             # rospy's logerr, which ROS 1's rostopic delay uses for this.
             env.stderr.write(console_line(ERROR, "msg does not have header") + "\n")

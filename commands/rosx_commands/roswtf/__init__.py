@@ -51,8 +51,8 @@ def _options(env: Environment) -> ToolParser:
 
 
 def _package_here(env: Environment) -> str | None:
-    from rosx.packages.manifest import ManifestError, read_manifest  # noqa: PLC0415
-    from rosx_commands.invocation import working_directory  # noqa: PLC0415
+    from rosx.packages.manifest import ManifestError, read_manifest  # noqa: PLC0415 - the package index loads only when used
+    from rosx_commands.invocation import working_directory  # noqa: PLC0415 - this tool's parts load only when used
 
     here = working_directory(env)
     try:
@@ -63,11 +63,11 @@ def _package_here(env: Environment) -> str | None:
 
 def _launch_rules(files: list[str], env: Environment, findings: Findings) -> str | None:
     """roswtf's static checks of launch files; the text of a file that cannot be loaded."""
-    from rosx.launch.errors import LaunchError  # noqa: PLC0415
-    from rosx.launch.loader import load_launch  # noqa: PLC0415
-    from rosx.launch.run.command import run_command  # noqa: PLC0415
-    from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415
-    from rosx.workspace.executables import find_executables  # noqa: PLC0415
+    from rosx.launch.errors import LaunchError  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.launch.loader import load_launch  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.launch.run.command import run_command  # noqa: PLC0415 - launch code loads only for launch files
+    from rosx.packages.index import PackageIndex, PackageNotFoundError  # noqa: PLC0415 - the package index loads only when used
+    from rosx.workspace.executables import find_executables  # noqa: PLC0415 - workspace code loads only when used
 
     index = PackageIndex.from_environ(env.environ)
     for file in files:
@@ -106,9 +106,9 @@ def _launch_rules(files: list[str], env: Environment, findings: Findings) -> str
 
 
 def _roswtf(argv: list[str], env: Environment) -> int:
-    from rosx.master.defaults import master_uri as uri_of  # noqa: PLC0415
-    from rosx.workspace.environment import ROS_ROOT  # noqa: PLC0415
-    from rosx_commands.roswtf import offline  # noqa: PLC0415
+    from rosx.master.defaults import master_uri as uri_of  # noqa: PLC0415 - the master's code loads only to talk to one
+    from rosx.workspace.environment import ROS_ROOT  # noqa: PLC0415 - workspace code loads only when used
+    from rosx_commands.roswtf import offline  # noqa: PLC0415 - this tool's parts load only when used
 
     options, files = _options(env).parse(argv)
     environ = env.environ
@@ -152,8 +152,8 @@ def _roswtf(argv: list[str], env: Environment) -> int:
         return ExitStatus.OK
     env.out("Beginning tests of your ROS graph. These may take a while...")
     env.stdout.flush()
-    from rosx.master.client import MasterUnreachable  # noqa: PLC0415
-    from rosx_commands.roswtf.online import check_graph  # noqa: PLC0415
+    from rosx.master.client import MasterUnreachable  # noqa: PLC0415 - the master's code loads only to talk to one
+    from rosx_commands.roswtf.online import check_graph  # noqa: PLC0415 - this tool's parts load only when used
 
     def say(text: str) -> None:
         env.out(text)

@@ -22,7 +22,7 @@ def rqt(argv: Sequence[str], env: Environment) -> int:
 
 
 def _rqt(argv: list[str], env: Environment) -> int:
-    from rosx_commands.rqt.tabs import TABS  # noqa: PLC0415
+    from rosx_commands.rqt.tabs import TABS  # noqa: PLC0415 - this tool's parts load only when used
 
     parser = ToolParser(env, "rqt", USAGE)
     names = [tab.name for tab in TABS]
@@ -41,7 +41,7 @@ def _rqt(argv: list[str], env: Environment) -> int:
         parser.error(f"unknown tab {options.tab!r} (one of: {', '.join(names)})")
     if not env.stdout_isatty:
         raise CommandError("rqt: error: the app needs a terminal", ExitStatus.USAGE)
-    from rosx_commands.rqt.app import make_rqt_app  # noqa: PLC0415
+    from rosx_commands.rqt.app import make_rqt_app  # noqa: PLC0415 - this tool's parts load only when used
 
     make_rqt_app(env, first=tab).run()
     return ExitStatus.OK

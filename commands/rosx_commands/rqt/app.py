@@ -67,7 +67,7 @@ class RqtApp(App[int]):
         try:
             pane = tab.load()(self.env)
         except Exception as error:
-            from rosx_commands.errors import error_line  # noqa: PLC0415
+            from rosx_commands.errors import error_line  # noqa: PLC0415 - this tool's parts load only when used
 
             pane = Static(Text(f"{tab.title} cannot start: {error_line(error)}"))
         self.built[name] = pane

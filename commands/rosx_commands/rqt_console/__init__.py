@@ -59,8 +59,8 @@ def rqt_console(argv: Sequence[str], env: Environment) -> int:
 
 
 def _rqt_console(argv: list[str], env: Environment) -> int:
-    from rosx_commands.rqt_console.model import Kind, Rule, RuleError, Rules  # noqa: PLC0415
-    from rosx_commands.rqt_console.source import LiveSource  # noqa: PLC0415
+    from rosx_commands.rqt_console.model import Kind, Rule, RuleError, Rules  # noqa: PLC0415 - this tool's parts load only when used
+    from rosx_commands.rqt_console.source import LiveSource  # noqa: PLC0415 - this tool's parts load only when used
 
     options, rest = _parser(env).parse(argv)
     if rest:
@@ -85,7 +85,7 @@ def _rqt_console(argv: list[str], env: Environment) -> int:
 
 def _print_lines(source: LiveSource, rules: Rules, env: Environment) -> int:
     """Print each record that passes ``rules`` as ``[severity] [time] [node]: message``."""
-    from rosx_commands.rqt_console.model import stamp_text  # noqa: PLC0415
+    from rosx_commands.rqt_console.model import stamp_text  # noqa: PLC0415 - this tool's parts load only when used
 
     shows = rules.matcher()
     source.start()

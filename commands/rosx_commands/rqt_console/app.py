@@ -254,6 +254,6 @@ def make_console_app(
 
 def console_tab(env: Any) -> ConsolePane:
     """rqt_console as a tab of ``rosx rqt``: ``/rosout_agg`` of ``env``'s master."""
-    from rosx_commands.rqt_console.source import LiveSource  # noqa: PLC0415
+    from rosx_commands.rqt_console.source import LiveSource  # noqa: PLC0415 - this tool's parts load only when used
 
     return ConsolePane(LiveSource(env, env.master_uri))

@@ -88,9 +88,9 @@ class LiveSource:
         self._node: Any = None
 
     def start(self) -> str:
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
-        from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415
-        from rosx.node import Node  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
+        from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415 - name rules load only when used
+        from rosx.node import Node  # noqa: PLC0415 - the node runtime loads with the first node
 
         node = Node(
             anonymous_node_name("rqt_console"),

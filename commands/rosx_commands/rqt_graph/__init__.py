@@ -106,8 +106,8 @@ def rqt_graph(argv: Sequence[str], env: Environment) -> int:
 
 def _rqt_graph(argv: list[str], env: Environment) -> int:
     from rosx.graph.builder import build  # noqa: PLC0415 - after option parsing
-    from rosx.graph.fetch import fetch_state  # noqa: PLC0415
-    from rosx.graph.options import GraphOptions, Mode, NameFilter  # noqa: PLC0415
+    from rosx.graph.fetch import fetch_state  # noqa: PLC0415 - graph code loads only when asked for
+    from rosx.graph.options import GraphOptions, Mode, NameFilter  # noqa: PLC0415 - graph code loads only when asked for
 
     options, rest = _parser(env).parse(argv)
     if rest:
@@ -140,11 +140,11 @@ def _rqt_graph(argv: list[str], env: Environment) -> int:
     state = fetch_state(uri, CALLER_ID, bus_info=options.bus_info)
     graph = build(state, graph_options)
     if options.dot:
-        from rosx.graph.dot import dot  # noqa: PLC0415
+        from rosx.graph.dot import dot  # noqa: PLC0415 - graph code loads only when asked for
 
         env.stdout.write(dot(graph, grouped=graph_options.group_depth > 0))
         return ExitStatus.OK
-    from rosx.graph.text import draw  # noqa: PLC0415
+    from rosx.graph.text import draw  # noqa: PLC0415 - graph code loads only when asked for
 
     drawing = draw(graph)
     env.out(str(drawing) if drawing.lines else "(no nodes)")

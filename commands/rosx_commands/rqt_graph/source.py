@@ -63,7 +63,7 @@ class LiveSource:
         self._counters: dict[str, RateCounter] = {}
 
     def snapshot(self) -> GraphState:
-        from rosx.graph.fetch import fetch_state  # noqa: PLC0415
+        from rosx.graph.fetch import fetch_state  # noqa: PLC0415 - graph code loads only when asked for
 
         return fetch_state(self.uri, self.caller_id, bus_info=self.bus_info)
 
@@ -71,8 +71,8 @@ class LiveSource:
         """What ``rosnode info`` or ``rostopic info`` prints of ``vertex``, errors included."""
         if vertex.kind is Kind.GROUP:
             return f"Group of topics: {vertex.label}"
-        from rosx.graph import describe  # noqa: PLC0415
-        from rosx.master.client import MasterClient  # noqa: PLC0415
+        from rosx.graph import describe  # noqa: PLC0415 - graph code loads only when asked for
+        from rosx.master.client import MasterClient  # noqa: PLC0415 - the master's code loads only to talk to one
 
         master = MasterClient(self.uri, self.caller_id, timeout=MASTER_TIMEOUT)
         text = ""
@@ -96,8 +96,8 @@ class LiveSource:
     def rate(self, topic: str) -> str:
         if topic not in self._counters:
             if self._node is None:
-                from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415
-                from rosx.node import Node  # noqa: PLC0415
+                from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415 - name rules load only when used
+                from rosx.node import Node  # noqa: PLC0415 - the node runtime loads with the first node
 
                 name = anonymous_node_name("rqt_graph")
                 self._node = Node(

@@ -36,7 +36,7 @@ def rqt_logger_level(argv: Sequence[str], env: Environment) -> int:
 
 
 def _rqt_logger_level(argv: list[str], env: Environment) -> int:
-    from rosx_commands.rqt_logger_level.source import LiveSource  # noqa: PLC0415
+    from rosx_commands.rqt_logger_level.source import LiveSource  # noqa: PLC0415 - this tool's parts load only when used
 
     options, rest = _parser(env).parse(argv)
     if rest:
@@ -45,7 +45,7 @@ def _rqt_logger_level(argv: list[str], env: Environment) -> int:
         )
     source = LiveSource(env.master_uri)
     if not options.text and env.stdout_isatty:
-        from rosx_commands.rqt_logger_level.app import make_level_app  # noqa: PLC0415
+        from rosx_commands.rqt_logger_level.app import make_level_app  # noqa: PLC0415 - this tool's parts load only when used
 
         make_level_app(source).run()
         return ExitStatus.OK

@@ -63,7 +63,7 @@ class LiveSource:
     @property
     def master(self) -> MasterClient:
         if self._master is None:
-            from rosx.master.client import MasterClient  # noqa: PLC0415
+            from rosx.master.client import MasterClient  # noqa: PLC0415 - the master's code loads only to talk to one
 
             self._master = MasterClient(self.uri, self.caller_id, timeout=CALL_TIMEOUT)
         return self._master
@@ -81,8 +81,8 @@ class LiveSource:
         self._call(node + SET_LOGGER_LEVEL, "roscpp/SetLoggerLevel", logger, level.lower())
 
     def _call(self, service: str, type_name: str, *args: str) -> Any:
-        from rosx.msg.codec.classes import get_service_class  # noqa: PLC0415
-        from rosx.node.service_client import ServiceClient  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_service_class  # noqa: PLC0415 - message classes load on first use
+        from rosx.node.service_client import ServiceClient  # noqa: PLC0415 - the node runtime loads with the first node
 
         service_class = get_service_class(type_name)
         client = ServiceClient(self.master, service, service_class)

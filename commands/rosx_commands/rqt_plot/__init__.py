@@ -59,7 +59,7 @@ def rqt_plot(argv: Sequence[str], env: Environment) -> int:
 
 
 def _rqt_plot(argv: list[str], env: Environment) -> int:
-    from rosx_commands.rqt_plot.series import SeriesError, expand_args  # noqa: PLC0415
+    from rosx_commands.rqt_plot.series import SeriesError, expand_args  # noqa: PLC0415 - this tool's parts load only when used
 
     parser = _parser(env)
     options, args = parser.parse(argv)
@@ -77,8 +77,8 @@ def _rqt_plot(argv: list[str], env: Environment) -> int:
         parser.error("--ymin must be below --ymax")
     if not env.stdout_isatty:
         raise CommandError("rqt_plot: error: the plot needs a terminal", ExitStatus.USAGE)
-    from rosx_commands.rqt_plot.app import PlotSettings, make_plot_app  # noqa: PLC0415
-    from rosx_commands.rqt_plot.feed import LiveFeed  # noqa: PLC0415
+    from rosx_commands.rqt_plot.app import PlotSettings, make_plot_app  # noqa: PLC0415 - this tool's parts load only when used
+    from rosx_commands.rqt_plot.feed import LiveFeed  # noqa: PLC0415 - this tool's parts load only when used
 
     settings = PlotSettings(
         window=options.window,

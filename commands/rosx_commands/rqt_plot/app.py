@@ -178,7 +178,7 @@ class PlotPane(Vertical):
         self._legend()
 
     def _failed(self, error: Exception) -> None:
-        from rosx_commands.errors import error_line  # noqa: PLC0415
+        from rosx_commands.errors import error_line  # noqa: PLC0415 - this tool's parts load only when used
 
         self._say(error_line(error))
 
@@ -337,6 +337,6 @@ def make_plot_app(
 
 def plot_tab(env: Environment) -> PlotPane:
     """rqt_plot as a tab of ``rosx rqt``: no series until the user adds some."""
-    from rosx_commands.rqt_plot.feed import LiveFeed  # noqa: PLC0415
+    from rosx_commands.rqt_plot.feed import LiveFeed  # noqa: PLC0415 - this tool's parts load only when used
 
     return PlotPane(LiveFeed(env))

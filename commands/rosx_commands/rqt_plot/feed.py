@@ -59,9 +59,9 @@ class LiveFeed(ToolNode):
         return self._clock() - self._start
 
     def attach(self, series: Series) -> bool:
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
-        from rosx.msg.text.fieldpath import find_topic  # noqa: PLC0415
-        from rosx.names.script import ros_namespace, script_resolve_name  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
+        from rosx.msg.text.fieldpath import find_topic  # noqa: PLC0415 - the text forms load on first use
+        from rosx.names.script import ros_namespace, script_resolve_name  # noqa: PLC0415 - name rules load only when used
 
         name = script_resolve_name("rqt_plot", series.name, ros_namespace(self.env.environ))
         store = self._types()
@@ -108,7 +108,7 @@ def _numeric_path(
 ) -> Callable[[object], float]:
     """A function giving the number ``text`` (a field path) selects in a message of
     ``type_name``; `SeriesError` if it selects no number."""
-    from rosx.msg.text.fieldpath import (  # noqa: PLC0415
+    from rosx.msg.text.fieldpath import (  # noqa: PLC0415 - the text forms load on first use
         FieldPathError,
         field_type,
         parse_field_path,

@@ -29,8 +29,8 @@ def _rqt_tf_tree(argv: list[str], env: Environment) -> int:
         raise CommandError(f"rqt_tf_tree: error: unexpected argument {rest[0]!r}", ExitStatus.USAGE)
     if not env.stdout_isatty:
         raise CommandError("rqt_tf_tree: error: the view needs a terminal", ExitStatus.USAGE)
-    from rosx_commands.rqt_tf_tree.app import make_tf_tree_app  # noqa: PLC0415
-    from rosx_commands.rqt_tf_tree.source import LiveTfSource  # noqa: PLC0415
+    from rosx_commands.rqt_tf_tree.app import make_tf_tree_app  # noqa: PLC0415 - this tool's parts load only when used
+    from rosx_commands.rqt_tf_tree.source import LiveTfSource  # noqa: PLC0415 - this tool's parts load only when used
 
     make_tf_tree_app(LiveTfSource(env)).run()
     return ExitStatus.OK

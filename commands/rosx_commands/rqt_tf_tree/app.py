@@ -100,7 +100,7 @@ class TfTreePane(Vertical):
         self.app.call_from_thread(self.show, frames)
 
     def _failed(self, error: Exception) -> None:
-        from rosx_commands.errors import error_line  # noqa: PLC0415
+        from rosx_commands.errors import error_line  # noqa: PLC0415 - this tool's parts load only when used
 
         self.error = error_line(error)
         self._status()
@@ -165,6 +165,6 @@ def make_tf_tree_app(source: TfSource, *, periodic: bool = True) -> TfTreeApp:
 
 def tf_tree_tab(env: Environment) -> TfTreePane:
     """rqt_tf_tree as a tab of ``rosx rqt``."""
-    from rosx_commands.rqt_tf_tree.source import LiveTfSource  # noqa: PLC0415
+    from rosx_commands.rqt_tf_tree.source import LiveTfSource  # noqa: PLC0415 - this tool's parts load only when used
 
     return TfTreePane(LiveTfSource(env))

@@ -43,7 +43,7 @@ class TfSource(Protocol):
 def tree_rows(frames: Sequence[FrameInfo], now: float) -> list[Row]:
     """The frames in tree order: each root (a frame that is only a parent), then its
     children depth-first, in name order. A frame whose parent loops back is listed last."""
-    from rosx.tf.describe import rate  # noqa: PLC0415
+    from rosx.tf.describe import rate  # noqa: PLC0415 - tf code loads only when used
 
     by_parent: dict[str, list[FrameInfo]] = {}
     known = {f.name for f in frames if f.parent}
@@ -92,7 +92,7 @@ class LiveTfSource(ToolNode):
 
     def frames(self) -> Sequence[FrameInfo]:
         if self._buffer is None:
-            from rosx.tf import Buffer, TransformListener  # noqa: PLC0415
+            from rosx.tf import Buffer, TransformListener  # noqa: PLC0415 - tf code loads only when used
 
             node = self._started()
             self._buffer = Buffer(node=node, debug=False)

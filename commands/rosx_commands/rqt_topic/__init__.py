@@ -27,8 +27,8 @@ def _rqt_topic(argv: list[str], env: Environment) -> int:
         raise CommandError(f"rqt_topic: error: unexpected argument {rest[0]!r}", ExitStatus.USAGE)
     if not env.stdout_isatty:
         raise CommandError("rqt_topic: error: the view needs a terminal", ExitStatus.USAGE)
-    from rosx_commands.rqt_topic.app import make_topic_app  # noqa: PLC0415
-    from rosx_commands.rqt_topic.monitor import LiveTopicSource  # noqa: PLC0415
+    from rosx_commands.rqt_topic.app import make_topic_app  # noqa: PLC0415 - this tool's parts load only when used
+    from rosx_commands.rqt_topic.monitor import LiveTopicSource  # noqa: PLC0415 - this tool's parts load only when used
 
     make_topic_app(LiveTopicSource(env)).run()
     return ExitStatus.OK

@@ -110,7 +110,7 @@ class TopicPane(Vertical):
         self.app.call_from_thread(self.show_topics, topics)
 
     def _failed(self, error: Exception) -> None:
-        from rosx_commands.errors import error_line  # noqa: PLC0415
+        from rosx_commands.errors import error_line  # noqa: PLC0415 - this tool's parts load only when used
 
         self.error = error_line(error)
         self._status()

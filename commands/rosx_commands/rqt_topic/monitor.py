@@ -68,7 +68,7 @@ class TopicSource(Protocol):
 
 class _Monitored:
     def __init__(self, type_name: str) -> None:
-        from rosx.node.stats import BandwidthTracker, HzTracker  # noqa: PLC0415
+        from rosx.node.stats import BandwidthTracker, HzTracker  # noqa: PLC0415 - the node runtime loads with the first node
 
         self.type_name = type_name
         self.hz: HzTracker = HzTracker(window=100)
@@ -137,7 +137,7 @@ class LiveTopicSource(ToolNode):
             return None
         if watched.decoded is not None and watched.decoded[0] is latest:
             return watched.decoded[1]
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
         type_name = latest.type if latest.type != "*" else watched.type_name
         try:

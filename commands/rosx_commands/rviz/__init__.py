@@ -66,8 +66,8 @@ def rviz(argv: Sequence[str], env: Environment) -> int:
 
 
 def _rviz(argv: list[str], env: Environment) -> int:
-    from rosx_commands.rviz.config import ConfigError, load_config  # noqa: PLC0415
-    from rosx_commands.rviz.defaults import default_config_path, starting_config  # noqa: PLC0415
+    from rosx_commands.rviz.config import ConfigError, load_config  # noqa: PLC0415 - this tool's parts load only when used
+    from rosx_commands.rviz.defaults import default_config_path, starting_config  # noqa: PLC0415 - this tool's parts load only when used
 
     parser = _parser(env)
     options, args = parser.parse(argv)
@@ -87,7 +87,7 @@ def _rviz(argv: list[str], env: Environment) -> int:
         raise CommandError(f"rviz: {error}", ExitStatus.ERROR) from None
     if not env.stdout_isatty:
         raise CommandError("rviz: error: the view needs a terminal", ExitStatus.USAGE)
-    from rosx_commands.rviz.run import run_rviz  # noqa: PLC0415
+    from rosx_commands.rviz.run import run_rviz  # noqa: PLC0415 - this tool's parts load only when used
 
     run_rviz(env, config, options.fixed_frame, save_path)
     return ExitStatus.OK

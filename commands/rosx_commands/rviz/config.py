@@ -112,7 +112,7 @@ def load_config(path: str) -> RvizConfig:
 
 def parse_config(text: str, name: str) -> RvizConfig:
     """The config in ``text``; ``name`` is how errors name the file."""
-    from ruamel.yaml.error import MarkedYAMLError, YAMLError  # noqa: PLC0415
+    from ruamel.yaml.error import MarkedYAMLError, YAMLError  # noqa: PLC0415 - ruamel loads only on this path
 
     try:
         document = yaml().load(text)

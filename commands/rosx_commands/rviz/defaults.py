@@ -19,7 +19,7 @@ def default_config_path(env: Environment) -> Path:
 
 def bundled_default() -> Path:
     """The rviz package's ``default.rviz`` that rosx ships."""
-    from rosx.packages.crawl import PREFIX  # noqa: PLC0415
+    from rosx.packages.crawl import PREFIX  # noqa: PLC0415 - the package index loads only when used
 
     return PREFIX / "share" / "rviz" / "default.rviz"
 
@@ -31,7 +31,7 @@ def starting_config(default: Path) -> RvizConfig:
     Raises:
         ConfigError: the file cannot be loaded.
     """
-    from rosx_commands.rviz.config import load_config  # noqa: PLC0415
+    from rosx_commands.rviz.config import load_config  # noqa: PLC0415 - this tool's parts load only when used
 
     return load_config(str(default if default.is_file() else bundled_default()))
 

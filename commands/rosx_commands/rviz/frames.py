@@ -49,7 +49,7 @@ class FixedFrame:
     def lookup(self, frame: str, stamp: int = 0) -> Transform | str:
         """The transform taking data in ``frame`` at ``stamp`` (ns; 0 the latest) into the
         fixed frame, or rviz's text saying why there is none."""
-        from rosx.tf.exceptions import ExtrapolationException, TransformException  # noqa: PLC0415
+        from rosx.tf.exceptions import ExtrapolationException, TransformException  # noqa: PLC0415 - tf code loads only when used
 
         frame = clean(frame)
         if frame == self.fixed:

@@ -51,7 +51,7 @@ class LiveSource(ToolNode):
     def start(self, manager: Manager, changed: Callable[[], object]) -> None:
         """Start the node, listen to tf and subscribe the enabled displays (blocks on the
         master: call it from a worker)."""
-        from rosx.tf.listener import TransformListener  # noqa: PLC0415
+        from rosx.tf.listener import TransformListener  # noqa: PLC0415 - tf code loads only when used
 
         self.manager, self.changed = manager, changed
         node = self._started()
@@ -63,7 +63,7 @@ class LiveSource(ToolNode):
         self.sync()
 
     def _follow_clock(self) -> None:
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
         def tick(msg: Any) -> None:
             self._sim_time = msg.clock
@@ -98,7 +98,7 @@ class LiveSource(ToolNode):
     def _subscribe(self, display: Display) -> Subscriber:
         import numpy
 
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
         manager = self.manager
         assert manager is not None
@@ -122,9 +122,9 @@ class LiveSource(ToolNode):
 
     def publish(self, tool: Tool, fixed: str, x: float, y: float, yaw: float) -> str:
         """Publish what ``tool`` places at (``x``, ``y``, ``yaw``) in ``fixed``; the log line."""
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
-        from rosx.node import INFO  # noqa: PLC0415
-        from rosx_commands.rviz.tools import fill, log_line  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
+        from rosx.node import INFO  # noqa: PLC0415 - the node runtime loads with the first node
+        from rosx_commands.rviz.tools import fill, log_line  # noqa: PLC0415 - this tool's parts load only when used
 
         node = self._started()
         msg_class = get_message_class(tool.message_type, self._types())
@@ -141,7 +141,7 @@ class LiveSource(ToolNode):
 
     def advertise(self, tools: tuple[Tool, ...]) -> None:
         """Advertise the tools' topics now, as rviz does when it starts."""
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
         node = self._started()
         with self._lock:
@@ -154,7 +154,7 @@ class LiveSource(ToolNode):
 
     def stamp(self) -> Any:
         """Now, as ROS time (``/clock``'s under simulated time)."""
-        from rosx.node.clock import now  # noqa: PLC0415
+        from rosx.node.clock import now  # noqa: PLC0415 - the node runtime loads with the first node
 
         return self._sim_time if self._sim_time is not None else now()
 

@@ -145,7 +145,7 @@ class RvizPane(Vertical):
     def _start(self) -> None:
         """Start the source; while no master answers, say so and try again each second (as
         rviz waits for its master)."""
-        from rosx.master.client import MasterUnreachable  # noqa: PLC0415
+        from rosx.master.client import MasterUnreachable  # noqa: PLC0415 - the master's code loads only to talk to one
 
         while not self._stopping.is_set():
             try:
@@ -157,7 +157,7 @@ class RvizPane(Vertical):
                 self._stopping.wait(MASTER_RETRY)
                 continue
             except Exception as error:  # shown, not raised: the view still works offline
-                from rosx_commands.errors import error_line  # noqa: PLC0415
+                from rosx_commands.errors import error_line  # noqa: PLC0415 - this tool's parts load only when used
 
                 self._tell(f"rviz: {error_line(error)}")
             if self.message.startswith("Waiting for the master"):
@@ -249,7 +249,7 @@ class RvizPane(Vertical):
             try:
                 line = self.source.publish(tool, fixed, x, y, yaw)
             except Exception as error:  # a failed publish is shown, the app goes on
-                from rosx_commands.errors import error_line  # noqa: PLC0415
+                from rosx_commands.errors import error_line  # noqa: PLC0415 - this tool's parts load only when used
 
                 line = f"{tool.title}: {error_line(error)}"
             self.published.append(line)
@@ -293,7 +293,7 @@ class RvizPane(Vertical):
     # -- files -------------------------------------------------------------------------------
 
     def action_save(self) -> None:
-        from rosx_commands.rviz.save import save_config  # noqa: PLC0415
+        from rosx_commands.rviz.save import save_config  # noqa: PLC0415 - this tool's parts load only when used
 
         path = self.settings.save_path
         try:
@@ -306,7 +306,7 @@ class RvizPane(Vertical):
         self.say(f"Saved {path}")
 
     def action_snapshot(self) -> None:
-        from rosx_commands.rviz.snapshot import write_png  # noqa: PLC0415
+        from rosx_commands.rviz.snapshot import write_png  # noqa: PLC0415 - this tool's parts load only when used
 
         stamp = time.strftime("%Y%m%d-%H%M%S")
         path = self.settings.snapshot_dir / f"rviz-{stamp}.png"

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
 def _parts(
     env: Environment, config: RvizConfig, fixed_frame: str | None, save_path: Path
 ) -> tuple[Manager, LiveSource, View, RvizSettings]:
-    from rosx.tf.core import BufferCore  # noqa: PLC0415
+    from rosx.tf.core import BufferCore  # noqa: PLC0415 - tf code loads only when used
 
     manager = Manager(config, BufferCore(), fixed_frame)
     settings = RvizSettings(save_path=save_path, snapshot_dir=Path.cwd())
@@ -39,7 +39,7 @@ def live_app(
 
 def rviz_tab(env: Environment) -> RvizPane:
     """rviz as a tab of ``rosx rqt``, with the config ``rosx rviz`` loads when given none."""
-    from rosx_commands.rviz.defaults import default_config_path, starting_config  # noqa: PLC0415
+    from rosx_commands.rviz.defaults import default_config_path, starting_config  # noqa: PLC0415 - this tool's parts load only when used
 
     save_path = default_config_path(env)
     config = starting_config(save_path)

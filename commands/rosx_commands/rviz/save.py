@@ -25,7 +25,7 @@ if TYPE_CHECKING:
 
 def new_document(background: tuple[int, int, int], tools: tuple[Tool, ...]) -> Any:
     """An empty config in rviz's layout."""
-    from ruamel.yaml.comments import CommentedMap, CommentedSeq  # noqa: PLC0415
+    from ruamel.yaml.comments import CommentedMap, CommentedSeq  # noqa: PLC0415 - ruamel loads only on this path
 
     document = CommentedMap()
     panels = CommentedSeq()
@@ -52,7 +52,7 @@ def new_document(background: tuple[int, int, int], tools: tuple[Tool, ...]) -> A
 
 
 def _view_map(view: View, target: str | None) -> Any:
-    from ruamel.yaml.comments import CommentedMap  # noqa: PLC0415
+    from ruamel.yaml.comments import CommentedMap  # noqa: PLC0415 - ruamel loads only on this path
 
     return CommentedMap(
         [
@@ -81,7 +81,7 @@ def config_text(
     target: str | None = None,
 ) -> str:
     """The config as it is now, as YAML text."""
-    from ruamel.yaml.comments import CommentedMap  # noqa: PLC0415
+    from ruamel.yaml.comments import CommentedMap  # noqa: PLC0415 - ruamel loads only on this path
 
     document = config.document
     if document is None:

@@ -35,7 +35,7 @@ USAGE = (
 
 def transform_text(stamp: int, values: tuple[float, ...], precision: int) -> str:
     """The lines tf_echo prints for one transform (``values``: x, y, z, qx, qy, qz, qw)."""
-    from rosx.tf import linear, stamps  # noqa: PLC0415
+    from rosx.tf import linear, stamps  # noqa: PLC0415 - tf code loads only when used
 
     basis = linear.matrix(*values[3:])
     qx, qy, qz, qw = linear.rotation(basis)
@@ -77,8 +77,8 @@ def echo_loop(
     env: Environment,
 ) -> None:
     """Print the transform every ``period`` seconds until the node shuts down."""
-    from rosx.client.timing import Time  # noqa: PLC0415
-    from rosx.tf import TransformException  # noqa: PLC0415
+    from rosx.client.timing import Time  # noqa: PLC0415 - the rospy API loads only when used
+    from rosx.tf import TransformException  # noqa: PLC0415 - tf code loads only when used
 
     source, target = _strip(source), _strip(target)
     deadline = time.monotonic() + period
@@ -126,10 +126,10 @@ def tf_echo(argv: Sequence[str], env: Environment) -> int:
         env.stdout.write(f"Precision default value was overriden, new value: {precision}\n")
     source, target = args.argv[0], args.argv[1]
 
-    from rosx_commands.tf_tools.running import run_node  # noqa: PLC0415
+    from rosx_commands.tf_tools.running import run_node  # noqa: PLC0415 - this tool's parts load only when used
 
     def body(node: Node) -> None:
-        from rosx.tf import Buffer, TransformListener  # noqa: PLC0415
+        from rosx.tf import Buffer, TransformListener  # noqa: PLC0415 - tf code loads only when used
 
         buffer = Buffer(node=node, debug=False)
         TransformListener(buffer, node=node)

@@ -89,9 +89,9 @@ def _g(value: float) -> str:
 
 def tf_monitor(argv: Sequence[str], env: Environment) -> int:
     """Run ``tf_monitor ARGV…``; its exit status (255 for a wrong command line)."""
-    from rosx.node import INFO  # noqa: PLC0415
-    from rosx_turtle.console import Console  # noqa: PLC0415
-    from rosx_turtle.roscpp import NodeArgs  # noqa: PLC0415
+    from rosx.node import INFO  # noqa: PLC0415 - the node runtime loads with the first node
+    from rosx_turtle.console import Console  # noqa: PLC0415 - turtlesim's parts load only when used
+    from rosx_turtle.roscpp import NodeArgs  # noqa: PLC0415 - turtlesim's parts load only when used
 
     args = NodeArgs.parse(argv, anonymous("tf_monitor"))
     words = list(args.argv)
@@ -102,13 +102,13 @@ def tf_monitor(argv: Sequence[str], env: Environment) -> int:
         return 255
 
     def body(node: Node) -> None:
-        from rosx.tf import Buffer, TransformListener  # noqa: PLC0415
+        from rosx.tf import Buffer, TransformListener  # noqa: PLC0415 - tf code loads only when used
 
         buffer = Buffer(node=node, debug=False)
         TransformListener(buffer, node=node)
         monitor(node, buffer, words[0] if words else None, words[1] if words else None, env)
 
-    from rosx_commands.tf_tools.running import run_node  # noqa: PLC0415
+    from rosx_commands.tf_tools.running import run_node  # noqa: PLC0415 - this tool's parts load only when used
 
     return run_node(args, env, body)
 
@@ -117,9 +117,9 @@ def monitor(
     node: Node, buffer: Buffer, frame_a: str | None, frame_b: str | None, env: Environment
 ) -> None:
     """tf_monitor's loop: report every 21 lookups 10 ms apart, until the node shuts down."""
-    from rosx.client.timing import Time  # noqa: PLC0415
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
-    from rosx.tf import TransformException  # noqa: PLC0415
+    from rosx.client.timing import Time  # noqa: PLC0415 - the rospy API loads only when used
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
+    from rosx.tf import TransformException  # noqa: PLC0415 - tf code loads only when used
 
     out = env.stdout
     chain: list[str] | None = None

@@ -21,8 +21,8 @@ if TYPE_CHECKING:
 
 def run_node(args: NodeArgs, env: Environment, body: Callable[[Node], object]) -> int:
     """Start ``args``' node, run ``body(node)`` beside the wait; 0 once stopped."""
-    from rosx_turtle.console import Console  # noqa: PLC0415
-    from rosx_turtle.program import master_address, run_until_stopped  # noqa: PLC0415
+    from rosx_turtle.console import Console  # noqa: PLC0415 - turtlesim's parts load only when used
+    from rosx_turtle.program import master_address, run_until_stopped  # noqa: PLC0415 - turtlesim's parts load only when used
 
     console = Console(env.stdout, env.stderr, env.environ)
 

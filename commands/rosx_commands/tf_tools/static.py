@@ -59,14 +59,14 @@ _MEMBERS = (
 
 
 def _console(env: Environment) -> Console:
-    from rosx_turtle.console import Console  # noqa: PLC0415
+    from rosx_turtle.console import Console  # noqa: PLC0415 - turtlesim's parts load only when used
 
     return Console(env.stdout, env.stderr, env.environ)
 
 
 def _numbers(words: Sequence[str]) -> tuple[float, ...]:
     """Translation and rotation from ``x y z qx qy qz qw`` or ``x y z yaw pitch roll``."""
-    from rosx.tf.linear import from_rpy  # noqa: PLC0415
+    from rosx.tf.linear import from_rpy  # noqa: PLC0415 - tf code loads only when used
 
     values = [atof(w) for w in words]
     if len(values) == 7:
@@ -97,8 +97,8 @@ def _from_parameter(node: Node, name: str) -> tuple[str, str, tuple[float, ...]]
 
 def static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
     """tf2_ros's ``static_transform_publisher ARGV…``; its exit status."""
-    from rosx.node import ERROR, FATAL, INFO  # noqa: PLC0415
-    from rosx_turtle.roscpp import NodeArgs  # noqa: PLC0415
+    from rosx.node import ERROR, FATAL, INFO  # noqa: PLC0415 - the node runtime loads with the first node
+    from rosx_turtle.roscpp import NodeArgs  # noqa: PLC0415 - turtlesim's parts load only when used
 
     args = NodeArgs.parse(argv, anonymous("static_transform_publisher"))
     words = list(args.argv)
@@ -121,9 +121,9 @@ def static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
             return 1
 
     def body(node: Node) -> None:
-        import time  # noqa: PLC0415
+        import time  # noqa: PLC0415 - time is not needed at start-up
 
-        from rosx.tf import StaticTransformBroadcaster  # noqa: PLC0415
+        from rosx.tf import StaticTransformBroadcaster  # noqa: PLC0415 - tf code loads only when used
 
         if not transform:
             name = words[0]
@@ -154,13 +154,13 @@ def static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
         console.print(INFO, f"Spinning until killed publishing {parent} to {child}")
         node.wait_for_shutdown()
 
-    from rosx_commands.tf_tools.running import run_node  # noqa: PLC0415
+    from rosx_commands.tf_tools.running import run_node  # noqa: PLC0415 - this tool's parts load only when used
 
     return run_node(args, env, body)
 
 
 def _message(parent: str, child: str, stamp: int, values: tuple[float, ...]) -> Any:
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
     t = get_message_class("geometry_msgs/TransformStamped")()
     t.header.frame_id = parent
@@ -175,9 +175,9 @@ def _message(parent: str, child: str, stamp: int, values: tuple[float, ...]) -> 
 
 def tf_static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
     """tf's ``static_transform_publisher ARGV… PERIOD_MS``; its exit status."""
-    from rosx.node import ERROR, FATAL  # noqa: PLC0415
-    from rosx.tf import linear  # noqa: PLC0415
-    from rosx_turtle.roscpp import NodeArgs  # noqa: PLC0415
+    from rosx.node import ERROR, FATAL  # noqa: PLC0415 - the node runtime loads with the first node
+    from rosx.tf import linear  # noqa: PLC0415 - tf code loads only when used
+    from rosx_turtle.roscpp import NodeArgs  # noqa: PLC0415 - turtlesim's parts load only when used
 
     args = NodeArgs.parse(argv, anonymous("static_transform_publisher"))
     words = list(args.argv)
@@ -201,9 +201,9 @@ def tf_static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
     ahead = round(period * 1e9)
 
     def body(node: Node) -> None:
-        import time  # noqa: PLC0415
+        import time  # noqa: PLC0415 - time is not needed at start-up
 
-        from rosx.tf import TransformBroadcaster  # noqa: PLC0415
+        from rosx.tf import TransformBroadcaster  # noqa: PLC0415 - tf code loads only when used
 
         broadcaster = TransformBroadcaster(node=node)
         while not node.is_shutdown():
@@ -211,7 +211,7 @@ def tf_static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
             if node.wait_for_shutdown(max(period, 0.0)):
                 break
 
-    from rosx_commands.tf_tools.running import run_node  # noqa: PLC0415
+    from rosx_commands.tf_tools.running import run_node  # noqa: PLC0415 - this tool's parts load only when used
 
     return run_node(args, env, body)
 

@@ -48,7 +48,7 @@ def _numbers(text: str | None, count: int, default: float = 0.0) -> list[float]:
 def _origin(element: Element | None) -> Transform:
     if element is None:
         return IDENTITY
-    import math  # noqa: PLC0415
+    import math  # noqa: PLC0415 - math is not needed at start-up
 
     x, y, z = _numbers(element.get("xyz"), 3)
     roll, pitch, yaw = _numbers(element.get("rpy"), 3)
