@@ -175,7 +175,7 @@ class PondWatcher:
                 continue
 
             def on_pose(msg: Any, turtle: str = turtle, pond: RemotePond = watched.pond) -> None:
-                from rosx_turtle.view.scene import TurtlePose  # noqa: PLC0415
+                from rosx_turtle.view.scene import TurtlePose  # noqa: PLC0415 - turtlesim's parts load only when used
 
                 pose = TurtlePose(
                     turtle, msg.x, msg.y, msg.theta, msg.linear_velocity, msg.angular_velocity
@@ -229,7 +229,7 @@ def _text_mode(node: Node, env: Env, stop: threading.Event) -> None:
 
 def _screen_mode(node: Node) -> None:
     from rosx_turtle.tui.factory import make_ponds_app  # noqa: PLC0415 - textual to draw
-    from rosx_turtle.tui.running import run_app  # noqa: PLC0415
+    from rosx_turtle.tui.running import run_app  # noqa: PLC0415 - turtlesim's parts load only when used
 
     watcher: PondWatcher | None = None
 
@@ -251,7 +251,7 @@ def _screen_mode(node: Node) -> None:
 
 def run_turtlesim_view(argv: Sequence[str], env: Env | None = None) -> int:
     """Run turtlesim_view: the ponds on a terminal, their turtles as lines otherwise."""
-    from rosx.names.anonymous import anonymous_name  # noqa: PLC0415
+    from rosx.names.anonymous import anonymous_name  # noqa: PLC0415 - name rules load only when used
 
     env = env or ProcessEnv()
     args = NodeArgs.parse(argv, anonymous_name("turtlesim_view"))

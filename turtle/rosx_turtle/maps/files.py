@@ -53,7 +53,7 @@ def parse_map_yaml(text: str) -> MapSpec:
         MapFileError: a tag is missing or invalid (map_server's words).
     """
     from ruamel.yaml import YAML  # noqa: PLC0415 - only to read a map
-    from ruamel.yaml.error import YAMLError  # noqa: PLC0415
+    from ruamel.yaml.error import YAMLError  # noqa: PLC0415 - ruamel loads only on this path
 
     try:
         doc = YAML(typ="safe", pure=True).load(text)

@@ -34,7 +34,7 @@ USAGE = (
 
 def load_map(path: Path, log: Any) -> Any:
     """The nav_msgs/OccupancyGrid of the map described at ``path``; None after logging why not."""
-    from rosx_turtle.stage.world.images import ImageError, read_channels  # noqa: PLC0415
+    from rosx_turtle.stage.world.images import ImageError, read_channels  # noqa: PLC0415 - turtlesim's parts load only when used
 
     try:
         text = path.read_text(encoding="utf-8")

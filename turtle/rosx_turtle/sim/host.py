@@ -159,15 +159,15 @@ class SimHost:
 
     def _open_feeds(self) -> Console:
         # The feeds post to textual widgets: imported only when there is a screen to feed.
-        from rosx_turtle.tui.feed import Feed  # noqa: PLC0415
-        from rosx_turtle.tui.log import ScreenConsole  # noqa: PLC0415
+        from rosx_turtle.tui.feed import Feed  # noqa: PLC0415 - turtlesim's parts load only when used
+        from rosx_turtle.tui.log import ScreenConsole  # noqa: PLC0415 - turtlesim's parts load only when used
 
         self._scenes, self._graph, self._logs = Feed(), Feed(), Feed()
         return self.console or ScreenConsole(self._logs.offer, self.environ)
 
     def _start_watching(self, turtlesim: TurtlesimNode, uri: str) -> None:
-        from rosx_turtle.tui.graph import GraphWatcher  # noqa: PLC0415
-        from rosx_turtle.view.adapt import follow  # noqa: PLC0415
+        from rosx_turtle.tui.graph import GraphWatcher  # noqa: PLC0415 - turtlesim's parts load only when used
+        from rosx_turtle.view.adapt import follow  # noqa: PLC0415 - turtlesim's parts load only when used
 
         self._stops.append(follow(turtlesim, self.scenes.offer))
         watcher = GraphWatcher(uri, self.graph).start()

@@ -61,7 +61,7 @@ class Inspector:
     def echo(self, topic: str, offer: Callable[[str], object]) -> Callable[[], None]:
         """Call ``offer(text)`` with each message of ``topic`` as ``rostopic echo`` prints it
         (on the topic's thread); returns the function that stops echoing."""
-        from rosx.msg.text.echo import echo_record, format_message  # noqa: PLC0415
+        from rosx.msg.text.echo import echo_record, format_message  # noqa: PLC0415 - the text forms load on first use
 
         def arrived(raw: RawMessage) -> None:
             try:
@@ -87,8 +87,8 @@ class Inspector:
         with self._lock:
             self._echoes += 1
             if self._node is None:
-                from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415
-                from rosx.node import Node  # noqa: PLC0415
+                from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415 - name rules load only when used
+                from rosx.node import Node  # noqa: PLC0415 - the node runtime loads with the first node
 
                 name = anonymous_node_name("rosx_sim_echo")
                 self._node = Node(

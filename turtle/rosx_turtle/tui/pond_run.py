@@ -75,8 +75,8 @@ def show_pond(node: TurtlesimNode, logs: Feed[LogRecord] | None = None) -> None:
     """Draw ``node``'s pond full-screen until the user quits or the node shuts down; the
     latest record offered to ``logs`` (see `ScreenConsole`) shows under it."""
     from rosx_turtle.tui.factory import make_pond_app  # noqa: PLC0415 - textual to draw
-    from rosx_turtle.tui.feed import Feed  # noqa: PLC0415
-    from rosx_turtle.view.adapt import follow  # noqa: PLC0415
+    from rosx_turtle.tui.feed import Feed  # noqa: PLC0415 - turtlesim's parts load only when used
+    from rosx_turtle.view.adapt import follow  # noqa: PLC0415 - turtlesim's parts load only when used
 
     scenes: Feed[Scene] = Feed()
     unfollow = follow(node, scenes.offer)

@@ -45,7 +45,7 @@ def _pose_to_tf(broadcaster: Any, turtle: str, transform_class: type[Any]) -> An
 
 
 def _now() -> int:
-    import time  # noqa: PLC0415
+    import time  # noqa: PLC0415 - time is not needed at start-up
 
     return time.time_ns()
 
@@ -62,7 +62,7 @@ class TfDemo:
 
     def start(self) -> TfDemo:
         """Start the broadcasters and the listener (whose loop runs on a thread of its own)."""
-        from rosx.tf import Buffer, TransformBroadcaster, TransformListener  # noqa: PLC0415
+        from rosx.tf import Buffer, TransformBroadcaster, TransformListener  # noqa: PLC0415 - tf code loads only when used
 
         pose = get_message_class("turtlesim/Pose")
         transform = get_message_class("geometry_msgs/TransformStamped")
@@ -87,7 +87,7 @@ class TfDemo:
 
     def _follow(self, node: Node, buffer: Any) -> None:
         """The listener: spawn turtle2, then steer it towards turtle1 until stopped."""
-        from rosx.tf import TransformException  # noqa: PLC0415
+        from rosx.tf import TransformException  # noqa: PLC0415 - tf code loads only when used
 
         spawn = get_service_class("turtlesim/Spawn")
         twist = get_message_class("geometry_msgs/Twist")

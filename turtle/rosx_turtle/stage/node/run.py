@@ -95,7 +95,7 @@ def run_stageros(argv: Sequence[str], env: Env | None = None) -> int:
         print(exc, file=env.stdout if str(exc) == USAGE else env.stderr)
         return 255 if str(exc) == USAGE else 2
     from rosx_turtle.stage.world.load import load_world  # noqa: PLC0415 - numpy
-    from rosx_turtle.stage.world.worldfile import WorldFileError  # noqa: PLC0415
+    from rosx_turtle.stage.world.worldfile import WorldFileError  # noqa: PLC0415 - turtlesim's parts load only when used
 
     if not options.world.is_file():
         console.print(FATAL, f"The world file {options.world} does not exist.")
@@ -105,7 +105,7 @@ def run_stageros(argv: Sequence[str], env: Env | None = None) -> int:
     except WorldFileError as exc:
         console.print(FATAL, str(exc))
         return 1
-    from rosx_turtle.stage.node.stageros import StageNode  # noqa: PLC0415
+    from rosx_turtle.stage.node.stageros import StageNode  # noqa: PLC0415 - turtlesim's parts load only when used
 
     def start() -> StageNode:
         return StageNode(
@@ -123,8 +123,8 @@ def run_stageros(argv: Sequence[str], env: Env | None = None) -> int:
     if options.headless or headless or not is_terminal(env.stdout):
         return run_until_stopped(start, console, address)
     from rosx_turtle.stage.view.run import show_world  # noqa: PLC0415 - textual to draw
-    from rosx_turtle.tui.feed import Feed  # noqa: PLC0415
-    from rosx_turtle.tui.log import ScreenConsole  # noqa: PLC0415
+    from rosx_turtle.tui.feed import Feed  # noqa: PLC0415 - turtlesim's parts load only when used
+    from rosx_turtle.tui.log import ScreenConsole  # noqa: PLC0415 - turtlesim's parts load only when used
 
     logs: Feed[LogRecord] = Feed()
     screen = ScreenConsole(logs.offer, env.environ)

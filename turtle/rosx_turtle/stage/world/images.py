@@ -85,7 +85,7 @@ def read_channels(path: Path) -> npt.NDArray[np.uint8]:
         from PIL import Image  # noqa: PLC0415 - Pillow only for formats other than PGM
     except ImportError:
         raise ImageError(f"{path}: reading this image needs Pillow (pip install pillow)") from None
-    import io  # noqa: PLC0415
+    import io  # noqa: PLC0415 - io is not needed at start-up
 
     import numpy as np
 
