@@ -72,9 +72,9 @@ def layered(graph: ViewGraph) -> Layering:
 
 
 def _layered(graph: ViewGraph) -> Layering:
-    from grandalf.graphs import Edge as GEdge
-    from grandalf.graphs import Vertex as GVertex
-    from grandalf.layouts import SugiyamaLayout, VertexViewer
+    from grandalf.graphs import Edge as GEdge  # grandalf only to lay out a graph
+    from grandalf.graphs import Vertex as GVertex  # grandalf only to lay out a graph
+    from grandalf.layouts import SugiyamaLayout, VertexViewer  # grandalf only to lay out a graph
 
     gvertices = {v.id: GVertex(v.id) for v in graph.vertices}
     for gvertex in gvertices.values():
@@ -106,8 +106,8 @@ def _components(vertices: list[Any], edges: list[Any]) -> list[Any]:
     vertices, and its `Graph` scans the vertex and component lists once per edge and gathers a
     component's edges in a set, whose order (hence where grandalf puts dummies) changed from
     run to run. Here a component's edges keep the order of ``edges``."""
-    from grandalf.graphs import graph_core
-    from grandalf.utils import Poset
+    from grandalf.graphs import graph_core  # grandalf only to lay out a graph
+    from grandalf.utils import Poset  # grandalf only to lay out a graph
 
     for vertex in vertices:
         vertex.c = Poset([vertex])

@@ -36,7 +36,7 @@ def _message(name: str) -> Any:
 
 
 def _numpy() -> Any:
-    import numpy
+    import numpy  # numpy only on this path
 
     return numpy
 

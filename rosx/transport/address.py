@@ -73,7 +73,7 @@ def uri_hostname(uri: str) -> str:
     Empty when the URI names none or does not parse (``http://[::1/``): a node may register
     any string with the master.
     """
-    from urllib.parse import urlsplit  # noqa: PLC0415 -- only the tools that group by host
+    from urllib.parse import urlsplit  # noqa: PLC0415 - only the tools that group by host
 
     try:
         return urlsplit(uri).hostname or ""

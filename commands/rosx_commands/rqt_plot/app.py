@@ -95,7 +95,7 @@ class PlotPane(Vertical):
         self.frames = 0  # how often the plot was drawn (tests and the bench look)
 
     def compose(self) -> ComposeResult:
-        from textual_plot import PlotWidget
+        from textual_plot import PlotWidget  # textual-plot only once a plot is drawn
 
         yield Static(id="plot-status")
         plot = PlotWidget(id="plot", allow_pan_and_zoom=False)
@@ -106,7 +106,7 @@ class PlotPane(Vertical):
 
     @property
     def plot(self) -> PlotWidget:
-        from textual_plot import PlotWidget
+        from textual_plot import PlotWidget  # textual-plot only once a plot is drawn
 
         return self.query_one("#plot", PlotWidget)
 
@@ -272,7 +272,7 @@ class PlotPane(Vertical):
         start = end - settings.window
         plot = self.plot
         columns = 2 * max(plot.size.width, 1)  # braille: two dots a cell
-        from textual_plot import HiResMode
+        from textual_plot import HiResMode  # textual-plot only once a plot is drawn
 
         plot.clear()
         for series in self.series:

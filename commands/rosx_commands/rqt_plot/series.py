@@ -55,7 +55,7 @@ class Series:
     """One plotted field: its name, its colour and its last `CAPACITY` samples."""
 
     def __init__(self, name: str, style: str = "white", capacity: int = CAPACITY) -> None:
-        import numpy as np
+        import numpy as np  # numpy only on this path
 
         self.name = name
         self.style = style
@@ -95,7 +95,7 @@ class Series:
 
     def window(self, start: float, end: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """Copies of the times and values of the samples between ``start`` and ``end``."""
-        import numpy as np
+        import numpy as np  # numpy only on this path
 
         with self._lock:
             last = self._head + self.capacity
@@ -119,7 +119,7 @@ def envelope(
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """At most two points per column (the smallest and the largest value in it), in time order;
     fewer samples than that are returned as they are."""
-    import numpy as np
+    import numpy as np  # numpy only on this path
 
     if len(times) <= 2 * columns or end <= start:
         return times, values

@@ -96,7 +96,7 @@ class LiveSource(ToolNode):
                     self._subscribers[key] = (display.topic, self._subscribe(display))
 
     def _subscribe(self, display: Display) -> Subscriber:
-        import numpy
+        import numpy  # numpy only on this path
 
         from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 

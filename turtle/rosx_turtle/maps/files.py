@@ -100,7 +100,7 @@ def parse_map_yaml(text: str) -> MapSpec:
 def occupancy(pixels: npt.NDArray[np.uint8], spec: MapSpec) -> npt.NDArray[np.int8]:
     """The OccupancyGrid data of an image ``pixels`` (rows, columns, channels), as rows from
     the bottom of the image up (see the module docstring)."""
-    import numpy as np
+    import numpy as np  # numpy only on this path
 
     channels = pixels.shape[2]
     alpha_last = channels in (2, 4)
@@ -134,7 +134,7 @@ def saved_pgm(
     free: int = 25,
 ) -> bytes:
     """map_saver's image of an OccupancyGrid: free 254, occupied 0, unknown 205."""
-    import numpy as np
+    import numpy as np  # numpy only on this path
 
     grid = data.reshape(height, width)[::-1].astype(np.int16)
     pixels = np.where((grid >= 0) & (grid <= free), 254, np.where(grid >= occupied, 0, 205)).astype(

@@ -65,7 +65,7 @@ def _parse(words: list[str], console: Console, out: Any) -> tuple[str, int, int]
 def save_map(grid: Any, name: str, occupied: int, free: int, log: Any) -> bool:
     """Write ``grid`` as ``name.pgm`` and ``name.yaml``; False after logging a failure."""
     info = grid.info
-    import numpy as np
+    import numpy as np  # numpy only on this path
 
     log(INFO, f"Received a {info.width} X {info.height} map @ {info.resolution:.3f} m/pix")
     image = f"{name}.pgm"

@@ -29,7 +29,7 @@ def parse_pgm(data: bytes, name: str = "image") -> npt.NDArray[np.uint8]:
     Raises:
         ImageError: ``data`` is not a PGM image.
     """
-    import numpy as np
+    import numpy as np  # numpy only on this path
 
     fields: list[bytes] = []
     at = 0
@@ -87,7 +87,7 @@ def read_channels(path: Path) -> npt.NDArray[np.uint8]:
         raise ImageError(f"{path}: reading this image needs Pillow (pip install pillow)") from None
     import io  # noqa: PLC0415 - io is not needed at start-up
 
-    import numpy as np
+    import numpy as np  # numpy only on this path
 
     try:
         with Image.open(io.BytesIO(data)) as image:
