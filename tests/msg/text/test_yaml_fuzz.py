@@ -149,13 +149,15 @@ _PARAM_SCALARS = st.one_of(
     st.binary(max_size=12),
     st.sampled_from(["deg(90)", "rad(pi)", "yes", "~", "1:30", "010", "", " x ", "a: b"]),
 )
-param_values = st.recursive(
-    _PARAM_SCALARS,
-    lambda inner: st.one_of(
+
+
+def _containers(inner: st.SearchStrategy[Any]) -> st.SearchStrategy[Any]:
+    return st.one_of(
         st.lists(inner, max_size=4), st.dictionaries(st.text(max_size=6), inner, max_size=4)
-    ),
-    max_leaves=12,
-)
+    )
+
+
+param_values = st.recursive(_PARAM_SCALARS, _containers, max_leaves=12)
 
 
 def _same(a: Any, b: Any) -> bool:

@@ -155,9 +155,8 @@ def rasterise(world: World, bitmap: Callable[[Block], npt.NDArray[np.uint8]] | N
     """The `Grid` of ``world``; ``bitmap(block)`` gives a floor plan's pixels (grey, top row
     first) for blocks that name one (without it such blocks are drawn as boxes)."""
     res = world.resolution
-    x0, y0, x1, y1 = _bounds(world)
-    cols = max(1, math.ceil((x1 - x0) / res))
-    rows = max(1, math.ceil((y1 - y0) / res))
+    x0, y0, _, _ = _bounds(world)
+    rows, cols = grid_shape(world)
     grid = Grid(
         np.zeros((rows, cols), dtype=np.bool_),
         np.zeros((rows, cols), dtype=np.float32),
@@ -168,6 +167,13 @@ def rasterise(world: World, bitmap: Callable[[Block], npt.NDArray[np.uint8]] | N
         dark = crop_dark(bitmap(block)) if block.bitmap and bitmap is not None else None
         _draw(grid, block, dark)
     return grid
+
+
+def grid_shape(world: World) -> tuple[int, int]:
+    """The rows and columns of ``world``'s grid (what `rasterise` will allocate)."""
+    x0, y0, x1, y1 = _bounds(world)
+    res = world.resolution
+    return max(1, math.ceil((y1 - y0) / res)), max(1, math.ceil((x1 - x0) / res))
 
 
 def _draw(grid: Grid, block: Block, dark: npt.NDArray[np.bool_] | None) -> None:
@@ -220,5 +226,6 @@ __all__ = [
     "body_pose",
     "crop_dark",
     "distance_lower_bound",
+    "grid_shape",
     "rasterise",
 ]

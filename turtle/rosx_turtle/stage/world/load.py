@@ -18,6 +18,10 @@ if TYPE_CHECKING:
     from rosx_turtle.stage.world.model import Block, World
 
 
+#: The most cells a world's occupancy grid may have (5 bytes each): a 100 m square at 2 cm.
+MAX_CELLS = 25_000_000
+
+
 def _include(name: str, including: str) -> tuple[str, str]:
     path = Path(including).parent / name
     return path.read_text(encoding="utf-8", errors="replace"), str(path)
@@ -47,9 +51,15 @@ def load_world(path: Path) -> tuple[World, Grid]:
     Raises:
         WorldFileError: the world file or one of its bitmaps cannot be read.
     """
-    from rosx_turtle.stage.engine.grid import rasterise  # noqa: PLC0415 - numpy
+    from rosx_turtle.stage.engine.grid import grid_shape, rasterise  # noqa: PLC0415 - numpy
 
     world = read_world(path)
+    rows, cols = grid_shape(world)
+    if rows * cols > MAX_CELLS:
+        raise WorldFileError(
+            f"{path}:1: the world's grid would be {cols} x {rows} cells at resolution "
+            f"{world.resolution:g}: more than {MAX_CELLS} (a coarser resolution?)"
+        )
 
     def bitmap(block: Block) -> npt.NDArray[np.uint8]:
         try:

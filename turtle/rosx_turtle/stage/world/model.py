@@ -25,6 +25,9 @@ if TYPE_CHECKING:
 Pose = tuple[float, float, float]
 
 #: World properties read, and those accepted without effect.
+#: The most beams a laser may cast (real ones cast up to a few thousand); each beam is traced
+#: through the grid at every scan.
+MAX_SAMPLES = 100_000
 _WORLD_PROPS = {"resolution", "interval_sim"}
 _WORLD_QUIET = {
     "interval_real", "quit_time", "threads", "paused", "speedup", "show_clock",
@@ -144,10 +147,12 @@ class _Reader:
 
 
 def _numbers(value: Value, count: int, name: str) -> tuple[float, ...]:
-    items = value.items
-    if len(items) < count or not all(isinstance(item, float) for item in items[:count]):
+    items = value.items[:count]
+    # Finite ones: Stage reads "nan" and "inf" as numbers, and a pose or size of either has
+    # no place in a grid.
+    if len(items) < count or not all(isinstance(i, float) and math.isfinite(i) for i in items):
         raise WorldFileError(f"{value.where}: '{name}' needs {count} numbers")
-    return tuple(float(item) for item in items[:count])
+    return tuple(float(item) for item in items)
 
 
 def _number(entity: Entity, name: str, default: float) -> float:
@@ -323,6 +328,8 @@ def _laser(reader: _Reader, entity: Entity, body_height: float) -> Laser:
         raise WorldFileError(
             f"{source.where}: a laser needs samples >= 1, range min < max and fov >= 0"
         )
+    if samples > MAX_SAMPLES:
+        raise WorldFileError(f"{source.where}: a laser of more than {MAX_SAMPLES} samples")
     x, y, a = _pose(entity)
     return Laser(
         name=_text(entity, "name", "") or entity.declared,

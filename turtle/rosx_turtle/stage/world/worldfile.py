@@ -26,6 +26,11 @@ if TYPE_CHECKING:
 
 #: Nested includes deeper than this are taken for an include loop.
 MAX_INCLUDE_DEPTH = 16
+#: The deepest entities may nest (Stage's examples nest three or four deep).
+MAX_NESTING = 64
+#: The most entities a world may make, definitions expanded: a define holding two instances
+#: of the previous one doubles with every line, a billion models in thirty.
+MAX_ENTITIES = 20_000
 
 _TOKEN = re.compile(
     r"""(?P<space>[ \t\r]+)|(?P<newline>\n)|(?P<comment>\#[^\n]*)
@@ -108,6 +113,8 @@ class _Parser:
         self.load = load
         self.defines: dict[str, _Define] = {}
         self.depth = 0
+        self.nesting = 0
+        self.entities = 0
 
     def parse_file(self, text: str, file: str, into: Entity) -> None:
         tokens = list(_tokens(text, file))
@@ -141,7 +148,15 @@ class _Parser:
         return i
 
     def _body(self, tokens: list[_Token], i: int, entity: Entity) -> int:
-        i = self._statements(tokens, i, entity, top=False)
+        if self.nesting >= MAX_NESTING:
+            raise WorldFileError(
+                f"{tokens[i - 1].where}: entities nested more than {MAX_NESTING} deep"
+            )
+        self.nesting += 1
+        try:
+            i = self._statements(tokens, i, entity, top=False)
+        finally:
+            self.nesting -= 1
         return i + 1  # the ")"
 
     def _include(self, tokens: list[_Token], i: int, into: Entity) -> int:
@@ -214,18 +229,25 @@ class _Parser:
         entity = Entity(kind, declared, where)
         for define in reversed(chain):  # the base type's defaults first
             entity.props.update(define.props)
-            entity.children.extend(_copy(child) for child in define.children)
+            entity.children.extend(self._copy(child, where) for child in define.children)
+        self._count(where)
         return entity
 
+    def _copy(self, entity: Entity, where: Where) -> Entity:
+        """A deep copy of a definition's child, counted as the entities it makes."""
+        self._count(where)
+        return Entity(
+            entity.kind,
+            entity.declared,
+            entity.where,
+            dict(entity.props),
+            [self._copy(child, where) for child in entity.children],
+        )
 
-def _copy(entity: Entity) -> Entity:
-    return Entity(
-        entity.kind,
-        entity.declared,
-        entity.where,
-        dict(entity.props),
-        [_copy(child) for child in entity.children],
-    )
+    def _count(self, where: Where) -> None:
+        self.entities += 1
+        if self.entities > MAX_ENTITIES:
+            raise WorldFileError(f"{where}: the world makes more than {MAX_ENTITIES} models")
 
 
 def parse(
