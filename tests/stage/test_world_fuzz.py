@@ -123,6 +123,7 @@ BOMBS = {
     "grid cells": "resolution 0.000001\nmodel ( size [ 10000 10000 1 ] )\n",
     "grid far apart": "model ( pose [ -1e9 0 0 0 ] )\nmodel ( pose [ 1e9 0 0 0 ] )\n",
     "laser beams": "position ( ranger ( sensor ( range [ 0 8 ] fov 180 samples 1e9 ) ) )\n",
+    "a step of three hundred years": "interval_sim 9223372036855.0\nposition ( )\n",
     "defines that double": "define d0 model ( )\n"
     + "".join(f"define d{i + 1} model ( d{i} ( ) d{i} ( ) )\n" for i in range(30))
     + "d30 ( )\n",

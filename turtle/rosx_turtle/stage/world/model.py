@@ -28,6 +28,9 @@ Pose = tuple[float, float, float]
 #: The most beams a laser may cast (real ones cast up to a few thousand); each beam is traced
 #: through the grid at every scan.
 MAX_SAMPLES = 100_000
+#: The longest step or update interval, in seconds: simulated time counts in int64 nanoseconds,
+#: which a step of 9e12 ms overflows at once.
+MAX_INTERVAL = 3600.0
 _WORLD_PROPS = {"resolution", "interval_sim"}
 _WORLD_QUIET = {
     "interval_real", "quit_time", "threads", "paused", "speedup", "show_clock",
@@ -192,7 +195,11 @@ def _size(entity: Entity, default: tuple[float, float, float]) -> tuple[float, f
 
 
 def _interval(entity: Entity, default: float) -> float:
-    return _number(entity, "update_interval", default * 1000.0) / 1000.0
+    interval = _number(entity, "update_interval", default * 1000.0) / 1000.0
+    if interval > MAX_INTERVAL:
+        where = entity.props["update_interval"].where
+        raise WorldFileError(f"{where}: update_interval of more than {MAX_INTERVAL:g} s")
+    return interval
 
 
 def build(root: Entity) -> World:
@@ -207,6 +214,8 @@ def build(root: Entity) -> World:
     interval = _number(root, "interval_sim", 100.0) / 1000.0
     if resolution <= 0 or interval <= 0:
         raise WorldFileError(f"{root.where}: resolution and interval_sim must be positive")
+    if interval > MAX_INTERVAL:
+        raise WorldFileError(f"{root.where}: interval_sim of more than {MAX_INTERVAL:g} s")
     blocks: list[Block] = []
     robots: list[Robot] = []
     for entity in root.children:
