@@ -293,7 +293,7 @@ class FoxgloveSession:
             if handler is None:
                 raise _RefusalError(f'Unrecognized client opcode "{request["op"]}"')
             return handler(self, request)
-        except ValueError as exc:  # JSON errors, and _RefusalError
+        except (ValueError, RecursionError) as exc:  # JSON errors (nesting), _RefusalError
             return Reaction(frames=[self.status(ERROR, str(exc))])
         except (KeyError, TypeError) as exc:
             return Reaction(frames=[self.status(ERROR, f"Invalid request: missing or wrong {exc}")])

@@ -51,6 +51,11 @@ class Reassembly:
         """
         if total < 1 or not 0 <= num < total:
             raise FragmentError(f"fragment {num} of {total} of message {mid} is out of range")
+        if total > self.max_message:  # a fragment holds a character at least
+            raise FragmentError(
+                f"message {mid} in {total} fragments exceeds the limit of {self.max_message} "
+                "bytes: it is dropped"
+            )
         pieces = self._pending.get(mid)
         if pieces is None:
             if len(self._pending) >= MAX_PENDING:

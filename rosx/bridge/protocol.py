@@ -105,7 +105,7 @@ class Session:
             return self.receive_cbor(data, now)
         try:
             request = json.loads(data)
-        except ValueError as exc:
+        except (ValueError, RecursionError) as exc:  # RecursionError: nested too deep
             return self.error(f"Invalid JSON ({exc}): {excerpt(data)}")
         return self.handle(request, now)
 
@@ -126,6 +126,8 @@ class Session:
                 f"Expected a JSON object with an 'op' field but received {kind(request)}"
             )
         rid = request.get("id")
+        if not isinstance(rid, str | int | float | None):  # ids key subscriptions and fragments
+            return self.error(f"Expected field id to be a string. Invalid value: {kind(rid)}")
         op = request.get("op")
         if op is None:
             return self.error(
