@@ -45,6 +45,10 @@ HIGH_WATER = 4 * 1024 * 1024
 # sendmsg takes at most IOV_MAX (1024 on Linux) buffers.
 _MAX_IOV = 512
 
+#: While frames wait, a new frame tries to write them once every this many frames (the I/O
+#: loop writes them too, whenever the socket is writable).
+FLUSH_EVERY = 16
+
 
 def frame_size(frame: Frame) -> int:
     """The bytes of a frame, whole or in parts."""
@@ -89,6 +93,7 @@ class OutgoingStream:
         self._pending: deque[Frame] = deque()
         self._pending_bytes = 0
         self._head_sent = 0  # bytes of _pending[0] already written
+        self._queued_since = 0  # frames queued since a queued frame last tried to write
         self.closed = False
         self.bytes_sent = 0
         self.frames_sent = 0
@@ -139,11 +144,18 @@ class OutgoingStream:
         # Whatever the peer has read since makes room now, not when the loop next gets
         # the GIL (up to a switch interval, 5 ms, behind a publishing thread): the queue
         # goes out in one ``sendmsg``, coalesced (a Unix socket's buffer counts each
-        # ``send`` of a small frame as a whole kernel buffer).
-        self._flush_locked()
+        # ``send`` of a small frame as a whole kernel buffer). Once every `FLUSH_EVERY`
+        # frames, or before a frame would be dropped: a peer slower than the publisher keeps
+        # the socket full, and gathering the queue's buffers for every frame cost the
+        # publisher four times its usual time, taken from the subscriber when they share a
+        # CPU.
+        limit = self._limit
+        self._queued_since += 1
+        if self._queued_since >= FLUSH_EVERY or (limit and len(pending) > limit):
+            self._queued_since = 0
+            self._flush_locked()
         if not pending:
             return
-        limit = self._limit
         # A head half on the wire is no longer queued, and dropping it would corrupt
         # the stream: the oldest frame that may go is the one after it.
         partial = 1 if self._head_sent else 0
