@@ -19,6 +19,7 @@ from bisect import bisect_right
 from math import acos, sin, sqrt
 
 from rosx.tf import stamps
+from rosx.tf.stamps import SECOND
 
 #: (parent_id, tx, ty, tz, qx, qy, qz, qw)
 Sample = tuple[int, float, float, float, float, float, float, float]
@@ -131,15 +132,18 @@ class TimeCache:
         if time < earliest:
             return _past(time, earliest)
         i = bisect_right(stamps_, time) - 1
-        one = self.samples[i]
-        two = self.samples[i + 1]
+        samples = self.samples
+        one = samples[i]
+        two = samples[i + 1]
         if one[0] != two[0]:
             return one
         t1 = stamps_[i]
-        t2 = stamps_[i + 1]
-        if t1 == t2:
-            return two
-        return interpolate(one, two, stamps.to_sec(time - t1) / stamps.to_sec(t2 - t1))
+        span = stamps_[i + 1] - t1
+        into = time - t1
+        # Duration::toSec() of each (seconds + 1e-9 * nanoseconds), as tf2 divides them
+        if span < SECOND:
+            return interpolate(one, two, (1e-9 * into) / (1e-9 * span))
+        return interpolate(one, two, stamps.to_sec(into) / stamps.to_sec(span))
 
     def parent(self, time: int) -> int | str:
         """The parent frame's id at ``time``, or tf2's text of why there is none."""

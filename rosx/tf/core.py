@@ -146,6 +146,12 @@ class BufferCore:
         self._listeners: list[Callable[[], object]] = []
         #: Counts insertions, so that waiters and views know something changed.
         self.version = 0
+        #: Walks to the root at `_walks_time`, and latest common times, valid while
+        #: `version` is unchanged.
+        self._walks: dict[int, Any] = {}
+        self._walks_time = -1
+        self._common: dict[tuple[int, int], tuple[int, int, str]] = {}
+        self._walks_version = 0
 
     # -- storing -----------------------------------------------------------------------------
 
@@ -298,12 +304,114 @@ class BufferCore:
                     cache = self._caches[self._ids.get(target, 0)]
                     return (0 if cache is None else cache.newest_stamp()), IDENTITY
                 return time, IDENTITY
-            target_id = self.validate("lookupTransform argument target_frame", target)
-            source_id = self.validate("lookupTransform argument source_frame", source)
+            ids = self._ids
+            target_id = ids.get(target, 0)
+            source_id = ids.get(source, 0)
+            if not target_id or not source_id or target[0] == "/" or source[0] == "/":
+                target_id = self.validate("lookupTransform argument target_frame", target)
+                source_id = self.validate("lookupTransform argument source_frame", source)
+            found = self._remembered(time, target_id, source_id)
+            if found is not None:
+                return found
             code, stamp, result, text = self._walk(time, target_id, source_id, True)
         if code:
             raise _RAISE[code](text)
         return stamp, result
+
+    # -- walks remembered until the next insertion -------------------------------------------
+
+    def _remembered(
+        self, time: int, target_id: int, source_id: int
+    ) -> tuple[int, Transform] | None:
+        """`lookup`'s answer from the two frames' walks to the root at ``time``, each kept
+        until the buffer changes (a tree is usually asked about many times at one time); None
+        where tf2's walk would not simply meet at the root (errors, loops), which `_walk`
+        answers with tf2's texts.
+
+        tf2's walk accumulates from the source up until it meets the target, and from the
+        target up until it meets the source or the source's root; a frame's walk to the root
+        holds every partial sum either side needs, computed in the same order, so the answer
+        is tf2's to the bit."""
+        if self._walks_version != self.version:
+            self._walks.clear()
+            self._common.clear()
+            self._walks_version = self.version
+        if not time:
+            common = self._common.get((target_id, source_id))
+            if common is None:
+                common = self._common[(target_id, source_id)] = self._latest_common_time(
+                    target_id, source_id
+                )
+            if common[0]:
+                return None
+            time = common[1]
+        up = self._walk_up(source_id, time)
+        if up is None:
+            return None
+        frames, accs, clean, root = up
+        if target_id in frames:
+            return time, accs[frames.index(target_id) - 1]
+        if not clean:
+            return None
+        down = self._walk_up(target_id, time)
+        if down is None:
+            return None
+        target_frames, target_accs, target_clean, target_root = down
+        if source_id in target_frames:
+            return time, _inverse(target_accs[target_frames.index(source_id) - 1])
+        if not target_clean or root != target_root:
+            return None
+        source_acc = accs[-1] if accs else IDENTITY
+        target_acc = target_accs[-1] if target_accs else IDENTITY
+        return time, _full_path(source_acc, target_acc)
+
+    def _walk_up(self, frame: int, time: int) -> Any:
+        """``(frames, sums, clean, root)``: the frames from ``frame`` to its root at ``time``
+        whose transforms were found, the accumulated transform after each, whether the walk
+        reached a frame without transforms (the root), and that frame; None for a loop."""
+        if time != self._walks_time:  # the walks of one time are kept: that of the last asked
+            self._walks.clear()
+            self._walks_time = time
+        walk = self._walks.get(frame)
+        if walk is not None:
+            return walk
+        caches = self._caches
+        count = len(caches)
+        frames: list[int] = []
+        accs: list[Transform] = []
+        acc = IDENTITY
+        clean = False
+        start = frame
+        while frame:
+            cache = caches[frame] if frame < count else None
+            if cache is None:
+                clean = True
+                break
+            step: Any = cache.get(time)
+            if isinstance(step, str):
+                break
+            frames.append(frame)
+            parent, tx, ty, tz, qx, qy, qz, qw = step
+            ax, ay, az, bx, by, bz, bw = acc
+            x = qw * ax + qy * az - qz * ay
+            y = qw * ay + qz * ax - qx * az
+            z = qw * az + qx * ay - qy * ax
+            w = -qx * ax - qy * ay - qz * az
+            acc = (
+                w * -qx + x * qw + y * -qz - z * -qy + tx,
+                w * -qy + y * qw + z * -qx - x * -qz + ty,
+                w * -qz + z * qw + x * -qy - y * -qx + tz,
+                qw * bx + qx * bw + qy * bz - qz * by,
+                qw * by + qy * bw + qz * bx - qx * bz,
+                qw * bz + qz * bw + qx * by - qy * bx,
+                qw * bw - qx * bx - qy * by - qz * bz,
+            )
+            accs.append(acc)
+            frame = parent
+            if len(frames) > MAX_GRAPH_DEPTH:
+                return None
+        walk = self._walks[start] = (frames, accs, clean, frame)
+        return walk
 
     def lookup_full(
         self, target: str, target_time: int, source: str, source_time: int, fixed: str

@@ -1,0 +1,348 @@
+"""tf2 speed of rosx against Debian's tf2_ros (python3-tf2-ros, whose core is C++), one run.
+
+The same scripts run twice: under ROS 1's Python with Debian's ``tf2_ros`` and ``rospy``, and
+under this Python with rosx's (``rosx run-script``, whose ``tf2_ros`` is `rosx.tf`):
+
+* ``lookup``: ``Buffer.lookup_transform`` on a 30-frame robot tree (map, odom, a base, two
+  six-joint arms with grippers, sensors, a head, wheels; depth up to 12) holding 10 s of
+  transforms at 100 Hz, between frame pairs drawn at random: at the latest time
+  (``rospy.Time()``), and at random times in the buffer (each lookup its own time, so no
+  answer can be kept from the one before). p50 and p99 of single calls, in µs.
+* ``listener``: a ``TransformListener`` taking 50 frames at 100 Hz on ``/tf`` (one TFMessage
+  of 50 transforms a hundred times a second, from a rospy publisher in both cases): the CPU
+  it uses, in % of one core, over ``--seconds``.
+* ``latency``: a ``TransformBroadcaster`` in one process, a ``Buffer`` and listener in
+  another: from ``sendTransform`` to the transform being found by ``lookup_transform`` (the
+  listener polls every 0.1 ms), p50 and p99 over ``--messages`` transforms at 50 Hz.
+
+Targets (DESIGN.md): lookup p50 ≤ 1 x Debian's; listener ≤ 10 % of one core; latency p50 ≤
+0.5 x ROS 1's. Run: ``python bench/bench_tf.py [--only lookup|listener|latency]
+[--seconds N] [--messages N] [--rounds N]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from bench import interpreter  # noqa: E402 -- after the path is set
+from bench.interpreter import ROS1_PYTHON  # noqa: E402
+
+# A robot: (child, parent), in the order they are sent.
+TREE = [
+    ("odom", "map"),
+    ("base_footprint", "odom"),
+    ("base_link", "base_footprint"),
+    *[(f"left_{i}", "base_link" if i == 1 else f"left_{i - 1}") for i in range(1, 7)],
+    ("left_gripper", "left_6"),
+    ("left_finger", "left_gripper"),
+    *[(f"right_{i}", "base_link" if i == 1 else f"right_{i - 1}") for i in range(1, 7)],
+    ("right_gripper", "right_6"),
+    ("right_finger", "right_gripper"),
+    ("torso", "base_link"),
+    ("head", "torso"),
+    ("camera", "head"),
+    ("camera_optical", "camera"),
+    ("laser", "base_link"),
+    ("imu", "base_link"),
+    ("wheel_left", "base_link"),
+    ("wheel_right", "base_link"),
+    ("gps", "base_link"),
+    ("bumper", "base_footprint"),
+]
+assert len(TREE) == 29  # 30 frames with map
+
+LOOKUP = r"""
+import json, math, random, sys, time
+import rospy, tf2_ros
+from geometry_msgs.msg import TransformStamped
+tree = json.loads(sys.argv[1]); count = int(sys.argv[2])
+buffer = tf2_ros.Buffer(rospy.Duration(10), debug=False)
+start = 1000.0
+for k in range(1000):  # 10 s at 100 Hz
+    for i, (child, parent) in enumerate(tree):
+        t = TransformStamped()
+        t.header.frame_id = parent
+        t.child_frame_id = child
+        t.header.stamp = rospy.Time.from_sec(start + k * 0.01)
+        a = 0.001 * k + 0.1 * i
+        t.transform.translation.x = 0.1 * i
+        t.transform.translation.y = math.sin(a)
+        t.transform.rotation.z = math.sin(a / 2)
+        t.transform.rotation.w = math.cos(a / 2)
+        buffer.set_transform(t, "bench")
+frames = ["map"] + [c for c, _ in tree]
+rng = random.Random(30)
+pairs = [rng.sample(frames, 2) for _ in range(count)]
+times = [rospy.Time.from_sec(start + 0.5 + 9.0 * rng.random()) for _ in range(count)]
+latest = rospy.Time()
+out = {}
+for name, when in (("latest", None), ("random", times)):
+    spent = []
+    for i, (target, source) in enumerate(pairs):
+        at = latest if when is None else when[i]
+        t0 = time.perf_counter_ns()
+        buffer.lookup_transform(target, source, at)
+        spent.append(time.perf_counter_ns() - t0)
+    spent.sort()
+    out[name] = [spent[len(spent) // 2] / 1000, spent[len(spent) * 99 // 100] / 1000]
+print(json.dumps(out))
+"""
+
+PUBLISHER = r"""
+import math, sys, rospy
+from geometry_msgs.msg import TransformStamped
+from tf2_msgs.msg import TFMessage
+rospy.init_node("bench_tf_publisher", disable_signals=True)
+pub = rospy.Publisher("/tf", TFMessage, queue_size=100)
+rate = rospy.Rate(100)
+k = 0
+while not rospy.is_shutdown():
+    now = rospy.Time.now()
+    msg = TFMessage()
+    for i in range(50):
+        t = TransformStamped()
+        t.header.frame_id = "base" if i == 0 else "f%d" % (i - 1)
+        t.child_frame_id = "f%d" % i
+        t.header.stamp = now
+        t.transform.translation.x = 0.01 * k
+        t.transform.rotation.z = math.sin(0.001 * k)
+        t.transform.rotation.w = math.cos(0.001 * k)
+        msg.transforms.append(t)
+    pub.publish(msg)
+    k += 1
+    rate.sleep()
+"""
+
+LISTENER = r"""
+import json, resource, sys, time
+import rospy, tf2_ros
+seconds = float(sys.argv[1])
+rospy.init_node("bench_tf_listener", disable_signals=True)
+buffer = tf2_ros.Buffer()
+listener = tf2_ros.TransformListener(buffer)
+while not buffer.can_transform("base", "f49", rospy.Time()):
+    time.sleep(0.05)
+time.sleep(1.0)  # warm-up
+before = resource.getrusage(resource.RUSAGE_SELF)
+t0 = time.monotonic()
+time.sleep(seconds)
+after = resource.getrusage(resource.RUSAGE_SELF)
+wall = time.monotonic() - t0
+cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+rate = float(buffer.all_frames_as_yaml().split("f49: ")[1].split("rate: ")[1].split()[0])
+print(json.dumps({"cpu": 100 * cpu / wall, "rate": rate}))
+"""
+
+BROADCASTER = r"""
+import sys, time, rospy, tf2_ros
+from geometry_msgs.msg import TransformStamped
+count = int(sys.argv[1])
+rospy.init_node("bench_tf_broadcaster", disable_signals=True)
+br = tf2_ros.TransformBroadcaster()
+time.sleep(2.0)  # the listener connects
+for k in range(count + 20):
+    t = TransformStamped()
+    t.header.frame_id = "world"
+    t.child_frame_id = "mover"
+    t.transform.translation.x = k
+    t.transform.rotation.w = 1.0
+    t.header.stamp = rospy.Time.now()
+    br.sendTransform(t)
+    time.sleep(0.02)
+"""
+
+WAITER = r"""
+import json, sys, time, rospy, tf2_ros
+count = int(sys.argv[1])
+rospy.init_node("bench_tf_waiter", disable_signals=True)
+buffer = tf2_ros.Buffer()
+listener = tf2_ros.TransformListener(buffer)
+print("ready", flush=True)
+seen = -1
+delays = []
+zero = rospy.Time()
+deadline = time.time() + 60
+while len(delays) < count + 10 and time.time() < deadline:
+    try:
+        t = buffer.lookup_transform("world", "mover", zero)
+    except tf2_ros.TransformException:
+        time.sleep(0.0001)
+        continue
+    k = int(t.transform.translation.x)
+    if k != seen:
+        delays.append(time.time() - t.header.stamp.to_sec())
+        seen = k
+    time.sleep(0.0001)
+delays = sorted(delays[10:])
+p50, p99 = delays[len(delays) // 2], delays[len(delays) * 99 // 100]
+print(json.dumps({"p50": p50 * 1e6, "p99": p99 * 1e6}))
+"""
+
+
+def free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return int(sock.getsockname()[1])
+
+
+def start_master() -> tuple[subprocess.Popen[bytes], str]:
+    port = free_port()
+    uri = f"http://127.0.0.1:{port}/"
+    if shutil.which("rosmaster", path="/usr/bin"):
+        cmd = ["/usr/bin/rosmaster", "--core", "-p", str(port)]
+    else:
+        cmd = [sys.executable, "-m", "rosx_commands.main", "roscore", "-p", str(port)]
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 15
+    while time.monotonic() < deadline:
+        try:
+            with socket.create_connection(("127.0.0.1", port), timeout=0.2):
+                return proc, uri
+        except OSError:
+            time.sleep(0.1)
+    proc.kill()
+    raise SystemExit("the master did not start")
+
+
+def command(lib: str, script: Path, *argv: object) -> tuple[list[str], dict[str, str]]:
+    """How to run ``script`` with ``lib``: ``ros1`` (Debian's tf2_ros) or ``rosx``."""
+    env = dict(os.environ)
+    if lib == "ros1":
+        env["ROS_PACKAGE_PATH"] = "/usr/share"
+        env.pop("PYTHONPATH", None)
+        return [ROS1_PYTHON, str(script), *map(str, argv)], env
+    env["PYTHONPATH"] = str(ROOT)
+    runner = [sys.executable, "-m", "rosx_commands", "run-script", str(script)]
+    return [*runner, *map(str, argv)], env
+
+
+def run(lib: str, script: Path, *argv: object, master: str | None = None) -> dict[str, float]:
+    args, env = command(lib, script, *argv)
+    if master is not None:
+        env["ROS_MASTER_URI"] = master
+    done = subprocess.run(args, env=env, capture_output=True, text=True, timeout=600, check=False)
+    if done.returncode != 0:
+        raise SystemExit(f"{lib} {script.name} failed:\n{done.stderr}")
+    result: dict[str, float] = json.loads(done.stdout.strip().splitlines()[-1])
+    return result
+
+
+def spawn(lib: str, script: Path, master: str, *argv: object) -> subprocess.Popen[str]:
+    args, env = command(lib, script, *argv)
+    env["ROS_MASTER_URI"] = master
+    return subprocess.Popen(
+        args, env=env, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True
+    )
+
+
+def stop(process: subprocess.Popen[str]) -> None:
+    if process.poll() is None:
+        process.terminate()
+        try:
+            process.wait(5)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.wait()
+
+
+def ratio(mine: float, theirs: float) -> str:
+    return f"{mine / theirs:.2f} x" if theirs else "-"
+
+
+def bench_lookup(folder: Path, rounds: int, count: int) -> None:
+    script = folder / "lookup.py"
+    script.write_text(LOOKUP)
+    runs: dict[str, list[dict[str, list[float]]]] = {"ros1": [], "rosx": []}
+    for _ in range(rounds):
+        for lib in ("ros1", "rosx"):
+            runs[lib].append(run(lib, script, json.dumps(TREE), count))  # type: ignore[arg-type]
+    print(f"\nlookup_transform, 30 frames, 10 s at 100 Hz, {count} lookups (µs, median of rounds)")
+    print(f"  {'':<28}{'Debian tf2_ros':>16}{'rosx':>10}{'rosx/ROS 1':>12}")
+    for case in ("latest", "random"):
+        for index, name in ((0, "p50"), (1, "p99")):
+            theirs = sorted(r[case][index] for r in runs["ros1"])[rounds // 2]
+            mine = sorted(r[case][index] for r in runs["rosx"])[rounds // 2]
+            label = f"{'at the latest time' if case == 'latest' else 'at random times'} {name}"
+            print(f"  {label:<28}{theirs:>16.2f}{mine:>10.2f}{ratio(mine, theirs):>12}")
+
+
+def bench_listener(folder: Path, seconds: float, master: str) -> None:
+    publisher = folder / "publisher.py"
+    publisher.write_text(PUBLISHER)
+    listener = folder / "listener.py"
+    listener.write_text(LISTENER)
+    sender = spawn("ros1", publisher, master)
+    try:
+        results = {lib: run(lib, listener, seconds, master=master) for lib in ("ros1", "rosx")}
+    finally:
+        stop(sender)
+    print(f"\nTransformListener, 50 frames at 100 Hz on /tf, {seconds:g} s (% of one core)")
+    theirs, mine = results["ros1"]["cpu"], results["rosx"]["cpu"]
+    print(f"  Debian tf2_ros {theirs:.1f} %   rosx {mine:.1f} %   rosx/ROS 1 {ratio(mine, theirs)}")
+    rates = (results["ros1"]["rate"], results["rosx"]["rate"])
+    print(f"  (each frame's rate in the buffer: ROS 1 {rates[0]:.1f} Hz, rosx {rates[1]:.1f} Hz)")
+
+
+def bench_latency(folder: Path, messages: int, master: str) -> None:
+    broadcaster = folder / "broadcaster.py"
+    broadcaster.write_text(BROADCASTER)
+    waiter = folder / "waiter.py"
+    waiter.write_text(WAITER)
+    results = {}
+    for lib in ("ros1", "rosx"):
+        listening = spawn(lib, waiter, master, messages)
+        assert listening.stdout is not None
+        listening.stdout.readline()  # ready
+        sending = spawn(lib, broadcaster, master, messages)
+        try:
+            out, _ = listening.communicate(timeout=120)
+        finally:
+            stop(sending)
+            stop(listening)
+        results[lib] = json.loads(out.strip().splitlines()[-1])
+    print(f"\nsendTransform -> lookup_transform finds it, {messages} transforms at 50 Hz (µs)")
+    for name in ("p50", "p99"):
+        theirs, mine = results["ros1"][name], results["rosx"][name]
+        print(f"  {name}: ROS 1 {theirs:.0f}   rosx {mine:.0f}   rosx/ROS 1 {ratio(mine, theirs)}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--only", choices=("lookup", "listener", "latency"))
+    parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--messages", type=int, default=500)
+    parser.add_argument("--rounds", type=int, default=3)
+    parser.add_argument("--lookups", type=int, default=20000)
+    interpreter.add_option(parser)
+    args = parser.parse_args()
+    interpreter.run_on(args.python)
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        if args.only in (None, "lookup"):
+            bench_lookup(folder, args.rounds, args.lookups)
+        if args.only in (None, "listener", "latency"):
+            master_process, master = start_master()
+            try:
+                if args.only in (None, "listener"):
+                    bench_listener(folder, args.seconds, master)
+                if args.only in (None, "latency"):
+                    bench_latency(folder, args.messages, master)
+            finally:
+                master_process.terminate()
+                master_process.wait()
+
+
+if __name__ == "__main__":
+    main()
