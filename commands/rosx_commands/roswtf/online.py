@@ -125,6 +125,9 @@ def check_graph(
     )
     say("... done running graph rules")
     master.close()
+    from rosx_commands.roswtf.tf_checks import check_tf  # noqa: PLC0415 - tf's plugin
+
+    check_tf(master_uri, sorted(state.publishers), findings, say)
 
 
 __all__ = ["check_graph"]
