@@ -8,6 +8,8 @@ and the exit status is 0, as with roscpp.
 
 from __future__ import annotations
 
+import os
+import sys
 import threading
 from typing import TYPE_CHECKING
 
@@ -40,6 +42,9 @@ def run_node(args: NodeArgs, env: Environment, body: Callable[[Node], object]) -
 def _guarded(body: Callable[[Node], object], node: Node) -> None:
     try:
         body(node)
+    except BrokenPipeError:  # the reader went away (``tf_echo a b | head``): stop quietly
+        _quiet_stdout()
+        node.shutdown("output closed")
     except Exception as error:  # a node shutting down under the body ends it quietly
         if not node.is_shutdown():
             node.shutdown(f"tool failed: {error}")
@@ -47,6 +52,15 @@ def _guarded(body: Callable[[Node], object], node: Node) -> None:
     else:
         if not node.is_shutdown():
             node.shutdown("done")
+
+
+def _quiet_stdout() -> None:
+    """Point the process's stdout at /dev/null, so that nothing more fails on exit."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
 
 
 __all__ = ["run_node"]
