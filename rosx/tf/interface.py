@@ -32,6 +32,10 @@ class NotImplementedException(Exception):  # noqa: N818 - tf2_ros's name
         self.errstr = "CanTransform or LookupTransform not implemented"
 
 
+# As ROS 1's, so that a traceback names them alike.
+TypeException.__module__ = NotImplementedException.__module__ = "tf2_ros.buffer_interface"
+
+
 def _keys(key: Any) -> tuple[Any, ...]:
     name = getattr(key, "_type", None)
     return (key, name) if isinstance(name, str) else (key,)
