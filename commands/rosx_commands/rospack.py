@@ -71,13 +71,14 @@ def _provided(package: str) -> bool:
 
 def _answer(command: str, package: str, index: PackageIndex) -> list[str]:
     from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415 - the package index loads only when used
-    from rosx.packages.manifest import ManifestError  # noqa: PLC0415 - the package index loads only when used
 
     if command == "find":
         try:
             return [str(index.find(package))]
         except PackageNotFoundError:
             raise _Failed(f"package '{package}' not found") from None
+    # Manifests (and XML) only past find: a <TAB> and rosbash's functions run find often.
+    from rosx.packages.manifest import ManifestError  # noqa: PLC0415 - XML past find only
     if not index.is_known(package):
         raise _Failed(f"no such package {package}")
     try:
