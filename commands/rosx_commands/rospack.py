@@ -79,6 +79,7 @@ def _answer(command: str, package: str, index: PackageIndex) -> list[str]:
             raise _Failed(f"package '{package}' not found") from None
     # Manifests (and XML) only past find: a <TAB> and rosbash's functions run find often.
     from rosx.packages.manifest import ManifestError  # noqa: PLC0415 - XML past find only
+
     if not index.is_known(package):
         raise _Failed(f"no such package {package}")
     try:
