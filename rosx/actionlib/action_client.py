@@ -383,11 +383,14 @@ class ActionClient:
         self.manager.register_cancel_fn(self.pub_cancel.publish)
         sub_queue = params.get_param("actionlib_client_sub_queue_size", -1)
         self.sub_queue_size = sub_queue if sub_queue >= 0 else None
+        # Each status message lists every goal the server has: only the newest one counts (a
+        # goal's transitions skipped with older ones are passed through, `states.COMM`), so
+        # unless a queue size is asked for, older ones waiting are dropped unread.
         self.status_sub = topics.Subscriber(
             topic(ns, "status"),
             msgs().GoalStatusArray,
             callback=self._status_cb,
-            queue_size=self.sub_queue_size,
+            queue_size=1 if self.sub_queue_size is None else self.sub_queue_size,
         )
         self.result_sub = topics.Subscriber(
             topic(ns, "result"),

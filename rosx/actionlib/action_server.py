@@ -67,6 +67,7 @@ class ActionServer:
         self.lock = threading.RLock()
         self.status_timer: timing.Timer | None = None
         self.status_list: list[StatusTracker] = []
+        self._next_prune = -1  # ns; -1: walk the list at the next publication
         self.last_cancel = timing.Time()
         self.status_list_timeout = timing.Duration()
         self.id_generator = GoalIDGenerator()
@@ -196,19 +197,33 @@ class ActionServer:
         """Publish the status list, first dropping the goals whose time in it is up."""
         with self.lock:
             now = timing.Time.now()
-            zero = timing.Time()
-            timeout = self.status_list_timeout
-            self.status_list = [
-                tracker
-                for tracker in self.status_list
-                if tracker.handle_destruction_time == zero
-                or not tracker.handle_destruction_time + timeout < now
-            ]
+            self._prune(now.to_nsec())
             array = msgs().GoalStatusArray()
             array.status_list = [tracker.status for tracker in self.status_list]
             array.header.stamp = now
             if not lifecycle.is_shutdown() and self.status_pub is not None:
                 self.status_pub.publish(array)
+
+    def _prune(self, now: int) -> None:
+        """Drop the goals whose time in the list ended before ``now`` (ns). The list is only
+        walked once the earliest such time has come (or while no goal has one): it is published
+        at every transition, and holds every goal of the last ``status_list_timeout``."""
+        if now < self._next_prune:
+            return
+        timeout = self.status_list_timeout.to_nsec()
+        kept: list[StatusTracker] = []
+        earliest = -1
+        for tracker in self.status_list:
+            ended = tracker.handle_destruction_time
+            since = ended.secs * 1_000_000_000 + ended.nsecs
+            if since:
+                due = since + timeout
+                if due < now:
+                    continue
+                earliest = due if earliest < 0 else min(earliest, due)
+            kept.append(tracker)
+        self.status_list = kept
+        self._next_prune = earliest
 
     # -- in ------------------------------------------------------------------------------------
 
