@@ -3,7 +3,7 @@
 1. ``roslaunch --dump-params`` of a file with 1 000 parameters (10 groups of 100, half of them
    typed, a quarter from ``<rosparam>``), wall time of the whole command: Debian's
    ``/usr/bin/roslaunch`` against rosx's (``rosx roslaunch`` when the command exists, else the
-   printing helpers behind it, ``tests/launch/print_driver.py``, in a fresh Python).
+   printing helpers behind it, ``tests/support/launch_print.py``, in a fresh Python).
 2. The same file loaded in-process, start-up excluded: roslaunch's ``XmlLoader`` (Debian's
    Python) against `rosx.launch.load_launch` + `dump_params_text`, median of many loads.
 3. Every ``valid/`` file of the test corpus (``tests/launch/corpus``) loaded in-process, as in 2.
@@ -78,7 +78,7 @@ def rosx_command() -> list[str]:
         TOOLS = {}  # noqa: N806
     if "roslaunch" in TOOLS:
         return [sys.executable, "-c", "from rosx_commands.main import run; run()", "roslaunch"]
-    return [sys.executable, str(ROOT / "tests" / "launch" / "print_driver.py")]
+    return [sys.executable, str(ROOT / "tests" / "support" / "launch_print.py")]
 
 
 def timed(args: list[str], env: dict[str, str]) -> float:

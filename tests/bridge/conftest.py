@@ -3,49 +3,17 @@
 from __future__ import annotations
 
 import hashlib
-import json
 import os
-import secrets
 import shutil
 import subprocess
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 import pytest
 
-from rosx.bridge.app import Bridge, BridgeOptions
 from rosx_turtle.node.turtlesim import TurtlesimNode
 from rosx_turtle.roscpp import NodeArgs
-
-
-@dataclass
-class Running:
-    """What a module's tests reach: the master, the bridge's port and its environment."""
-
-    master: str
-    port: int
-    environ: dict[str, str]
-    bridge: Bridge
-    lines: list[str]
-
-    @property
-    def url(self) -> str:
-        return f"ws://127.0.0.1:{self.port}"
-
-
-def start_bridge(master: str, **options: object) -> tuple[Bridge, list[str]]:
-    """A bridge on a free port of the loopback; its log lines collected."""
-    environ = {"ROS_MASTER_URI": master, "ROS_IP": "127.0.0.1"}
-    lines: list[str] = []
-    # A name of its own (this module may be imported twice, as conftest and by path): a second
-    # node of one name makes the master shut the first down.
-    name = f"rosbridge_websocket_{secrets.token_hex(4)}"
-    settings = BridgeOptions(port=0, master_uri=master, environ=environ, node_name=name)
-    for key, value in options.items():
-        setattr(settings, key, value)
-    return Bridge(settings, log=lines.append).start(), lines
+from tests.support.bridge import NodeScript, Running, start_bridge
 
 
 @pytest.fixture(scope="module")
@@ -113,53 +81,6 @@ def npm_dir() -> Path:
     )  # fmt: skip
     assert bundled.returncode == 0, bundled.stderr
     return folder
-
-
-class NodeScript:
-    """A node script's run; its JSON lines (``{"step", "value"}``) read as they come."""
-
-    def __init__(self, folder: Path, *args: str) -> None:
-        self.process = subprocess.Popen(
-            ["node", *args], cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
-        )
-        self.steps: dict[str, list[Any]] = {}
-
-    def _read(self) -> bool:
-        stdout = self.process.stdout
-        assert stdout is not None
-        line = stdout.readline()
-        if not line:
-            return False
-        data = json.loads(line)
-        assert data["step"] != "error", data["value"]
-        self.steps.setdefault(data["step"], []).append(data["value"])
-        return True
-
-    def step(self, name: str) -> Any:
-        """The first value of step ``name``, waiting for it (the script stops itself on a
-        deadline; its error fails the test)."""
-        while name not in self.steps:
-            if not self._read():
-                err = self.process.stderr.read() if self.process.stderr else ""
-                raise AssertionError(f"node ended before {name!r}: {self.steps} {err[-2000:]}")
-        return self.steps[name][0]
-
-    def values(self, name: str) -> list[Any]:
-        """Every value of step ``name``, once the script has ended."""
-        while self._read():
-            pass
-        return self.steps.get(name, [])
-
-    def finish(self) -> int:
-        try:
-            return self.process.wait(timeout=30)
-        finally:
-            if self.process.poll() is None:
-                self.process.kill()
-                self.process.wait()
-            for stream in (self.process.stdout, self.process.stderr):
-                if stream is not None:
-                    stream.close()
 
 
 @pytest.fixture

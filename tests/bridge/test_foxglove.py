@@ -19,7 +19,7 @@ from rosx.bridge.outgoing import serialize
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx_turtle.node.turtlesim import TurtlesimNode
 from rosx_turtle.roscpp import NodeArgs
-from tests.bridge.conftest import start_bridge
+from tests.support.bridge import start_bridge
 
 Pose = get_message_class("turtlesim/Pose")
 Twist = get_message_class("geometry_msgs/Twist")

@@ -20,7 +20,7 @@ import pytest
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
-from tests.bridge.conftest import NodeScript, Running
+from tests.support.bridge import NodeScript, Running
 from tests.support.cli import clean_environ, rosx
 
 CHROMIUM = Path("/usr/bin/chromium")

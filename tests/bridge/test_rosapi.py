@@ -9,7 +9,7 @@ from typing import Any
 import pytest
 from websockets.sync.client import ClientConnection, connect
 
-from tests.bridge.conftest import Running
+from tests.support.bridge import Running
 
 
 @pytest.fixture(scope="module")

@@ -13,7 +13,7 @@ from typing import Any
 
 import pytest
 
-from tests.bridge.conftest import Running
+from tests.support.bridge import Running
 from tests.support.cli import clean_environ, rosx
 
 roslibpy = pytest.importorskip("roslibpy")

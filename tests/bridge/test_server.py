@@ -15,7 +15,7 @@ from websockets.sync.client import ClientConnection, connect
 from websockets.typing import Origin
 
 from rosx.bridge.app import Bridge
-from tests.bridge.conftest import Running, start_bridge
+from tests.support.bridge import Running, start_bridge
 
 
 def receive_json(ws: ClientConnection, timeout: float = 10.0) -> dict[str, Any]:

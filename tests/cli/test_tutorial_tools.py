@@ -16,9 +16,9 @@ from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx.workspace.environment import ROS_ROOT
 from tests.support.cli import clean_environ, rosx
+from tests.support.packages import package
 from tests.support.procs import wait_for
 from tests.support.ros1 import ROS1, needs_ros1, ros1_environ, run_ros1
-from tests.workspace.packages import package
 
 WARNING = "\033[1mWARNING\033[0m"
 ERROR = "\033[31m\033[1mERROR\033[0m"

@@ -22,9 +22,9 @@ import pytest
 from rosx.client.script import SHIM_DIR
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node
-from tests.client.test_rospy_imports import json_of, run_script
 from tests.support.procs import wait_for
 from tests.support.ros1 import needs_ros1, ros1_python_with_path
+from tests.support.scripts import json_of, run_script
 
 Log = get_message_class("rosgraph_msgs/Log")
 String = get_message_class("std_msgs/String")

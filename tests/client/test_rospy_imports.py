@@ -6,12 +6,10 @@ Each script runs in a child process, as ``rosx rosrun`` runs it, so that the imp
 
 from __future__ import annotations
 
-import json
 import signal
 import subprocess
 import sys
 from pathlib import Path
-from typing import Any
 
 import pytest
 
@@ -19,6 +17,7 @@ from rosx.bag import SHIM_DIR as BAG_SHIM_DIR
 from rosx.client.script import SHIM_DIR
 from tests.support.cli import clean_environ
 from tests.support.ros1 import needs_ros1, ros1_python_with_path
+from tests.support.scripts import json_of, run_script
 
 NUM_PACKAGE = """\
 <?xml version="1.0"?>
@@ -30,27 +29,6 @@ NUM_PACKAGE = """\
   <license>TODO</license>
 </package>
 """
-
-
-def run_script(
-    tmp_path: Path, source: str, *args: str, **environ: str
-) -> subprocess.CompletedProcess[str]:
-    script = tmp_path / "script.py"
-    script.write_text(source)
-    return subprocess.run(
-        [sys.executable, "-m", "rosx_commands", "run-script", str(script), *args],
-        env=clean_environ(**environ),
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
-
-
-def json_of(done: subprocess.CompletedProcess[str]) -> Any:
-    assert done.returncode == 0, done.stderr
-    return json.loads(done.stdout.splitlines()[-1])
 
 
 def test_scripts_import_rospy_and_message_modules_laid_out_as_genpy(tmp_path: Path) -> None:

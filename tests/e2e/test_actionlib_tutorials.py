@@ -23,10 +23,10 @@ import pytest
 from rosx.actionlib import SimpleActionClient, SimpleActionServer
 from rosx.actionlib.states import Status
 from rosx.msg.codec.classes import get_message_class
-from tests.e2e.test_tutorial_nodes import ROSCPP_LINE, ROSPY_LINE, Runs, lines
 from tests.support.cli import rosx
 from tests.support.client import fresh_rospy
 from tests.support.procs import stop, wait_for
+from tests.support.tutorial_nodes import ROSCPP_LINE, ROSPY_LINE, Runs, lines
 from tests.support.upstream import export, needs_upstream
 
 FibonacciAction = get_message_class("actionlib_tutorials/FibonacciAction")

@@ -22,8 +22,8 @@ import pytest
 
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node
-from tests.e2e.lab2_scripts import PUB, STOP_AT_TEN
 from tests.support.cli import clean_environ
+from tests.support.lab2_scripts import PUB, STOP_AT_TEN
 from tests.support.procs import free_port, port_open, running, stop, wait_for
 from tests.support.ros1 import ROS1_PYTHON, needs_ros1, ros1_environ
 

@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.e2e.test_tutorial_nodes import ROSPY_LINE, Runs, lines
 from tests.support.procs import stop, wait_for
+from tests.support.tutorial_nodes import ROSPY_LINE, Runs, lines
 
 
 @pytest.fixture

@@ -21,8 +21,8 @@ from rosx_commands.rqt_console.source import LiveSource as ConsoleSource
 from rosx_commands.rqt_logger_level.app import make_level_app
 from rosx_commands.rqt_logger_level.source import LiveSource as LevelSource
 from rosx_turtle.sim.host import SimHost
+from tests.support.pilot import run
 from tests.support.procs import free_port
-from tests.tui.conftest import run
 
 WALL = "Oh no! I hit the wall!"
 DEADLINE = 20.0

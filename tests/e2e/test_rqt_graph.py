@@ -19,7 +19,7 @@ from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from tests.support.cli import clean_environ
 from tests.support.procs import free_port, port_open, running, wait_for
-from tests.tui.terminal import on_a_terminal
+from tests.support.pty_terminal import on_a_terminal
 
 README = Path(__file__).parents[2] / "README.md"
 NODES_ONLY = (

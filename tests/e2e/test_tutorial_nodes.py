@@ -6,70 +6,18 @@ and the log lines of the originals (rospy's ``[INFO] [secs]: …``, roscpp's ``[
 from __future__ import annotations
 
 import re
-import subprocess
-import sys
-from collections.abc import Iterator
-from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
 
 from rosx_turtle.roscpp_tutorials.add_two_ints import atoi
-from tests.support.cli import clean_environ
-from tests.support.procs import stop, wait_for
-
-ROSPY_LINE = r"\[INFO\] \[\d+\.\d+\]: "
-ROSCPP_LINE = r"\[ INFO\] \[\d+\.\d{9}\]: "
-
-
-class Runs:
-    """``rosx rosrun`` processes on the test's master, their output in files."""
-
-    def __init__(self, master: str, folder: Path) -> None:
-        self.env = clean_environ(ROS_MASTER_URI=master)
-        self.folder = folder
-        self.count = 0
-
-    def command(self, *argv: str) -> list[str]:
-        return [sys.executable, "-m", "rosx_commands", "rosrun", *argv]
-
-    @contextmanager
-    def node(self, *argv: str) -> Iterator[Path]:
-        """Run ``rosrun ARGV…`` for the block; yields the file its stdout and stderr go to."""
-        self.count += 1
-        log = self.folder / f"{self.count}-{argv[1].replace('/', '_')}.log"
-        with log.open("w") as out:
-            process = subprocess.Popen(
-                self.command(*argv),
-                env=self.env,
-                stdin=subprocess.DEVNULL,
-                stdout=out,
-                stderr=subprocess.STDOUT,
-                start_new_session=True,
-            )
-            try:
-                yield log
-            finally:
-                stop(process)
-
-    def run(self, *argv: str) -> subprocess.CompletedProcess[str]:
-        return subprocess.run(
-            self.command(*argv),
-            env=self.env,
-            capture_output=True,
-            text=True,
-            timeout=60,
-            check=False,
-        )
+from tests.support.procs import wait_for
+from tests.support.tutorial_nodes import ROSCPP_LINE, ROSPY_LINE, Runs, lines
 
 
 @pytest.fixture
 def runs(master: str, tmp_path: Path) -> Runs:
     return Runs(master, tmp_path)
-
-
-def lines(log: Path) -> list[str]:
-    return log.read_text().splitlines()
 
 
 def test_rospy_talker_and_listener(runs: Runs) -> None:

@@ -10,7 +10,7 @@ from rosx.graph.options import GraphOptions, Mode, NameFilter
 from rosx.graph.state import BusLink, GraphState
 from rosx.graph.text import draw
 from rosx.graph.view import Edge, Kind, changes
-from tests.graph.states import PUBS, SUBS, lab1
+from tests.support.graph_states import PUBS, SUBS, lab1
 
 SHOW_ALL = GraphOptions(
     mode=Mode.ALL, hide_debug=False, hide_dead_sinks=False, hide_leaf_topics=False

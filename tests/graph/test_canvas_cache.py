@@ -7,7 +7,7 @@ from rosx.graph.builder import build
 from rosx.graph.canvas import Canvas
 from rosx.graph.options import GraphOptions, Mode
 from rosx.graph.text import draw
-from tests.graph.states import lab1
+from tests.support.graph_states import lab1
 
 
 def test_lines_join_into_junctions_and_text_wins() -> None:

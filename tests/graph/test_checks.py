@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from rosx.graph.checks import actual_edges, expected_edges, isolated_nodes, silent_nodes
 from rosx.graph.state import BusLink, GraphState
-from tests.graph.states import PUBS, SUBS, URIS, lab1
+from tests.support.graph_states import PUBS, SUBS, URIS, lab1
 
 
 def test_a_live_teleop_makes_the_edge_the_registrations_call_for() -> None:

@@ -16,7 +16,7 @@ from rosx.graph.describe import (
 )
 from rosx.master.client import MasterClient
 from rosx.master.server import MasterThread
-from tests.graph.states import lab1
+from tests.support.graph_states import lab1
 
 
 def test_summaries_of_lab1() -> None:

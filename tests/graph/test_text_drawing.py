@@ -7,7 +7,7 @@ from rosx.graph.options import GraphOptions, Mode
 from rosx.graph.state import GraphState
 from rosx.graph.text import Drawing, draw
 from rosx.graph.view import Edge
-from tests.graph.states import lab1
+from tests.support.graph_states import lab1
 
 #: A robot's arm and base in nested namespaces, a laser and two nodes at the root.
 PUBS = {

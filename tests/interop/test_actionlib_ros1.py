@@ -19,10 +19,10 @@ from typing import Any
 
 import pytest
 
-from tests.interop.ros1_procs import ROS1_PYTHON, ros_env
 from tests.support.cli import clean_environ
 from tests.support.procs import running, wait_for
 from tests.support.ros1 import needs_ros1, ros1_python_imports
+from tests.support.ros1_procs import ROS1_PYTHON, ros_env
 
 pytestmark = [
     needs_ros1,

@@ -18,7 +18,7 @@ from typing import Any
 import pytest
 
 from rosx.master.server import MasterThread
-from tests.interop.ros1_procs import ROS1_PYTHON, ros1_available, ros_env, rosmaster, run_tool, stop
+from tests.support.ros1_procs import ROS1_PYTHON, ros1_available, ros_env, rosmaster, run_tool, stop
 
 pytestmark = pytest.mark.skipif(not ros1_available(), reason="ROS 1 (roscore, rospy) is absent")
 

@@ -22,8 +22,8 @@ import pytest
 from rosx.master.server import MasterThread
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
-from tests.interop.ros1_procs import ROS1_PYTHON, ros1_available, ros_env, stop
 from tests.support.procs import wait_for
+from tests.support.ros1_procs import ROS1_PYTHON, ros1_available, ros_env, stop
 
 pytestmark = pytest.mark.skipif(not ros1_available(), reason="the ROS 1 reference is absent")
 

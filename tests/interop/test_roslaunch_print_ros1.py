@@ -63,7 +63,7 @@ def rosx(
 
         result = run("roslaunch", *args, environ=env)
         return result.status, result.out, result.err
-    from tests.launch.print_driver import main
+    from tests.support.launch_print import main
 
     return main(args, env)
 

@@ -7,28 +7,12 @@ from collections.abc import Iterator
 import pytest
 
 from tests.support.cli import Result, clean_environ, rosx
+from tests.support.graph_nodes import LISTENER, TALKER
 from tests.support.procs import running, wait_for
 from tests.support.ros1 import ROS1_PYTHON, ROSCORES, needs_ros1, ros1_environ, roscore
 
 pytestmark = needs_ros1
 
-TALKER = """
-import rospy
-from std_msgs.msg import String
-rospy.init_node('talker')
-p = rospy.Publisher('chatter', String, queue_size=10)
-r = rospy.Rate(10)
-while not rospy.is_shutdown():
-    p.publish(String('hello'))
-    r.sleep()
-"""
-LISTENER = """
-import rospy
-from std_msgs.msg import String
-rospy.init_node('listener')
-rospy.Subscriber('chatter', String, lambda m: None)
-rospy.spin()
-"""
 EDGES = ('"n_/talker" -> "t_/chatter";', '"t_/chatter" -> "n_/listener";')
 
 

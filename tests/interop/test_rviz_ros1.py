@@ -16,9 +16,9 @@ from rosx_commands.context import Environment
 from rosx_commands.rviz.config import parse_config
 from rosx_commands.rviz.run import live_app
 from tests.support.cli import clean_environ
+from tests.support.pilot import run
 from tests.support.procs import free_port, port_open, running, wait_for
 from tests.support.ros1 import needs_ros1, ros1_environ
-from tests.tui.conftest import run
 
 pytestmark = needs_ros1
 

@@ -8,11 +8,11 @@ from contextlib import ExitStack
 
 import pytest
 
-from tests.interop.test_rqt_graph_ros1 import LISTENER, TALKER
+from tests.support.graph_nodes import LISTENER, TALKER
+from tests.support.graph_pilot import talker_chatter_listener
+from tests.support.pilot import run
 from tests.support.procs import running, stop
 from tests.support.ros1 import ROS1_PYTHON, ROSCORES, needs_ros1, ros1_environ, roscore
-from tests.tui.conftest import run
-from tests.tui.graph_pilot import talker_chatter_listener
 
 pytestmark = needs_ros1
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -11,17 +10,7 @@ import pytest
 from rosx.launch import LaunchPlan, load_launch
 from rosx.launch.run.command import run_command
 from rosx.packages.index import PackageIndex
-
-PACKAGE_XML = """<?xml version="1.0"?>
-<package format="2"><name>{name}</name><version>0.0.1</version>
-<description>d</description><maintainer email="a@b.c">m</maintainer><license>BSD</license>
-</package>
-"""
-
-#: Writes a file below the test's folder and returns its path.
-Write = Callable[[str, str], Path]
-#: Reads launch text (written to ``main.launch``) into a plan.
-Load = Callable[..., LaunchPlan]
+from tests.support.launch_plan import PACKAGE_XML, Load, Write
 
 
 @pytest.fixture

@@ -21,8 +21,8 @@ from hypothesis import strategies as st
 
 from rosx.launch import LaunchError, load_launch, summary_text
 from rosx.packages.index import PackageIndex
-from tests.launch.conftest import PACKAGE_XML
 from tests.support.fuzz import MEMORY_BOUND, fuzz_settings, no_hang, peak_allocation
+from tests.support.launch_plan import PACKAGE_XML
 
 pytestmark = pytest.mark.fuzz
 

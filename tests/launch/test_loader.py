@@ -10,7 +10,7 @@ from rosx.launch import LaunchError, Node, load_launch, resolve_launch_arguments
 from rosx.launch import Test as LaunchTest
 from rosx.launch.model import RosparamCommand, Source
 from rosx.packages.index import PackageIndex, bundled_packages
-from tests.launch.conftest import PACKAGE_XML, Load, Write
+from tests.support.launch_plan import PACKAGE_XML, Load, Write
 
 
 def values(plan: object) -> dict[str, object]:

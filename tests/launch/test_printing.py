@@ -18,7 +18,7 @@ from rosx.launch import (
 )
 from rosx.launch.printing import summary_value
 from rosx.packages.index import PackageIndex
-from tests.launch.conftest import Load, Write
+from tests.support.launch_plan import Load, Write
 
 LAUNCH = """<launch>
   <arg name="robot" default="r2" doc="Which robot." />

@@ -18,7 +18,7 @@ from typing import Any
 
 import pytest
 
-from tests.interop.ros1_procs import (
+from tests.support.ros1_procs import (
     ROS1_PYTHON,
     ROSCORE,
     free_port,

@@ -25,8 +25,8 @@ from rosx.msg.codec.message import DeserializationError
 from rosx.msg.parser import InvalidMsgSpecError, parse_action, parse_msg, parse_srv
 from rosx.msg.spec import PRIMITIVE_TYPES
 from rosx.msg.store import TypeStore, UnknownTypeError
-from tests.msg.codec.msgpackages import make_package
 from tests.support.fuzz import MEMORY_BOUND, fuzz_settings, no_hang, peak_allocation
+from tests.support.msgpackages import make_package
 
 pytestmark = pytest.mark.fuzz
 

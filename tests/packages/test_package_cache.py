@@ -16,7 +16,7 @@ from rosx.packages.cache import cache_file, cached_packages
 from rosx.packages.crawl import find_packages
 from rosx.packages.index import PackageIndex
 from tests.support.cli import clean_environ, rosx
-from tests.workspace.packages import package
+from tests.support.packages import package
 
 
 @pytest.fixture

@@ -13,8 +13,8 @@ from textual.pilot import Pilot
 
 from rosx_commands.rviz.app import RvizApp
 from rosx_commands.rviz.config import load_config
-from tests.rviz.support import FakeSource, app_of, config, scan
-from tests.tui.conftest import run
+from tests.support.pilot import run
+from tests.support.rviz import FakeSource, app_of, config, scan
 
 SCAN_AND_TF = config(
     "{Class: rviz/Grid, Name: Grid}",

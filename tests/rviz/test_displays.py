@@ -3,16 +3,14 @@ in rviz's words (no terminal, no network)."""
 
 from __future__ import annotations
 
-import struct
-
 import numpy as np
 import pytest
 
-from rosx.msg.codec.classes import get_message_class
 from rosx_commands.rviz.displays.map import PALETTES
 from rosx_commands.rviz.manager import Manager
 from rosx_commands.rviz.primitives import Layer
-from tests.rviz.support import NOW, config, message, occupancy, robot_tf, scan
+from tests.support.rviz import NOW, config, occupancy, robot_tf, scan
+from tests.support.rviz_messages import cloud
 
 
 def drawn(manager: Manager, index: int = 0, metres_per_pixel: float = 0.05) -> Layer:
@@ -128,29 +126,6 @@ def test_tf_warns_about_frames_it_cannot_place() -> None:
     manager = Manager(config("{Class: rviz/TF, Name: TF}"), core)
     drawn(manager)
     assert manager.displays[0].summary == "No transform from [elsewhere] to frame [map]"
-
-
-def cloud(points: list[tuple[float, float, float, int]], frame: str = "base_link") -> object:
-    fields = []
-    field_class = get_message_class("sensor_msgs/PointField")
-    for offset, name in enumerate(("x", "y", "z")):
-        fields.append(field_class(name=name, offset=4 * offset, datatype=7, count=1))
-    fields.append(field_class(name="rgb", offset=16, datatype=7, count=1))
-    data = b"".join(
-        struct.pack("<fffxxxxI", x, y, z, rgb) for x, y, z, rgb in points
-    )  # padded to 20 bytes a point
-    return message(
-        "sensor_msgs/PointCloud2",
-        frame,
-        height=1,
-        width=len(points),
-        fields=fields,
-        is_bigendian=False,
-        point_step=20,
-        row_step=20 * len(points),
-        data=data,
-        is_dense=False,
-    )
 
 
 def test_point_cloud2_projects_and_colours_its_points() -> None:

@@ -16,9 +16,9 @@ from rosx.tf.broadcaster import StaticTransformBroadcaster
 from rosx_commands.context import Environment
 from rosx_commands.rviz.app import RvizApp
 from rosx_commands.rviz.run import live_app
-from tests.rviz.support import config, message, scan
 from tests.support.cli import Result, clean_environ, rosx
-from tests.tui.conftest import run
+from tests.support.pilot import run
+from tests.support.rviz import config, message, scan
 
 DEADLINE = 30.0
 

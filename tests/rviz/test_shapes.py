@@ -4,17 +4,17 @@ draws in the fixed frame and its status, from messages and tf set by hand."""
 from __future__ import annotations
 
 import math
-from typing import Any
 
 import numpy as np
 import pytest
 
 from rosx.msg.codec.classes import get_message_class
 from rosx_commands.rviz.displays.image import to_rgb
-from rosx_commands.rviz.displays.markers import ADD, CUBE, DELETE, DELETEALL, LINE_STRIP
+from rosx_commands.rviz.displays.markers import CUBE, DELETE, DELETEALL, LINE_STRIP
 from rosx_commands.rviz.manager import Manager
 from rosx_commands.rviz.primitives import Layer
-from tests.rviz.support import NOW, config, message, robot_tf
+from tests.support.rviz import NOW, config, message, robot_tf
+from tests.support.rviz_messages import URDF, image, marker, pose_msg
 
 
 def drawn(manager: Manager, index: int = 0, metres_per_pixel: float = 0.01) -> Layer:
@@ -23,13 +23,6 @@ def drawn(manager: Manager, index: int = 0, metres_per_pixel: float = 0.01) -> L
 
 def one(display: str) -> Manager:
     return Manager(config(display), robot_tf())
-
-
-def pose_msg(x: float, y: float, yaw: float, frame: str = "odom") -> Any:
-    msg = message("geometry_msgs/PoseStamped", frame)
-    msg.pose.position.x, msg.pose.position.y = x, y
-    msg.pose.orientation.z, msg.pose.orientation.w = math.sin(yaw / 2), math.cos(yaw / 2)
-    return msg
 
 
 @pytest.mark.parametrize("name", ["rviz/Pose", "rviz/PoseStamped"])
@@ -95,17 +88,6 @@ def test_polygon_is_closed() -> None:
     assert outline.ends[2, 1] == pytest.approx(outline.ends[0, 0])  # back to the start
 
 
-def marker(kind: int, marker_id: int = 0, action: int = ADD, **fields: Any) -> Any:
-    msg = message("visualization_msgs/Marker", "map", ns="shapes", id=marker_id, type=kind)
-    msg.action = action
-    msg.pose.orientation.w = 1.0
-    msg.scale.x = msg.scale.y = msg.scale.z = 1.0
-    msg.color.r, msg.color.a = 1.0, 1.0
-    for name, value in fields.items():
-        setattr(msg, name, value)
-    return msg
-
-
 def test_marker_shapes_from_above() -> None:
     manager = one("{Class: rviz/Marker, Name: Markers, Marker Topic: /visualization_marker}")
     display = manager.displays[0]
@@ -151,18 +133,6 @@ def test_marker_lifetimes_delete_and_deleteall() -> None:
     assert drawn(manager) == Layer()
 
 
-URDF = """<robot name="burger">
-  <material name="dark"><color rgba="0.2 0.2 0.2 1"/></material>
-  <link name="base_footprint"/>
-  <link name="base_link">
-    <visual><origin xyz="-0.032 0 0.07"/><geometry><box size="0.14 0.14 0.14"/></geometry>
-      <material name="dark"/></visual>
-  </link>
-  <link name="wheel"><visual><geometry><cylinder radius="0.033" length="0.018"/></geometry></visual></link>
-  <link name="mesh"><visual><geometry><mesh filename="package://x/y.stl"/></geometry></visual></link>
-</robot>"""
-
-
 def test_robot_model_outlines_links_at_their_frames() -> None:
     manager = one("{Class: rviz/RobotModel, Name: Robot}")
     display = manager.displays[0]
@@ -181,15 +151,6 @@ def test_robot_model_without_a_description_says_rvizs_words() -> None:
     )
     manager.receive(manager.displays[0], "<robot", NOW)
     assert manager.displays[0].summary == "Failed to parse URDF model"
-
-
-def image(encoding: str, pixels: np.ndarray[Any, Any]) -> Any:
-    height, width = pixels.shape[:2]
-    data = pixels.tobytes()
-    return message(
-        "sensor_msgs/Image", "camera", height=height, width=width, encoding=encoding,
-        is_bigendian=0, step=len(data) // height, data=data,
-    )  # fmt: skip
 
 
 def test_images_become_rgb() -> None:

@@ -25,9 +25,8 @@ from rosx_commands.rviz.displays.markers import (
     TEXT_VIEW_FACING,
 )
 from rosx_commands.rviz.manager import Manager
-from tests.rviz.support import app_of, config, message, occupancy, scan
-from tests.rviz.test_displays import cloud
-from tests.rviz.test_shapes import URDF, image, marker, pose_msg
+from tests.support.rviz import app_of, config, message, occupancy, scan
+from tests.support.rviz_messages import URDF, cloud, image, marker, pose_msg
 
 SnapCompare = Callable[..., bool]
 SIZE = (72, 22)

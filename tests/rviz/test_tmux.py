@@ -15,7 +15,7 @@ from rosx.master.client import MasterClient
 from rosx.packages.crawl import PREFIX
 from tests.support.cli import clean_environ
 from tests.support.procs import free_port, running, wait_for
-from tests.tui.tmux import Tmux, needs_tmux
+from tests.support.tmux import Tmux, needs_tmux
 
 SIZES = [(80, 24), (120, 40)]
 STARTUP = 60.0

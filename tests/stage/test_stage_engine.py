@@ -11,7 +11,7 @@ from rosx_turtle.stage.engine.grid import distance_lower_bound, rasterise
 from rosx_turtle.stage.engine.simulation import StageSim
 from rosx_turtle.stage.world.model import build
 from rosx_turtle.stage.world.worldfile import parse
-from tests.stage.worlds import room
+from tests.support.stage_worlds import room
 
 
 def sim_of(text: str, watchdog: float = 0.2) -> StageSim:

@@ -12,8 +12,8 @@ import pytest
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node
 from rosx_turtle.stage.node.stageros import StageNode
-from tests.stage.worlds import room
 from tests.support.procs import wait_for
+from tests.support.stage_worlds import room
 
 Odometry = get_message_class("nav_msgs/Odometry")
 LaserScan = get_message_class("sensor_msgs/LaserScan")

@@ -14,7 +14,7 @@ from rosx_turtle.stage.view.widget import WorldView
 from rosx_turtle.stage.world.model import build
 from rosx_turtle.stage.world.worldfile import parse
 from rosx_turtle.tui.feed import Feed
-from tests.stage.worlds import room
+from tests.support.stage_worlds import room
 
 
 def test_the_picture_shows_walls_floor_the_robot_its_nose_and_the_hits() -> None:

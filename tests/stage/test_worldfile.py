@@ -10,7 +10,7 @@ import pytest
 from rosx_turtle.stage.world.load import read_world
 from rosx_turtle.stage.world.model import build
 from rosx_turtle.stage.world.worldfile import WorldFileError, parse
-from tests.stage.worlds import export_stage_ros_worlds, room
+from tests.support.stage_worlds import export_stage_ros_worlds, room
 
 
 def world_of(text: str, name: str = "t.world"):  # type: ignore[no-untyped-def]

@@ -12,7 +12,7 @@ from rosx_turtle.env import ProcessEnv
 from rosx_turtle.sim.host import SimHost
 from rosx_turtle.sim.run import _parse
 from tests.support.procs import free_port, wait_for
-from tests.tf.test_turtle_demo import Poses
+from tests.support.turtle_poses import Poses
 
 
 def test_the_option_is_parsed() -> None:

@@ -8,10 +8,8 @@ stops it, and waits until turtle2 has caught up: within 0.5 m. The same for tf's
 
 from __future__ import annotations
 
-import functools
 import math
 import sys
-import threading
 import time
 from collections.abc import Iterator
 from pathlib import Path
@@ -22,35 +20,9 @@ from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from tests.support.cli import clean_environ
 from tests.support.procs import free_port, port_open, running, wait_for
+from tests.support.turtle_poses import Poses
 
 Twist = get_message_class("geometry_msgs/Twist")
-Pose = get_message_class("turtlesim/Pose")
-
-
-class Poses:
-    """The latest pose of each turtle, from its ``pose`` topic."""
-
-    def __init__(self, node: Node, turtles: tuple[str, ...]) -> None:
-        self.latest: dict[str, tuple[float, float]] = {}
-        self.lock = threading.Lock()
-        for turtle in turtles:
-            node.subscribe(f"/{turtle}/pose", Pose, functools.partial(self._put, turtle))
-
-    def _put(self, turtle: str, pose: object) -> None:
-        with self.lock:
-            self.latest[turtle] = (pose.x, pose.y)  # type: ignore[attr-defined]
-
-    def distance(self) -> float:
-        with self.lock:
-            if len(self.latest) < 2:
-                return math.inf
-            (x1, y1), (x2, y2) = self.latest["turtle1"], self.latest["turtle2"]
-        return math.hypot(x1 - x2, y1 - y2)
-
-    def moved(self, start: tuple[float, float]) -> float:
-        with self.lock:
-            x, y = self.latest.get("turtle1", start)
-        return math.hypot(x - start[0], y - start[1])
 
 
 @pytest.fixture

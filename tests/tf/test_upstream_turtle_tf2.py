@@ -18,7 +18,7 @@ from rosx.node import Node
 from tests.support.cli import clean_environ
 from tests.support.fetched import fetched_tree
 from tests.support.procs import free_port, port_open, running, wait_for
-from tests.tf.test_turtle_demo import Poses
+from tests.support.turtle_poses import Poses
 
 Twist = get_message_class("geometry_msgs/Twist")
 Vector3 = get_message_class("geometry_msgs/Vector3")

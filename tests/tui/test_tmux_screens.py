@@ -11,7 +11,7 @@ import pytest
 from rosx_turtle.engine.constants import DEFAULT_BACKGROUND
 from rosx_turtle.sim.host import SimHost
 from tests.support.procs import free_port
-from tests.tui.tmux import Cell, Tmux, needs_tmux
+from tests.support.tmux import Cell, Tmux, needs_tmux
 
 SIZES = [(80, 24), (120, 40)]
 #: How a program's first screen may take to come on a loaded machine (seconds).

@@ -19,7 +19,7 @@ from rosx_commands.actionlib_tools.forms import action_types
 from rosx_commands.actionlib_tools.server_app import ServerApp, ServerPane, make_server_app
 from rosx_commands.actionlib_tools.standin import Standin
 from tests.support.client import fresh_rospy
-from tests.tui.conftest import run
+from tests.support.pilot import run
 
 TYPES = action_types("actionlib/TestAction")
 

@@ -10,8 +10,8 @@ import sys
 from rosx_turtle.sim.host import SimHost
 from tests.support.cli import clean_environ, rosx
 from tests.support.procs import free_port, port_open, stop, wait_for
+from tests.support.pty_terminal import BLUE_BACKGROUND, on_a_terminal
 from tests.support.ros1 import needs_ros1, ros1_python, run_ros1
-from tests.tui.terminal import BLUE_BACKGROUND, on_a_terminal
 
 POSE_AT_START = [
     "x: 5.544444561004639",

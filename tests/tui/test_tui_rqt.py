@@ -17,11 +17,12 @@ from rosx_commands.rqt.tabs import TABS, Tab
 from rosx_commands.rqt_graph.app import GraphPane
 from rosx_commands.rqt_plot.app import PlotPane
 from rosx_commands.rqt_topic.app import TopicPane
-from tests.graph.states import lab1
-from tests.tui.conftest import SNAPSHOT_SIZE, run
-from tests.tui.plot_support import StaticFeed, fill
-from tests.tui.test_tui_rqt_graph import StaticSource
-from tests.tui.test_tui_rqt_topic import StaticSource as StaticTopics
+from tests.support.graph_states import lab1
+from tests.support.pilot import run
+from tests.support.plot import StaticFeed, fill
+from tests.support.rqt_sources import StaticSource
+from tests.support.rqt_topics import StaticSource as StaticTopics
+from tests.support.tui import SNAPSHOT_SIZE
 
 SnapCompare = Callable[..., bool]
 ENV = Environment(environ={"ROS_MASTER_URI": "http://127.0.0.1:9/"})

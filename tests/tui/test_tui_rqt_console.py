@@ -13,7 +13,8 @@ from rosx.master.client import MasterUnreachable
 from rosx_commands.rqt_console.app import ConsoleApp, make_console_app
 from rosx_commands.rqt_console.model import Entry, Kind, Rule, Rules
 from rosx_commands.rqt_console.source import Inbox
-from tests.tui.conftest import run, running_after_key
+from tests.support.pilot import run
+from tests.support.tui import running_after_key
 
 SnapCompare = Callable[..., bool]
 NARROW = (80, 24)

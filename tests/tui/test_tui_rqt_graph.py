@@ -14,34 +14,16 @@ from textual.widgets import Input
 
 from rosx.graph.options import GraphOptions, Mode
 from rosx.graph.state import GraphState
-from rosx.graph.view import Vertex, ViewGraph
+from rosx.graph.view import ViewGraph
 from rosx_commands.rqt_graph.app import GHOST_SECONDS, History, make_graph_app
 from rosx_commands.rqt_graph.view import GraphView
-from tests.graph.states import lab1
-from tests.tui.conftest import SNAPSHOT_SIZE, run, running_after_key
-from tests.tui.graph_pilot import WIDE, info, mark_at, settle, status
+from tests.support.graph_pilot import WIDE, info, mark_at, settle, status
+from tests.support.graph_states import lab1
+from tests.support.pilot import run
+from tests.support.rqt_sources import StaticSource
+from tests.support.tui import SNAPSHOT_SIZE, running_after_key
 
 SnapCompare = Callable[..., bool]
-
-
-class StaticSource:
-    """A graph that changes only when a test says so."""
-
-    def __init__(self, state: GraphState) -> None:
-        self.state = state
-        self.closed = False
-
-    def snapshot(self) -> GraphState:
-        return self.state
-
-    def describe(self, vertex: Vertex) -> str:
-        return f"Node [{vertex.label}]" if vertex.kind == "node" else f"Type: x ({vertex.label})"
-
-    def rate(self, topic: str) -> str:
-        return "average rate: 10.000 Hz"
-
-    def close(self) -> None:
-        self.closed = True
 
 
 def test_refresh_marks_what_vanished_and_selection_shows_details() -> None:

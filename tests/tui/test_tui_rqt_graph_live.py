@@ -7,8 +7,8 @@ import threading
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
-from tests.tui.conftest import run
-from tests.tui.graph_pilot import talker_chatter_listener
+from tests.support.graph_pilot import talker_chatter_listener
+from tests.support.pilot import run
 
 
 def test_talker_chatter_listener_of_rosx_nodes(master: str) -> None:

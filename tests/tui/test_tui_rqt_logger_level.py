@@ -12,7 +12,8 @@ from textual.widgets import OptionList, Static
 from rosx.node.errors import ServiceError
 from rosx_commands.rqt_logger_level.app import LevelApp, make_level_app
 from rosx_commands.rqt_logger_level.source import level_nodes
-from tests.tui.conftest import run, running_after_key
+from tests.support.pilot import run
+from tests.support.tui import running_after_key
 
 SnapCompare = Callable[..., bool]
 NARROW = (80, 24)

@@ -10,8 +10,9 @@ from textual.pilot import Pilot
 from textual.widgets import OptionList, Static
 
 from rosx_commands.rqt_plot.app import PlotApp, PlotSettings, make_plot_app
-from tests.tui.conftest import SNAPSHOT_SIZE, run
-from tests.tui.plot_support import StaticFeed, fill
+from tests.support.pilot import run
+from tests.support.plot import StaticFeed, fill
+from tests.support.tui import SNAPSHOT_SIZE
 
 SnapCompare = Callable[..., bool]
 

@@ -19,7 +19,7 @@ from rosx_commands.rqt_plot.app import PlotSettings, make_plot_app
 from rosx_commands.rqt_plot.feed import LiveFeed
 from rosx_turtle.sim.host import SimHost
 from tests.support.cli import clean_environ
-from tests.tui.conftest import run
+from tests.support.pilot import run
 
 #: Seconds each step may take (generous: a loaded machine starts, connects and ticks slowly).
 WAIT = 60.0

@@ -13,7 +13,8 @@ from rosx_commands.main import run_tool
 from rosx_commands.rqt_tf_tree.app import TfTreeApp, TfTreePane
 from rosx_commands.rqt_tf_tree.source import Row, tree_rows
 from tests.support.cli import clean_environ
-from tests.tui.conftest import SNAPSHOT_SIZE, run
+from tests.support.pilot import run
+from tests.support.tui import SNAPSHOT_SIZE
 
 SECOND = 1_000_000_000
 

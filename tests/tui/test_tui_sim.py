@@ -32,8 +32,9 @@ from rosx_turtle.tui.teleop import TeleopPad
 from rosx_turtle.tui.topics import TopicsPanel
 from rosx_turtle.view.scene import TurtlePose
 from tests.support.cli import clean_environ, rosx
+from tests.support.pilot import run
 from tests.support.procs import wait_for
-from tests.tui.conftest import Pond, StaticLink, run, scripted_pond
+from tests.support.tui import Pond, StaticLink, scripted_pond
 
 Twist = get_message_class("geometry_msgs/Twist")
 SIZE = (120, 36)

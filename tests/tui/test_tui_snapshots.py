@@ -17,7 +17,8 @@ from rosx_turtle.tui.factory import make_pond_app, make_sim_app
 from rosx_turtle.tui.feed import Feed
 from rosx_turtle.tui.pond import PondView
 from rosx_turtle.view.scene import Scene
-from tests.tui.conftest import SNAPSHOT_SIZE, Pond, StaticLink, run, scripted_pond
+from tests.support.pilot import run
+from tests.support.tui import SNAPSHOT_SIZE, Pond, StaticLink, scripted_pond
 
 SnapCompare = Callable[..., bool]
 

@@ -29,7 +29,7 @@ from rosx_turtle.view.scene import Scene
 from rosx_turtle.view.status import status_text
 from tests.support.pilot import run, until
 from tests.support.procs import wait_for
-from tests.tui.terminal import BLUE_BACKGROUND, Terminal, on_a_terminal
+from tests.support.pty_terminal import BLUE_BACKGROUND, Terminal, on_a_terminal
 
 Twist = get_message_class("geometry_msgs/Twist")
 #: The pose line once a turtle at the centre went 2 m/s for turtlesim's 1 s command timeout.

@@ -19,7 +19,7 @@ from rosx_turtle.view.scene import Scene, TurtlePose
 from tests.support.cli import clean_environ
 from tests.support.pilot import run, until
 from tests.support.procs import free_port, port_open, running, wait_for
-from tests.tui.terminal import BLUE_BACKGROUND, on_a_terminal
+from tests.support.pty_terminal import BLUE_BACKGROUND, on_a_terminal
 
 MULTISIM = Path(__file__).resolve().parents[2] / "turtle" / "rosx_turtle" / "launch"
 

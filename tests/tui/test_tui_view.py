@@ -16,7 +16,7 @@ from rosx_turtle.view.renderer import PondRenderer
 from rosx_turtle.view.scene import Scene, TurtlePose
 from rosx_turtle.view.sprite import DIRECTIONS, direction_of, sprite_offsets
 from rosx_turtle.view.status import arrow, pose_echo, status_text
-from tests.tui.conftest import Pond
+from tests.support.tui import Pond
 
 BLUE = DEFAULT_BACKGROUND
 

@@ -11,7 +11,7 @@ import pytest
 from rosx_turtle.console import Console
 from rosx_turtle.node import TurtlesimNode
 from rosx_turtle.roscpp import NodeArgs
-from tests.turtle.simulators import Sim
+from tests.support.simulators import Sim
 
 
 @pytest.fixture

@@ -17,7 +17,7 @@ from rosx.node import Node, ServiceError
 from rosx_turtle.engine import CENTRE
 from rosx_turtle.node import run_turtlesim
 from tests.support.procs import wait_for
-from tests.turtle.simulators import Sim
+from tests.support.simulators import Sim
 
 Pose = get_message_class("turtlesim/Pose")
 Color = get_message_class("turtlesim/Color")

@@ -17,7 +17,7 @@ from rosx_turtle.roscpp import NodeArgs
 from rosx_turtle.tutorials.draw_square import DrawSquare, SquareDriver
 from rosx_turtle.tutorials.mimic import start_mimic
 from tests.support.procs import wait_for
-from tests.turtle.simulators import Sim
+from tests.support.simulators import Sim
 
 Twist = get_message_class("geometry_msgs/Twist")
 

@@ -7,7 +7,7 @@ import pytest
 from rosx.wire.errors import ProtocolError
 from rosx.wire.framing import FrameReader
 from rosx.wire.header import Refused, decode_header, encode_header
-from tests.wire.wirefeed import CHUNKINGS, pieces
+from tests.support.wirefeed import CHUNKINGS, pieces
 
 # Built by hand from ROS/Connection Header: uint32 LE total length, then per field a uint32 LE
 # length and "name=value".

@@ -6,7 +6,7 @@ import pytest
 
 from rosx.wire.errors import OversizedError, ProtocolError
 from rosx.wire.framing import FrameReader, frame, length_prefix
-from tests.wire.wirefeed import CHUNKINGS, pieces
+from tests.support.wirefeed import CHUNKINGS, pieces
 
 PAYLOADS = [b"", b"a", b"\x00" * 48, bytes(range(256)) * 4]
 STREAM = b"".join(frame(p) for p in PAYLOADS)

@@ -22,7 +22,7 @@ from rosx.wire.rosrpc import (
     parse_rosrpc_uri,
     server_header,
 )
-from tests.wire.wirefeed import CHUNKINGS, pieces
+from tests.support.wirefeed import CHUNKINGS, pieces
 
 ADD_MD5 = "6a2e34150c00229791cc89ff309fff21"
 ADD = ServiceInfo(

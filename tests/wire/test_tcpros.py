@@ -17,7 +17,7 @@ from rosx.wire.tcpros import (
     publisher_header,
     subscriber_header,
 )
-from tests.wire.wirefeed import CHUNKINGS, pieces
+from tests.support.wirefeed import CHUNKINGS, pieces
 
 STRING_MD5 = "992ce8a1687cec8c8bd883ec73ca41d1"
 CHATTER = Publication("/chatter", "std_msgs/String", STRING_MD5, "string data\n", latching=True)

@@ -20,7 +20,7 @@ from rosx.wire.xmlrpc_http import (
     build_response,
     parse_http_uri,
 )
-from tests.wire.wirefeed import CHUNKINGS, pieces
+from tests.support.wirefeed import CHUNKINGS, pieces
 
 BODY = b"<methodCall><methodName>getPid</methodName></methodCall>"
 

@@ -16,7 +16,7 @@ import pytest
 from rosx.packages.crawl import PREFIX, bundled_packages
 from rosx.packages.manifest import check_manifest, read_manifest
 from tests.support.cli import clean_environ, rosx
-from tests.workspace.test_rosrun_rospack import TUTORIAL_DEPENDS
+from tests.support.workspace_text import TUTORIAL_DEPENDS
 
 SHARE = PREFIX / "share"
 DEBIAN_ROSPACK = shutil.which("rospack", path="/usr/bin")

@@ -11,7 +11,7 @@ import pytest
 
 from rosx.workspace.environment import SHARE
 from tests.support.cli import Result, clean_environ, rosx
-from tests.workspace.packages import MANIFEST, package
+from tests.support.packages import MANIFEST, package
 
 
 def catkin_make(where: Path, monkeypatch: pytest.MonkeyPatch, *argv: str) -> Result:

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from tests.support.cli import Result, clean_environ, rosx
-from tests.workspace.packages import package
+from tests.support.packages import package
 
 CMAKELISTS = """\
 cmake_minimum_required(VERSION 3.0.2)

@@ -12,7 +12,7 @@ import pytest
 
 from rosx.workspace.environment import ROS_ETC_DIR, ROS_ROOT, SHARE
 from tests.support.cli import clean_environ, rosx
-from tests.workspace.packages import package
+from tests.support.packages import package
 
 ROSX = f"{sys.executable} -m rosx_commands"
 

@@ -31,8 +31,8 @@ from rosx.workspace.programs import (
 from rosx_commands.context import Environment
 from rosx_commands.rosrun import Launch, plan
 from tests.support.cli import clean_environ, rosx
-from tests.workspace.packages import package
-from tests.workspace.test_rosrun_rospack import TerminalText
+from tests.support.packages import package
+from tests.support.workspace_text import TerminalText
 
 LIB = crawl.PREFIX / "lib"
 

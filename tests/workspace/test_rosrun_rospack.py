@@ -17,7 +17,8 @@ from rosx.client.script import SHIM_DIR
 from rosx_commands.context import Environment
 from rosx_commands.rosrun import Launch, plan
 from tests.support.cli import clean_environ, rosx
-from tests.workspace.packages import package
+from tests.support.packages import package
+from tests.support.workspace_text import TUTORIAL_DEPENDS, TerminalText
 
 
 @pytest.fixture
@@ -32,15 +33,6 @@ def workspace(tmp_path: Path) -> Path:
     (lab2 / "scripts" / "notes.py").write_text("print('not executable')\n")
     package(src, "user", "lab2")
     return src
-
-
-#: ``rospack depends beginner_tutorials`` in ROS/Tutorials/CreatingPackage (Noetic).
-TUTORIAL_DEPENDS = [
-    "cpp_common", "rostime", "roscpp_traits", "roscpp_serialization", "catkin", "genmsg", "genpy",
-    "message_runtime", "gencpp", "geneus", "gennodejs", "genlisp", "message_generation",
-    "rosbuild", "rosconsole", "std_msgs", "rosgraph_msgs", "xmlrpcpp", "roscpp", "rosgraph",
-    "ros_environment", "rospack", "roslib", "rospy",
-]  # fmt: skip
 
 
 def env_of(src: Path) -> dict[str, str]:
@@ -196,13 +188,6 @@ def test_shell_init_defines_the_ros_commands(workspace: Path, shell: str, tmp_pa
 def test_shell_init_refuses_unknown_shells() -> None:
     result = rosx("shell-init", "fish")
     assert result.status == 2 and "unknown shell 'fish'" in result.err
-
-
-class TerminalText(io.StringIO):
-    """A stream that says it is a terminal."""
-
-    def isatty(self) -> bool:
-        return True
 
 
 def test_rosrun_turtlesim_node_typo_suggests_turtlesim_node_on_a_terminal() -> None:

@@ -23,7 +23,7 @@ from rosx.msg.codec.message import DeserializationError, Message, SerializationE
 from rosx.msg.codec.rostime import Duration, Time
 from rosx.msg.codec.wiretypes import INTEGER_RANGES
 from rosx.msg.store import TypeStore, default_store
-from tests.msg.codec.msgpackages import EVERY_KIND, make_package
+from tests.support.msgpackages import EVERY_KIND, make_package
 
 ROS1_PYTHON = Path("/usr/bin/python3")
 

@@ -22,7 +22,7 @@ from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.msg.codec.message import Message, ServiceDefinition
 from rosx.msg.codec.rostime import Duration, Time
 from rosx.msg.store import TypeStore, UnknownTypeError
-from tests.msg.codec.msgpackages import EVERY_KIND, make_package
+from tests.support.msgpackages import EVERY_KIND, make_package
 
 ROOT = Path(__file__).resolve().parents[3]
 
