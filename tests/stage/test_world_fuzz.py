@@ -22,8 +22,8 @@ from hypothesis import strategies as st
 from rosx_turtle.stage.engine.simulation import StageSim
 from rosx_turtle.stage.world.load import load_world
 from rosx_turtle.stage.world.worldfile import WorldFileError
-from tests.stage.worlds import ROOM, room
 from tests.support.fuzz import fuzz_settings, no_hang, peak_allocation
+from tests.support.stage_worlds import ROOM, room
 
 pytestmark = pytest.mark.fuzz
 

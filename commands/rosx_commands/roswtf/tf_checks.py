@@ -127,9 +127,9 @@ def check_tf(
     findings."""
     if "/tf" not in published:
         return
-    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415
-    from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415
-    from rosx.node import Node  # noqa: PLC0415
+    from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
+    from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415 - name rules load only when used
+    from rosx.node import Node  # noqa: PLC0415 - the node runtime loads with the first node
 
     say("running tf checks, this will take a second...")
     heard: Heard = []
