@@ -30,7 +30,7 @@ from rosx.workspace.programs import (
 )
 from rosx_commands.context import Environment
 from rosx_commands.rosrun import Launch, plan
-from tests.support.cli import clean_environ, rosx
+from tests.support.cli import clean_environ, rosx, rosx_process
 from tests.support.packages import package
 from tests.support.workspace_text import TerminalText
 
@@ -265,3 +265,12 @@ def test_roslaunch_of_what_rosx_lacks_says_so_after_ros1s_error() -> None:
     )
     plain = rosx("roslaunch", "turtlebot3_gazebo", "turtlebot3_world.launch")
     assert (plain.status, len(plain.err.splitlines())) == (1, 1)
+
+
+def test_rosx_help_lists_the_packages_that_come_with_rosx() -> None:
+    shown = " ".join(rosx_process("--help", COLUMNS="100").out.split())
+    listed = ", ".join(provided_packages())
+    assert (
+        f"ROS packages that come with rosx (rospack, roscd, rosrun and roslaunch find them): {listed}."
+        in shown
+    )
