@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 import time
 from collections.abc import Callable, Iterator
+from pathlib import Path
 
 import pytest
 
@@ -20,6 +21,19 @@ from rosx.node import Node
 def pytest_configure(config: pytest.Config) -> None:
     for name in [n for n in os.environ if n.startswith("ROS_")]:
         del os.environ[name]
+
+
+#: The kind of test each folder holds (pyproject.toml registers the markers); any other
+#: folder holds a layer's own tests.
+KINDS = {"wire": "wire", "cli": "cli", "tui": "tui", "rqt": "tui", "interop": "interop", "e2e": "e2e"}
+TESTS = Path(__file__).resolve().parent
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    for item in items:
+        parts = item.path.relative_to(TESTS).parts
+        kind = "tree" if len(parts) == 1 else KINDS.get(parts[0], "unit")
+        item.add_marker(kind)
 
 
 @pytest.fixture(scope="module")
