@@ -25,7 +25,14 @@ def pytest_configure(config: pytest.Config) -> None:
 
 #: The kind of test each folder holds (pyproject.toml registers the markers); any other
 #: folder holds a layer's own tests.
-KINDS = {"wire": "wire", "cli": "cli", "tui": "tui", "rqt": "tui", "interop": "interop", "e2e": "e2e"}
+KINDS = {
+    "wire": "wire",
+    "cli": "cli",
+    "tui": "tui",
+    "rqt": "tui",
+    "interop": "interop",
+    "e2e": "e2e",
+}
 TESTS = Path(__file__).resolve().parent
 
 
