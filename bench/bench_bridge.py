@@ -19,7 +19,9 @@ publisher (a rosx node in a process of its own) feeds both, and the same WebSock
   time of one call.
 
 and the ratios rosx / rosbridge_suite, medians of ``--rounds`` rounds in which the two bridges
-take turns. rosbridge_suite's source is a directory holding its
+take turns (each round the other first, each case once both are idle). Each bridge has topics
+of its own, so that a subscription one of them keeps for a while cannot slow
+down the publisher feeding the other. rosbridge_suite's source is a directory holding its
 ``ros1`` branch, prepared as bench/README.md says (``--rosbridge-suite DIR``, else
 ``$ROSBRIDGE_SUITE``); without it, its side is skipped with one line. Run:
 ``python bench/bench_bridge.py [--seconds S] [--rounds N] [--only CASE] [--rosbridge-suite DIR]``.
@@ -240,8 +242,8 @@ async def _read(ws: Any, until: float, on_message: Callable[[Any], None]) -> Non
 
 def case_twist(bridge: Bridge, seconds: float) -> float:
     async def run() -> float:
-        ws = await _subscribe(bridge.url, "/bench_twist", "geometry_msgs/Twist")
-        proc = publisher(bridge.master, "twist", "/bench_twist", seconds + 1.0)
+        ws = await _subscribe(bridge.url, f"/bench_{bridge.name}_twist", "geometry_msgs/Twist")
+        proc = publisher(bridge.master, "twist", f"/bench_{bridge.name}_twist", seconds + 1.0)
         await _start(proc)
         count = [0]
         await _read(ws, time.monotonic() + 0.5, lambda m: None)  # warm-up
@@ -257,8 +259,8 @@ def case_twist(bridge: Bridge, seconds: float) -> float:
 
 def case_latency(bridge: Bridge, seconds: float) -> tuple[float, float]:
     async def run() -> tuple[float, float]:
-        ws = await _subscribe(bridge.url, "/bench_latency", "geometry_msgs/Twist")
-        proc = publisher(bridge.master, "latency", "/bench_latency", seconds + 0.5)
+        ws = await _subscribe(bridge.url, f"/bench_{bridge.name}_latency", "geometry_msgs/Twist")
+        proc = publisher(bridge.master, "latency", f"/bench_{bridge.name}_latency", seconds + 0.5)
         await _start(proc)
         await _read(ws, time.monotonic() + 0.5, lambda m: None)
         lags: list[float] = []
@@ -277,8 +279,10 @@ def case_latency(bridge: Bridge, seconds: float) -> tuple[float, float]:
 
 def case_image(bridge: Bridge, seconds: float) -> float:
     async def run() -> float:
-        ws = await _subscribe(bridge.url, "/bench_image", "sensor_msgs/Image", "cbor-raw")
-        proc = publisher(bridge.master, "image", "/bench_image", seconds + 1.0)
+        ws = await _subscribe(
+            bridge.url, f"/bench_{bridge.name}_image", "sensor_msgs/Image", "cbor-raw"
+        )
+        proc = publisher(bridge.master, "image", f"/bench_{bridge.name}_image", seconds + 1.0)
         await _start(proc)
         await _read(ws, time.monotonic() + 0.5, lambda m: None)
         size = [0]
@@ -295,9 +299,10 @@ def case_image(bridge: Bridge, seconds: float) -> float:
 def case_clients(bridge: Bridge, seconds: float) -> tuple[float, float]:
     async def run() -> tuple[float, float]:
         clients = [
-            await _subscribe(bridge.url, "/bench_fan", "geometry_msgs/Twist") for _ in range(100)
+            await _subscribe(bridge.url, f"/bench_{bridge.name}_fan", "geometry_msgs/Twist")
+            for _ in range(100)
         ]
-        proc = publisher(bridge.master, "clients", "/bench_fan", seconds)
+        proc = publisher(bridge.master, "clients", f"/bench_{bridge.name}_fan", seconds)
         await _start(proc)
         counts = [0] * len(clients)
         until = time.monotonic() + seconds + 2.0
@@ -390,6 +395,29 @@ def measure_once(bridge: Bridge, case: str, seconds: float) -> Any:
     return value
 
 
+def _cpu_seconds(pids: list[int]) -> float:
+    total = 0
+    for pid in pids:
+        with contextlib.suppress(OSError, IndexError, ValueError):
+            fields = Path(f"/proc/{pid}/stat").read_text().rpartition(")")[2].split()
+            total += int(fields[11]) + int(fields[12])  # utime + stime, in clock ticks
+    return total / os.sysconf("SC_CLK_TCK")
+
+
+def settle(bridges: list[Bridge], timeout: float = 30.0) -> None:
+    """Wait until every bridge is idle (under 5 % of a core over half a second): a bridge
+    still sending the backlog of the last case would steal the CPU from the next one."""
+    pids = [p.pid for b in bridges for p in b.procs]
+    deadline = time.monotonic() + timeout
+    before = _cpu_seconds(pids)
+    while time.monotonic() < deadline:
+        time.sleep(0.5)
+        after = _cpu_seconds(pids)
+        if after - before < 0.025:
+            return
+        before = after
+
+
 def median_of(values: list[Any]) -> Any:
     """The median of a case's rounds (element by element for pairs); None if none ran."""
     found = [v for v in values if v is not None]
@@ -462,9 +490,10 @@ def main() -> int:
         # Both run all along and take turns, case by case and round by round, so a change in
         # the machine's load meets both.
         found: dict[str, dict[str, list[Any]]] = {b.name: {c: [] for c in cases} for b in bridges}
-        for _ in range(args.rounds):
+        for round_ in range(args.rounds):
             for case in cases:
-                for bridge in bridges:
+                for bridge in bridges if round_ % 2 == 0 else bridges[::-1]:
+                    settle(bridges)
                     found[bridge.name][case].append(measure_once(bridge, case, args.seconds))
     finally:
         for bridge in bridges:
