@@ -79,7 +79,7 @@ class TerminalState:
         return get_name_of_constant(cls, n)
 
 
-def _give_goal_status_its_names() -> None:
+def give_goal_status_its_names() -> None:
     """``GoalStatus.to_string(n)``, as ROS 1's actionlib adds it to the message class."""
     goal_status = msgs().GoalStatus
     if not hasattr(goal_status, "to_string"):
@@ -362,7 +362,7 @@ class ActionClient:
     """A client of the action ``ns`` of type ``ActionSpec`` (an ``XAction`` class)."""
 
     def __init__(self, ns: str, ActionSpec: Any) -> None:  # noqa: N803 - actionlib's name
-        _give_goal_status_its_names()
+        give_goal_status_its_names()
         self.ns = ns
         self.last_status_msg: Any = None
         types = action_types(ActionSpec)
@@ -500,4 +500,5 @@ __all__ = [
     "GoalManager",
     "TerminalState",
     "get_name_of_constant",
+    "give_goal_status_its_names",
 ]

@@ -3,20 +3,22 @@
 They are read from a copy of the repository named by ``UPSTREAM_ACTIONLIB`` (never copied
 here) and skip without one. As their launch files pair them, each server script of theirs runs
 under ``rosx run-script`` and the test module beside it in another, its ``unittest`` cases run
-by a small runner after ``init_node`` (the node name their ``__main__`` would give).
+by a small runner after ``init_node`` (the node name their ``__main__`` would give); then, with
+ROS 1 installed, each side once under Debian's Python and actionlib against rosx's other side.
 """
 
 from __future__ import annotations
 
-import contextlib
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
+from tests.interop.ros1_procs import ROS1_PYTHON, ros_env
 from tests.support.cli import clean_environ
 from tests.support.procs import running, wait_for
+from tests.support.ros1 import needs_ros1
 from tests.support.upstream import export, needs_upstream
 
 pytestmark = needs_upstream("actionlib")
@@ -44,8 +46,16 @@ def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return root / "actionlib" / "test"
 
 
-def _script(folder: Path, name: str, *argv: str) -> list[str]:
+def _script(side: str, folder: Path, name: str, *argv: str) -> list[str]:
+    if side == "ros1":
+        return [str(ROS1_PYTHON), str(folder / name), *argv]
     return [sys.executable, "-m", "rosx_commands", "run-script", str(folder / name), *argv]
+
+
+def _environ(side: str, master: str, home: Path) -> dict[str, str]:
+    if side == "ros1":
+        return ros_env(master, home)
+    return clean_environ(ROS_MASTER_URI=master, HOME=str(home))
 
 
 #: Each server script of theirs and the status topic that says it is up.
@@ -55,36 +65,68 @@ SERVERS = {
     "mock_simple_server.py": "/test_request_action/status",
 }
 
+PAIRS = [
+    ("ref_server.py", "test_ref_action_server", "test_ref_simple_action_server"),
+    ("ref_server.py", "simple_python_client_test", "simple_python_client_test"),
+    ("ref_simple_server.py", "test_ref_simple_action_server", "test_ref_simple_action_server"),
+    ("mock_simple_server.py", "exercise_simple_client", "exercise_simple_server"),
+]
 
-@pytest.mark.parametrize(
-    ("server", "module", "node"),
-    [
-        ("ref_server.py", "test_ref_action_server", "test_ref_simple_action_server"),
-        ("ref_server.py", "simple_python_client_test", "simple_python_client_test"),
-        ("ref_simple_server.py", "test_ref_simple_action_server", "test_ref_simple_action_server"),
-        ("mock_simple_server.py", "exercise_simple_client", "exercise_simple_server"),
-        (None, "test_server_components", "test_goal_id_generator"),
-        (None, "test_imports", "test_imports"),
-    ],
-)
+#: (server side, tests side): rosx alone, then each against ROS 1 (Debian's actionlib).
+SIDES = [
+    pytest.param("rosx", "rosx", id="rosx"),
+    pytest.param("ros1", "rosx", id="ros1-server", marks=needs_ros1),
+    pytest.param("rosx", "ros1", id="ros1-tests", marks=needs_ros1),
+]
+
+
+@pytest.mark.parametrize(("server_side", "tests_side"), SIDES)
+@pytest.mark.parametrize(("server", "module", "node"), PAIRS)
 def test_actionlibs_own_tests_pass(
-    master: str, folder: Path, tmp_path: Path, server: str | None, module: str, node: str
+    master: str,
+    folder: Path,
+    tmp_path: Path,
+    server_side: str,
+    tests_side: str,
+    server: str,
+    module: str,
+    node: str,
 ) -> None:
-    env = clean_environ(ROS_MASTER_URI=master, HOME=str(tmp_path))
     log = tmp_path / "server.log"
-    with log.open("w") as out, contextlib.ExitStack() as stack:
-        if server is not None:
-            stack.enter_context(
-                running(_script(folder, server), env, stdout=out, stderr=subprocess.STDOUT)
-            )
-            status = SERVERS[server]
-            wait_for(lambda: _published(env, status), 60, f"{server}'s {status}")
-        done = subprocess.run(
-            _script(folder, "run_tests.py", module, node),
-            env=env, cwd=folder, capture_output=True, text=True, timeout=300, check=False,
-        )  # fmt: skip
+    server_env = _environ(server_side, master, tmp_path)
+    with (
+        log.open("w") as out,
+        running(
+            _script(server_side, folder, server), server_env, stdout=out, stderr=subprocess.STDOUT
+        ),
+    ):
+        status = SERVERS[server]
+        probe = _environ("rosx", master, tmp_path)
+        wait_for(lambda: _published(probe, status), 60, f"{server}'s {status}")
+        done = _run_tests(tests_side, folder, module, node, _environ(tests_side, master, tmp_path))
     assert done.returncode == 0, done.stderr + log.read_text()
     assert "\nOK" in done.stderr
+
+
+@pytest.mark.parametrize(
+    ("module", "node"),
+    [("test_server_components", "test_goal_id_generator"), ("test_imports", "test_imports")],
+)
+def test_actionlibs_own_unit_tests_pass(
+    master: str, folder: Path, tmp_path: Path, module: str, node: str
+) -> None:
+    done = _run_tests("rosx", folder, module, node, _environ("rosx", master, tmp_path))
+    assert done.returncode == 0, done.stderr
+    assert "\nOK" in done.stderr
+
+
+def _run_tests(
+    side: str, folder: Path, module: str, node: str, env: dict[str, str]
+) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        _script(side, folder, "run_tests.py", module, node),
+        env=env, cwd=folder, capture_output=True, text=True, timeout=300, check=False,
+    )  # fmt: skip
 
 
 def _published(env: dict[str, str], topic: str) -> bool:

@@ -51,5 +51,7 @@ else:
     from rosx.actionlib.simple_action_server import *  # noqa: F403
     from rosx.actionlib.status_tracker import *  # noqa: F403
 
-    # ROS 1's package has these through its modules' own imports.
+    # ROS 1's package has these through its modules' own imports, and names GoalStatus's
+    # constants (GoalStatus.to_string) on import.
     GoalID, GoalStatus, GoalStatusArray = _msgs()
+    give_goal_status_its_names()  # noqa: F405 - from action_client
