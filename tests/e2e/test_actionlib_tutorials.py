@@ -25,9 +25,9 @@ from rosx.actionlib.states import Status
 from rosx.msg.codec.classes import get_message_class
 from tests.support.cli import rosx
 from tests.support.client import fresh_rospy
+from tests.support.fetched import fetched_tree
 from tests.support.procs import stop, wait_for
 from tests.support.tutorial_nodes import ROSCPP_LINE, ROSPY_LINE, Runs, lines
-from tests.support.upstream import export, needs_upstream
 
 FibonacciAction = get_message_class("actionlib_tutorials/FibonacciAction")
 FibonacciGoal = get_message_class("actionlib_tutorials/FibonacciGoal")
@@ -193,12 +193,12 @@ def test_the_shape_server_draws_a_pentagon(runs: Runs, rospy: ModuleType) -> Non
     assert result.apothem == pytest.approx(1.3 * math.cos(math.pi / 5))
 
 
-@needs_upstream("common_tutorials")
 def test_the_upstream_tutorials_build_and_run(
     runs: Runs, rospy: ModuleType, tmp_path: Path
 ) -> None:
     workspace = tmp_path / "ws"
-    export("common_tutorials", ["actionlib_tutorials", "turtle_actionlib"], workspace / "src")
+    for package in ("actionlib_tutorials", "turtle_actionlib"):
+        fetched_tree("ros/common_tutorials", package, workspace / "src")
     built = subprocess.run(
         [sys.executable, "-m", "rosx_commands", "catkin_make"],
         cwd=workspace, env={**runs.env, "PWD": str(workspace)}, capture_output=True,

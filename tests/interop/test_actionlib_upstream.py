@@ -1,7 +1,7 @@
 """actionlib's own Python tests (github:ros/actionlib, ``actionlib/test``), run against rosx.
 
-They are read from a copy of the repository named by ``UPSTREAM_ACTIONLIB`` (never copied
-here) and skip without one. As their launch files pair them, each server script of theirs runs
+They are read from the fetched repository (`tests.support.fetched`; never copied here) and
+skip without it. As their launch files pair them, each server script of theirs runs
 under ``rosx run-script`` and the test module beside it in another, its ``unittest`` cases run
 by a small runner after ``init_node`` (the node name their ``__main__`` would give); then, with
 ROS 1 installed, each side once under Debian's Python and actionlib against rosx's other side.
@@ -15,13 +15,11 @@ from pathlib import Path
 
 import pytest
 
-from tests.interop.ros1_procs import ROS1_PYTHON, ros_env
 from tests.support.cli import clean_environ
+from tests.support.fetched import fetched_tree
 from tests.support.procs import running, wait_for
 from tests.support.ros1 import needs_ros1
-from tests.support.upstream import export, needs_upstream
-
-pytestmark = needs_upstream("actionlib")
+from tests.support.ros1_procs import ROS1_PYTHON, ros_env
 
 #: Runs one test module's cases as rostest would, with a node of rostest's naming.
 RUNNER = """
@@ -40,10 +38,9 @@ sys.exit(0 if outcome.wasSuccessful() else 1)
 
 @pytest.fixture(scope="module")
 def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    root = tmp_path_factory.mktemp("actionlib")
-    export("actionlib", ["actionlib/test"], root)
-    (root / "actionlib" / "test" / "run_tests.py").write_text(RUNNER)
-    return root / "actionlib" / "test"
+    tests = fetched_tree("ros/actionlib", "actionlib/test", tmp_path_factory.mktemp("actionlib"))
+    (tests / "run_tests.py").write_text(RUNNER)
+    return tests
 
 
 def _script(side: str, folder: Path, name: str, *argv: str) -> list[str]:
