@@ -78,6 +78,8 @@ class RequestError(Exception):
 
 
 def check_fields(op: str, request: dict[str, Any]) -> None:
+    """Refuse ``request`` unless it has the fields ``op`` requires, each of its kind, in
+    rosbridge's words."""
     for required, name, kinds in _FIELDS.get(op, ()):
         if name not in request:
             if required:
@@ -91,6 +93,7 @@ def check_fields(op: str, request: dict[str, Any]) -> None:
 
 
 def message_class(type_name: str) -> type[Message]:
+    """The class of message type ``type_name``; `RequestError` with rosbridge's words if unknown."""
     try:
         return get_message_class(type_name)
     except (UnknownTypeError, ValueError):
@@ -98,6 +101,7 @@ def message_class(type_name: str) -> type[Message]:
 
 
 def kind(value: object) -> str:
+    """What ``value`` is, as rosbridge's errors say it (``an array``, ``a string``…)."""
     if isinstance(value, list):
         return "an array"
     if isinstance(value, str):
@@ -110,6 +114,7 @@ def kind(value: object) -> str:
 
 
 def excerpt(text: str, limit: int = 80) -> str:
+    """``text``, cut to ``limit`` characters with an ellipsis, for an error message."""
     return text if len(text) <= limit else text[:limit] + "…"
 
 

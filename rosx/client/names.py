@@ -66,7 +66,6 @@ def get_ros_namespace(
     env: Mapping[str, str] | None = None, argv: Sequence[str] | None = None
 ) -> str:
     """The namespace of ``__ns:=`` in ``argv``, else of ``ROS_NAMESPACE``, global with ``/``."""
-
     return ros_namespace(os.environ if env is None else env, sys.argv if argv is None else argv)
 
 

@@ -1,4 +1,4 @@
-"""rospy's Parameter Server functions: ``get_param``, ``set_param``, ``search_param``…
+"""rospy's Parameter Server functions: ``get_param``, ``set_param``, ``search_param`` and more.
 
 Names resolve as the node resolves them (``~x`` is private; relative names are in the node's
 namespace). They work before `init_node` too, as rospy's do, calling the master as

@@ -12,6 +12,8 @@ from enum import Enum
 
 
 class Kind(str, Enum):
+    """What a vertex is: a node, a topic, or a group of topics drawn as one."""
+
     NODE = "node"  # an ellipse in rqt_graph
     TOPIC = "topic"  # a box
     GROUP = "group"  # a 3-D box: grouped action, image or tf topics
@@ -19,6 +21,8 @@ class Kind(str, Enum):
 
 @dataclass(frozen=True)
 class Vertex:
+    """One vertex of the drawn graph: its id, label, kind and namespace clusters."""
+
     id: str
     label: str
     kind: Kind
@@ -29,6 +33,8 @@ class Vertex:
 
 @dataclass(frozen=True)
 class Edge:
+    """One edge of the drawn graph, between two vertex ids."""
+
     source: str
     target: str
     #: The topic, on node → node edges (Nodes only); empty otherwise.
@@ -37,6 +43,8 @@ class Edge:
 
 @dataclass(frozen=True)
 class ViewGraph:
+    """The graph rqt_graph draws: vertices and edges after its modes and filters."""
+
     vertices: tuple[Vertex, ...] = ()
     edges: tuple[Edge, ...] = ()
 
@@ -49,10 +57,12 @@ GONE = "(gone)"
 
 
 def node_id(name: str) -> str:
+    """The vertex id of node ``name``."""
     return "n:" + name
 
 
 def topic_id(name: str) -> str:
+    """The vertex id of topic ``name``."""
     return "t:" + name
 
 

@@ -310,6 +310,7 @@ def _namespaces_of(name: str) -> list[str]:
 
 
 def descendants(element: Element) -> Iterator[Element]:
+    """Every element below ``element``, depth first, in document order."""
     for child in element.children:
         yield child
         yield from descendants(child)

@@ -1,8 +1,8 @@
-"""MD5 sums and full definitions of message and service types, computed as ROS 1 does.
+r"""MD5 sums and full definitions of message and service types, computed as ROS 1 does.
 
 The md5 text of a message (genmsg's rules): constants first as ``type NAME=value`` (value as
 written), then fields, a built-in as ``type name`` with its array suffix, a message field as
-``<md5 of its type> name`` with no suffix; lines joined by ``\\n``. A service's sum hashes the
+``<md5 of its type> name`` with no suffix; lines joined by ``\n``. A service's sum hashes the
 request text followed by the response text. The full definition (``message_definition`` in
 connection headers) is the type's own text, then each dependency once, depth first in field
 order, after a line of 80 ``=`` and ``MSG: pkg/Type``.
@@ -32,12 +32,14 @@ def md5_text(spec: MsgSpec, lookup: Lookup, md5_of: Callable[[str], str] | None 
 
 
 def message_md5(spec: MsgSpec, lookup: Lookup, md5_of: Callable[[str], str] | None = None) -> str:
+    """The md5 sum of message type ``spec``, as ROS 1 computes it."""
     import hashlib  # noqa: PLC0415 - loads OpenSSL (2 ms), which rosmsg show does not need
 
     return hashlib.md5(md5_text(spec, lookup, md5_of).encode()).hexdigest()
 
 
 def service_md5(spec: SrvSpec, lookup: Lookup, md5_of: Callable[[str], str] | None = None) -> str:
+    """The md5 sum of service type ``spec`` (its request's text, then its response's)."""
     import hashlib  # noqa: PLC0415 - hashlib is not needed at start-up
 
     digest = hashlib.md5(md5_text(spec.request, lookup, md5_of).encode())

@@ -120,7 +120,6 @@ def _write_cache(path: Path, tag: Tag, texts: dict[str, str]) -> None:
 
 def _remove_stale(kept: Path) -> None:
     """Remove the other cache files not written for `STALE_DAYS` days."""
-
     oldest = time.time() - STALE_DAYS * 86400
     for other in kept.parent.glob(f"{_CACHE_STEM}*.marshal"):
         with contextlib.suppress(OSError):

@@ -26,6 +26,8 @@ class Handle(Protocol):
 
 
 class Publishing(Handle, Protocol):
+    """A handle that publishes: what tf's broadcasters need of a publisher."""
+
     def publish(self, msg: Any) -> None: ...
 
 

@@ -261,7 +261,6 @@ class LaunchRun:
     def _crawled(self, environ: Mapping[str, str]) -> dict[str, Path] | None:
         """The package index's crawl, when it is of ``environ``'s package path (the nodes
         need it anyway, so it is done here once for the launcher and the helper)."""
-
         package_path = split_package_path(environ.get("ROS_PACKAGE_PATH"))
         if self.package_index.package_path != package_path:
             return None

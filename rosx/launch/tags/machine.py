@@ -21,6 +21,7 @@ _ENV_LOADER = "/opt/ros/noetic/env.sh"
 
 
 def machine_tag(reader: Reader, context: LoadContext, element: Element) -> Machine | None:
+    """Read a ``<machine>`` tag; the machine, or None when ``if``/``unless`` skip it."""
     if not reader.enabled(context, element):
         return None
     context = context.child(None)
@@ -80,6 +81,7 @@ def machine_tag(reader: Reader, context: LoadContext, element: Element) -> Machi
 
 
 def add_machine(reader: Reader, context: LoadContext, element: Element, machine: Machine) -> None:
+    """Add ``machine`` to the plan; refuse another of its name that differs, as roslaunch does."""
     known = reader.plan.machines.get(machine.name)
     if known is None:
         reader.plan.machines[machine.name] = machine

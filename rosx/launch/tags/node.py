@@ -25,6 +25,7 @@ _TEST_TIME_LIMIT = 60.0
 def node_tag(
     reader: Reader, context: LoadContext, element: Element, machine: Machine | None
 ) -> None:
+    """Read a ``<node>`` or ``<test>`` tag and its children into the plan."""
     if not reader.enabled(context, element):
         return
     is_test = element.tag == "test"
@@ -160,6 +161,7 @@ def node_children(
 
 
 def test_attrs(reader: Reader, context: LoadContext, element: Element) -> tuple[str, float, int]:
+    """A ``<test>``'s name, time limit and retries; refuses a node's attributes it may not have."""
     for attr in ("respawn", "respawn_delay", "output"):
         if attr in element.attrs:
             raise reader.fail(context, element, f"<test> tags cannot have '{attr}' attribute")

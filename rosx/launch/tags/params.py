@@ -35,6 +35,7 @@ if TYPE_CHECKING:
 def param_tag(
     reader: Reader, context: LoadContext, element: Element, *, local: bool = False
 ) -> None:
+    """Read a ``<param>`` tag into the plan (value, textfile, binfile or command)."""
     if not reader.enabled(context, element):
         return
     reader.check_attrs(context, element)
@@ -62,6 +63,7 @@ def param_tag(
 
 
 def param_value(reader: Reader, name: str, type_: str, given: dict[str, str | None]) -> Any:
+    """The value of a ``<param>`` from whichever of value, textfile, binfile or command it gives."""
     value, textfile, binfile, command = given.values()
     if value is not None:
         return convert_value(value.strip(), type_)
@@ -74,6 +76,7 @@ def param_value(reader: Reader, name: str, type_: str, given: dict[str, str | No
 
 
 def rosparam_tag(reader: Reader, context: LoadContext, element: Element) -> None:
+    """Read a ``<rosparam>`` tag: load YAML into the plan, or record a dump or delete."""
     if not reader.enabled(context, element):
         return
     reader.check_attrs(context, element)

@@ -22,6 +22,7 @@ if TYPE_CHECKING:
 
 
 def arg_tag(reader: Reader, context: LoadContext, element: Element) -> None:
+    """Read an ``<arg>`` tag: its value, default or the command line's, into the scope."""
     if not reader.enabled(context, element):
         return
     reader.check_attrs(context, element)
@@ -58,6 +59,7 @@ def group_tag(
 def include_tag(
     reader: Reader, context: LoadContext, element: Element, machine: Machine | None
 ) -> Machine | None:
+    """Read an ``<include>`` tag: the file, with its args and namespace, into the plan."""
     if not reader.enabled(context, element):
         return machine
     reader.check_attrs(context, element)
@@ -101,6 +103,7 @@ def include_tag(
 
 
 def remap_tag(reader: Reader, context: LoadContext, element: Element) -> tuple[str, str] | None:
+    """Read a ``<remap>`` tag; its ``(from, to)``, or None when ``if``/``unless`` skip it."""
     if not reader.enabled(context, element):
         return None
     reader.check_attrs(context, element)
@@ -115,6 +118,7 @@ def remap_tag(reader: Reader, context: LoadContext, element: Element) -> tuple[s
 def add_remap(
     reader: Reader, context: LoadContext, element: Element, remap: tuple[str, str]
 ) -> None:
+    """Add ``remap`` to the context, refusing names roslaunch refuses."""
     try:
         context.add_remap(*remap)
     except ContextError as error:
@@ -122,6 +126,7 @@ def add_remap(
 
 
 def env_tag(reader: Reader, context: LoadContext, element: Element) -> None:
+    """Read an ``<env>`` tag into the context's environment."""
     if not reader.enabled(context, element):
         return
     reader.check_attrs(context, element)

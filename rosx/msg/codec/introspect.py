@@ -15,6 +15,7 @@ from rosx.msg.codec.rostime import TVal
 
 
 def is_message(value: object) -> bool:
+    """Whether ``value`` is a message (a generated class's instance), not a time value."""
     return not isinstance(value, TVal) and hasattr(value, "_slot_types")
 
 

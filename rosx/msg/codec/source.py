@@ -30,6 +30,8 @@ def python_name(name: str) -> str:
 
 
 def python_names(spec: MsgSpec) -> list[str]:
+    """The attribute names of ``spec``'s fields (Python keywords suffixed with ``_``, as genpy
+    names them)."""
     return [python_name(field.name) for field in spec.fields]
 
 
