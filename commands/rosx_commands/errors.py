@@ -77,7 +77,6 @@ def command_error(error: BaseException, env: Environment, status: int) -> Comman
 def error_line(error: BaseException) -> str:
     """``error`` as one line for a terminal UI's status line: the core's errors in ROS 1's
     words (`command_error`), any other as its text."""
-
     quiet = Environment(stdout=io.StringIO(), stderr=io.StringIO(), environ={})
     mapped = command_error(error, quiet, 1)
     text = mapped.message if mapped else str(error)

@@ -18,6 +18,7 @@ UsageError: type[Exception] = next(
 
 
 def build_menu() -> typer.Typer:
+    """The typer app of ``rosx --help``: every tool as a sub-command that forwards its arguments."""
     app = typer.Typer(
         help="The ROS 1 command-line world. Each sub-command is the ROS tool of that name.",
         epilog=_packages_epilog(),
@@ -84,4 +85,5 @@ def run_typer(app: typer.Typer, argv: Sequence[str], env: Environment, prog: str
 
 
 def run_menu(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosx ARGV…`` through the menu; the exit status."""
     return run_typer(build_menu(), argv, env, "rosx")

@@ -173,7 +173,6 @@ def _show(tool: _Tool, argv: list[str], alias: str) -> int:
 
 def _show_from_bag(tool: _Tool, bag: str, type_name: str, raw: bool) -> int:
     """``rosmsg show -b BAG TYPE``: the definition the bag recorded for ``TYPE``."""
-
     from rosx.bag.errors import BagError  # noqa: PLC0415 - bag code loads only for bags
     from rosx.bag.reader import BagReader  # noqa: PLC0415 - bag code loads only for bags
     from rosx.bag.types import DefinitionStore, split_definition  # noqa: PLC0415 - bag code loads only for bags
@@ -278,8 +277,10 @@ def main(argv: Sequence[str], env: Environment, kind: str) -> int:
 
 
 def rosmsg(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosmsg ARGV…``."""
     return main(argv, env, "msg")
 
 
 def rossrv(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rossrv ARGV…``."""
     return main(argv, env, "srv")

@@ -45,6 +45,7 @@ COMMANDS = [
 
 
 def overview() -> str:
+    """rosnode's list of commands, printed without one or with ``--help``."""
     return commands_overview(
         "rosnode",
         COMMANDS,
@@ -58,6 +59,7 @@ def _resolve(env: Environment, name: str) -> str:
 
 
 def list_nodes(argv: list[str], env: Environment) -> int:
+    """``rosnode list``: the nodes, in a namespace, with URIs (``-u``, ``-a``) or the dead only."""
     parser = ToolParser(env, "rosnode", "usage: %prog list")
     parser.add_option(
         "-u", dest="list_uri", default=False, action="store_true", help="list XML-RPC URIs"
@@ -96,6 +98,7 @@ def list_nodes(argv: list[str], env: Environment) -> int:
 
 
 def info(argv: list[str], env: Environment) -> int:
+    """``rosnode info NODE…``: publications, subscriptions, services and connections."""
     parser = ToolParser(env, "rosnode", "usage: %prog info [options] node1 [node2...]")
     parser.add_option(
         "-q",
@@ -194,6 +197,7 @@ def ping_node(
 
 
 def ping(argv: list[str], env: Environment) -> int:
+    """``rosnode ping``: call a node's ``getPid`` (``-c`` times, or every node with ``--all``)."""
     parser = ToolParser(env, "rosnode", "usage: %prog ping [options] <node>")
     parser.add_option(
         "--all", "-a", dest="ping_all", default=False, action="store_true", help="ping all nodes"
@@ -245,6 +249,7 @@ def _no_node_to_ping(env: Environment, parser: ToolParser, master: MasterClient)
 
 
 def machine(argv: list[str], env: Environment) -> int:
+    """``rosnode machine [HOST]``: the machines of the graph, or the nodes on one."""
     parser = ToolParser(env, "rosnode", "usage: %prog machine [machine-name]")
     _, names = parser.parse(argv)
     if len(names) > 1:
@@ -277,6 +282,7 @@ def _addresses(host: str) -> set[str] | None:
 
 
 def kill(argv: list[str], env: Environment) -> int:
+    """``rosnode kill``: ask nodes to shut down (named, chosen from a list, or ``--all``)."""
     parser = ToolParser(env, "rosnode", "usage: %prog kill [node]...")
     parser.add_option(
         "-a", "--all", dest="kill_all", default=False, action="store_true", help="kill all nodes"
@@ -331,6 +337,7 @@ def _read_choice(env: Environment, limit: int) -> int:
 
 
 def cleanup(argv: list[str], env: Environment) -> int:
+    """``rosnode cleanup``: unregister the nodes that no longer answer, once confirmed."""
     ToolParser(env, "rosnode", "usage: %prog cleanup").parse(argv)
     master = env.master(CALLER_ID)
     dead = unreachable_nodes(master, node_names(master))

@@ -330,7 +330,6 @@ def _run(player: Player, options: optparse.Values, env: Environment) -> int:
 @contextlib.contextmanager
 def _keys(player: Player, env: Environment) -> Iterator[None]:
     """Space and ``s`` from a terminal on stdin, read without echo or line buffering."""
-
     stdin = env.stdin
     if not is_terminal(stdin) or sys.platform == "win32":
         yield

@@ -28,6 +28,7 @@ def _verbose_option(parser: ToolParser) -> None:
 
 
 def get(argv: list[str], env: Environment) -> int:
+    """``rosparam get NAME``: a parameter or namespace as YAML (``-p`` pretty)."""
     parser = ToolParser(env, "rosparam", "usage: %prog get [options] parameter")
     parser.add_option(
         "-p",
@@ -79,6 +80,7 @@ def _pretty_print(env: Environment, tree: dict[str, Any], indent: str) -> None:
 
 
 def dump(argv: list[str], env: Environment) -> int:
+    """``rosparam dump FILE [NS]``: a namespace written as a YAML file."""
     parser = ToolParser(env, "rosparam", "usage: %prog dump [options] file [namespace]")
     _verbose_option(parser)
     options, args = parser.parse(argv)
@@ -107,6 +109,7 @@ def dump(argv: list[str], env: Environment) -> int:
 
 
 def list_params(argv: list[str], env: Environment) -> int:
+    """``rosparam list [NS]``: every parameter name."""
     parser = ToolParser(env, "rosparam", "usage: %prog list [namespace]")
     _, args = parser.parse(argv)
     server = ParamServer(env)

@@ -56,6 +56,7 @@ def _split_negative_args(parser: ToolParser, argv: list[str]) -> tuple[Any, list
 
 
 def set_param(argv: list[str], env: Environment) -> int:
+    """``rosparam set NAME VALUE``: a YAML value (or a file's text, ``-t``/``-b``)."""
     parser = ToolParser(env, "rosparam", "usage: %prog set [options] parameter value")
     parser.add_option(
         "-t",
@@ -119,6 +120,7 @@ def _load_value(text: str) -> Any:
 
 
 def load(argv: list[str], env: Environment) -> int:
+    """``rosparam load FILE [NS]``: every parameter of a YAML file."""
     parser = ToolParser(env, "rosparam", "usage: %prog load [options] file [namespace]")
     _verbose_option(parser)
     options, args = parser.parse(argv)
@@ -173,6 +175,7 @@ def _load_documents(text: str, filename: str) -> list[Any]:
 
 
 def delete(argv: list[str], env: Environment) -> int:
+    """``rosparam delete NAME``: remove a parameter or namespace."""
     parser = ToolParser(env, "rosparam", "usage: %prog delete [options] parameter")
     _verbose_option(parser)
     options, args = parser.parse(argv)

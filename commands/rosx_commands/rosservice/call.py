@@ -71,6 +71,8 @@ def _parser(env: Environment) -> ToolParser:
 
 
 def call_command(argv: list[str], env: Environment) -> int:
+    """``rosservice call SERVICE [ARGS]``: call a service with YAML arguments, print the
+    response."""
     parser = _parser(env)
     options, args = parser.parse(argv)
     if not args:

@@ -19,6 +19,7 @@ def _service_only(env: Environment, command: str, argv: list[str]) -> str:
 
 
 def list_services(argv: list[str], env: Environment) -> int:
+    """``rosservice list [NS]``: the services, with their nodes (``-n``)."""
     parser = ToolParser(env, "rosservice", "usage: %prog list [/namespace]")
     parser.add_option(
         "-n",
@@ -44,6 +45,7 @@ def list_services(argv: list[str], env: Environment) -> int:
 
 
 def service_type(argv: list[str], env: Environment) -> int:
+    """``rosservice type SERVICE``: its type."""
     name = _service_only(env, "type", argv)
     found = Services(env).type_of(name)
     if found is None:
@@ -53,6 +55,7 @@ def service_type(argv: list[str], env: Environment) -> int:
 
 
 def service_uri(argv: list[str], env: Environment) -> int:
+    """``rosservice uri SERVICE``: its ``rosrpc://`` URI."""
     name = _service_only(env, "uri", argv)
     uri = Services(env).uri_of(name)
     if not uri:
@@ -62,6 +65,7 @@ def service_uri(argv: list[str], env: Environment) -> int:
 
 
 def service_node(argv: list[str], env: Environment) -> int:
+    """``rosservice node SERVICE``: the node that provides it."""
     name = _service_only(env, "node", argv)
     node = Services(env).node_of(name)
     if not node:
@@ -71,12 +75,14 @@ def service_node(argv: list[str], env: Environment) -> int:
 
 
 def service_args(argv: list[str], env: Environment) -> int:
+    """``rosservice args SERVICE``: the names of its request's fields."""
     name = _service_only(env, "args", argv)
     env.out(request_args(Services(env).service_class(name)))
     return ExitStatus.OK
 
 
 def info(argv: list[str], env: Environment) -> int:
+    """``rosservice info SERVICE``: its node, URI, type and arguments."""
     parser = ToolParser(env, "rosservice", "usage: %prog info /service")
     _, args = parser.parse(argv)
     if len(args) > 1:
@@ -104,6 +110,7 @@ def info(argv: list[str], env: Environment) -> int:
 
 
 def find(argv: list[str], env: Environment) -> int:
+    """``rosservice find TYPE``: the services of a type."""
     parser = ToolParser(env, "rosservice", "usage: %prog find msg-type")
     _, args = parser.parse(argv)
     if not args:

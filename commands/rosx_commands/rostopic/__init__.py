@@ -26,6 +26,7 @@ COMMANDS = [
 
 
 def overview() -> str:
+    """rostopic's list of commands, printed without one or with ``--help``."""
     return commands_overview(
         "rostopic",
         COMMANDS,

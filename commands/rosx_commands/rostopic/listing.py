@@ -79,6 +79,8 @@ def _list_bag(env: Environment, bag: str, topic: str | None) -> int:
 
 
 def list_topics(argv: list[str], env: Environment) -> int:
+    """``rostopic list``: the topics (of a namespace, a bag, a host), with ``-v`` their
+    publishers and subscribers."""
     parser = ToolParser(env, "rostopic", "usage: %prog list [/namespace]")
     parser.add_option(
         "-b", "--bag", dest="bag", default=None, help="list topics in .bag file", metavar="BAGFILE"
@@ -193,6 +195,7 @@ def _print_by_host(
 
 
 def info(argv: list[str], env: Environment) -> int:
+    """``rostopic info TOPIC``: its type, publishers and subscribers."""
     parser = ToolParser(env, "rostopic", "usage: %prog info /topic")
     _, names = parser.parse(argv)
     if not names:
@@ -207,6 +210,7 @@ def info(argv: list[str], env: Environment) -> int:
 
 
 def topic_type(argv: list[str], env: Environment) -> int:
+    """``rostopic type TOPIC[/FIELD]``: the type of a topic or of a field of it."""
     from rosx_commands.argparser import ToolArgumentParser  # noqa: PLC0415 - only type uses it
 
     parser = ToolArgumentParser(env, prog="rostopic type")
@@ -240,6 +244,7 @@ def topic_type(argv: list[str], env: Environment) -> int:
 
 
 def find(argv: list[str], env: Environment) -> int:
+    """``rostopic find TYPE``: the topics of a type."""
     parser = ToolParser(env, "rostopic", "usage: %prog find msg-type")
     _, names = parser.parse(argv)
     if not names:

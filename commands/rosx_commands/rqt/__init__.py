@@ -18,6 +18,7 @@ q quits."""
 
 
 def rqt(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosx rqt ARGV…``."""
     return run_command(_rqt, list(argv), env)
 
 

@@ -55,6 +55,7 @@ def _parser(env: Environment) -> ToolParser:
 
 
 def rqt_console(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosx rqt_console ARGV…``."""
     return run_command(_rqt_console, list(argv), env)
 
 

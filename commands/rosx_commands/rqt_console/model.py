@@ -69,6 +69,8 @@ def location(file: str, function: str, line: int) -> str:
 
 
 class Kind(Enum):
+    """What a rule does to the messages it matches: keep only them, drop them, or highlight them."""
+
     INCLUDE = "include"
     EXCLUDE = "exclude"
     HIGHLIGHT = "highlight"

@@ -76,6 +76,7 @@ def row_text(entry: Entry, width: int) -> str:
 
 
 def header_text(width: int) -> str:
+    """The table's header row, ``width`` columns wide."""
     return " ".join(_cell(name, w) for name, w in columns(width))[:width].ljust(width)
 
 

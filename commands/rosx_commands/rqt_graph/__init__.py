@@ -101,6 +101,7 @@ def _parser(env: Environment) -> ToolParser:
 
 
 def rqt_graph(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosx rqt_graph ARGV…``."""
     return run_command(_rqt_graph, list(argv), env)
 
 

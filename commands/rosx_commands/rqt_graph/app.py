@@ -68,6 +68,8 @@ class History:
 
 
 class GraphPane(Vertical):
+    """rqt_graph's pane: the drawing, the details panel and the status line, refreshed live."""
+
     DEFAULT_CSS = """
     #details { width: 40; border-left: solid $primary; padding: 0 1; display: none; }
     #details.open { display: block; }
@@ -310,6 +312,7 @@ def make_graph_app(
 
 
 def run_app(env: Any, uri: str, options: GraphOptions, period: float, bus_info: bool) -> int:
+    """Run the live view of the graph at ``uri`` until the user quits; the exit status."""
     app = make_graph_app(LiveSource(env, uri, CALLER_ID, bus_info), options, period)
     app.run()
     return 0

@@ -21,6 +21,8 @@ REFRESH_PERIOD = 1.5
 
 
 class GraphSource(Protocol):
+    """Where the live view gets its graph and details (`LiveSource`, or a test's)."""
+
     def snapshot(self) -> GraphState: ...
 
     def describe(self, vertex: Vertex) -> str: ...

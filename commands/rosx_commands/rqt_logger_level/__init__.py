@@ -32,6 +32,7 @@ def _parser(env: Environment) -> ToolParser:
 
 
 def rqt_logger_level(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosx rqt_logger_level ARGV…``."""
     return run_command(_rqt_logger_level, list(argv), env)
 
 

@@ -224,5 +224,4 @@ def make_level_app(source: LevelSource) -> LevelApp:
 
 def logger_level_tab(env: Any) -> LevelPane:
     """rqt_logger_level as a tab of ``rosx rqt``: the nodes of ``env``'s master."""
-
     return LevelPane(LiveSource(env.master_uri))

@@ -27,6 +27,8 @@ CALL_TIMEOUT = 5.0
 
 
 class LevelSource(Protocol):
+    """Where rqt_logger_level reads and sets levels (`LiveSource`, or a test's)."""
+
     def nodes(self) -> list[str]:
         """The nodes whose levels can be set, sorted."""
         ...

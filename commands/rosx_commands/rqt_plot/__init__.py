@@ -55,6 +55,7 @@ def _parser(env: Environment) -> ToolParser:
 
 
 def rqt_plot(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosx rqt_plot ARGV…``."""
     return run_command(_rqt_plot, list(argv), env)
 
 

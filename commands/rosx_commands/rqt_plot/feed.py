@@ -31,6 +31,8 @@ NUMERIC = frozenset(
 
 
 class PlotFeed(Protocol):
+    """Where the plot's series get their values (the live feed, or a test's)."""
+
     def now(self) -> float:
         """Seconds since the plot started: the right edge of the time window."""
         ...

@@ -20,6 +20,7 @@ rate, delay and buffer length (as rqt_tf_tree and view_frames show them); q quit
 
 
 def rqt_tf_tree(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosx rqt_tf_tree ARGV…``."""
     return run_command(_rqt_tf_tree, list(argv), env)
 
 

@@ -18,6 +18,7 @@ bandwidth, rate and latest message, a tree enter expands), q quits."""
 
 
 def rqt_topic(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosx rqt_topic ARGV…``."""
     return run_command(_rqt_topic, list(argv), env)
 
 

@@ -247,5 +247,4 @@ def make_topic_app(source: TopicSource, *, periodic: bool = True) -> TopicApp:
 
 def topic_tab(env: Environment) -> TopicPane:
     """rqt_topic as a tab of ``rosx rqt``."""
-
     return TopicPane(LiveTopicSource(env))

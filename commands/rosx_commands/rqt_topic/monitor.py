@@ -51,6 +51,8 @@ class Field:
 
 
 class TopicSource(Protocol):
+    """Where rqt_topic gets its topics and measures them (`LiveTopicSource`, or a test's)."""
+
     def topics(self) -> list[tuple[str, str]]:
         """``(topic, type)`` of every published topic, sorted; may block."""
         ...

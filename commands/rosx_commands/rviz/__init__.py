@@ -62,6 +62,7 @@ def _parser(env: Environment) -> ToolParser:
 
 
 def rviz(argv: Sequence[str], env: Environment) -> int:
+    """Run ``rosx rviz ARGV…``."""
     return run_command(_rviz, list(argv), env)
 
 

@@ -49,7 +49,7 @@ class DisplaySpec:
 
 @dataclass
 class ToolSpec:
-    """A tool of the config: ``rviz/SetGoal``, ``rviz/SetInitialPose``, ``rviz/PublishPoint``…"""
+    """A tool of the config (``rviz/SetGoal``, ``rviz/SetInitialPose``, ``rviz/PublishPoint``)."""
 
     class_id: str
     topic: str | None

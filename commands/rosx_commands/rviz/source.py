@@ -13,6 +13,8 @@ if TYPE_CHECKING:
 
 
 class Source(Protocol):
+    """Where rviz's displays get their messages and transforms (the live node, or a test's)."""
+
     def start(self, manager: Manager, changed: Callable[[], object]) -> None:
         """Begin feeding ``manager`` (may block: the app calls it from a worker thread)."""
         ...

@@ -14,6 +14,8 @@ if TYPE_CHECKING:
 
 
 class Axes(Display):
+    """rviz's Axes display: a frame's x and y axes."""
+
     CLASSES = ("rviz/Axes",)
 
     def draw(self, context: Context) -> Layer:

@@ -20,6 +20,8 @@ PLANES = {"XY": (0, 1), "XZ": (0, 2), "YZ": (1, 2)}
 
 
 class Grid(Display):
+    """rviz's Grid display: cells around a frame's origin."""
+
     CLASSES = ("rviz/Grid",)
 
     def draw(self, context: Context) -> Layer:

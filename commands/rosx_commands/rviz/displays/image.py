@@ -61,6 +61,8 @@ def to_rgb(
 
 
 class Image(Display):
+    """rviz's Image display: the latest image of a topic."""
+
     CLASSES = ("rviz/Image",)
     MESSAGE_TYPE = "sensor_msgs/Image"
     TOPIC_KEY = "Image Topic"

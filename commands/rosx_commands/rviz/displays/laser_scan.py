@@ -28,6 +28,8 @@ def scan_points(msg: Any) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float
 
 
 class LaserScan(CloudDisplay):
+    """rviz's LaserScan display: the points of the latest scans."""
+
     CLASSES = ("rviz/LaserScan",)
     MESSAGE_TYPE = "sensor_msgs/LaserScan"
     DEFAULT_TOPIC = ""

@@ -125,6 +125,8 @@ class MapImage:
 
 
 class Map(Display):
+    """rviz's Map display: an occupancy grid."""
+
     CLASSES = ("rviz/Map",)
     MESSAGE_TYPE = "nav_msgs/OccupancyGrid"
     DEFAULT_TOPIC = "map"

@@ -117,6 +117,8 @@ def shape(kept: Kept, to_fixed: Transform, metres_per_pixel: float) -> Layer:
 
 
 class Marker(Display):
+    """rviz's Marker display: the markers of a topic, by namespace and id."""
+
     CLASSES = ("rviz/Marker",)
     MESSAGE_TYPE = "visualization_msgs/Marker"
     TOPIC_KEY = "Marker Topic"
@@ -205,6 +207,8 @@ class Marker(Display):
 
 
 class MarkerArray(Marker):
+    """rviz's MarkerArray display: markers that come in arrays."""
+
     CLASSES = ("rviz/MarkerArray",)
     MESSAGE_TYPE = "visualization_msgs/MarkerArray"
     DEFAULT_TOPIC = "visualization_marker_array"

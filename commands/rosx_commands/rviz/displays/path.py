@@ -24,6 +24,8 @@ if TYPE_CHECKING:
 
 
 class Path(Display):
+    """rviz's Path display: the poses of a path as a line."""
+
     CLASSES = ("rviz/Path",)
     MESSAGE_TYPE = "nav_msgs/Path"
 
@@ -65,6 +67,8 @@ class Path(Display):
 
 
 class Polygon(Display):
+    """rviz's Polygon display: a polygon's outline."""
+
     CLASSES = ("rviz/Polygon",)
     MESSAGE_TYPE = "geometry_msgs/PolygonStamped"
 

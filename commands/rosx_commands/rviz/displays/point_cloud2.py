@@ -72,6 +72,8 @@ def cloud_arrays(
 
 
 class PointCloud2(CloudDisplay):
+    """rviz's PointCloud2 display: the points of the latest clouds."""
+
     CLASSES = ("rviz/PointCloud2",)
     MESSAGE_TYPE = "sensor_msgs/PointCloud2"
 

@@ -53,6 +53,8 @@ class PoseShapes(Display):
 
 
 class Pose(PoseShapes):
+    """rviz's Pose display: the latest pose as an arrow."""
+
     CLASSES = ("rviz/Pose", "rviz/PoseStamped")
     MESSAGE_TYPE = "geometry_msgs/PoseStamped"
 
@@ -76,6 +78,8 @@ class Pose(PoseShapes):
 
 
 class PoseArray(PoseShapes):
+    """rviz's PoseArray display: each pose of the latest array as an arrow."""
+
     CLASSES = ("rviz/PoseArray",)
     MESSAGE_TYPE = "geometry_msgs/PoseArray"
 
@@ -113,6 +117,8 @@ class PoseArray(PoseShapes):
 
 
 class Odometry(PoseShapes):
+    """rviz's Odometry display: the last poses of an odometry topic as arrows."""
+
     CLASSES = ("rviz/Odometry",)
     MESSAGE_TYPE = "nav_msgs/Odometry"
 

@@ -111,6 +111,8 @@ def parse_urdf(text: str, which: str = "visual") -> dict[str, list[Part]]:
 
 
 class RobotModel(Display):
+    """rviz's RobotModel display: the robot description's links where tf places them."""
+
     CLASSES = ("rviz/RobotModel",)
     PREFER = ()
 

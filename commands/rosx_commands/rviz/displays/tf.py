@@ -29,6 +29,8 @@ NAME_COLOUR = (255, 255, 255)
 
 
 class TF(Display):
+    """rviz's TF display: each frame's axes and its link to its parent."""
+
     CLASSES = ("rviz/TF",)
 
     def clear(self) -> None:
