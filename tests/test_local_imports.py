@@ -17,7 +17,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 PACKAGES = ("rosx", "commands/rosx_commands", "turtle/rosx_turtle")
 SHIPPED = ROOT / "rosx" / "packages" / "noetic"
-#: ``# noqa: …PLC0415… - <a reason>`` (other codes may be listed beside it).
+#: A noqa comment naming PLC0415 (other codes may stand beside it), then `` - <a reason>``.
 REASONED = re.compile(r"#\s*noqa:\s*[A-Z0-9, ]*PLC0415[A-Z0-9, ]* - \S")
 #: A comment that says something (for the banned heavy modules).
 COMMENTED = re.compile(r"#\s*(?!noqa)\S")

@@ -1,6 +1,6 @@
 """Shells started as a new terminal starts them: an empty environment (``env -i``), a fresh
 ``HOME``, and on ``PATH`` only a folder holding ``rosx`` (as pipx's ``~/.local/bin``) in front of
-the system's folders, where Debian's ROS 1 has its own ``roscore``, ``rostopic``…"""
+the system's folders, where Debian's ROS 1 has its own ``roscore``, ``rostopic`` and the rest."""
 
 from __future__ import annotations
 

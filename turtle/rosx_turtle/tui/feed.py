@@ -1,9 +1,9 @@
-"""`Feed`: the latest value from a worker thread, handed to widgets through their message queues.
+r"""`Feed`: the latest value from a worker thread, handed to widgets through their message queues.
 
 The simulator ticks on its own thread 62.5 times a second; the graph watcher polls on another.
 Neither touches a widget: they `offer` values to a feed, and the feed posts a small `FeedReady`
 message to each listening widget (``post_message`` is thread-safe) unless one is already
-waiting. A widget that falls behind skips stale values instead of queueing them: it `take`\\s
+waiting. A widget that falls behind skips stale values instead of queueing them: it `take`\s
 the newest one, and never more than one message per listener is in flight.
 """
 

@@ -1,4 +1,4 @@
-"""`GraphTable`: a table of the ROS graph that refills itself from a `Feed` of `Graph`\\ s."""
+r"""`GraphTable`: a table of the ROS graph that refills itself from a `Feed` of `Graph`\ s."""
 
 from __future__ import annotations
 
