@@ -273,6 +273,11 @@ class BridgeServer:
             writer.cancel()
             self.connections.discard(connection)
             await loop.run_in_executor(self._pool, self.graph.disconnect, connection)
+            for topic, count in sorted(connection.dropped.items()):
+                self.log(
+                    f"Client was sent {count} messages fewer on {topic}: it read slower than "
+                    "they came (its oldest were dropped)"
+                )
             self.log(f"Client disconnected. {len(self.connections)} clients total.")
 
 

@@ -31,7 +31,7 @@ def running(master: str) -> Iterator[Running]:
 
 #: The npm packages the JavaScript clients need: roslib (roslibjs), Lichtblick's own rosbridge
 #: client and message readers (its packages forget tslib), playwright-core for the browser
-#: page, and esbuild to bundle the page's script with roslib.
+#: page, esbuild to bundle the page's script with roslib, and Foxglove's WebSocket client.
 NPM_PACKAGES = (
     "roslib@2.1.0",
     "ws@8",
@@ -41,6 +41,7 @@ NPM_PACKAGES = (
     "tslib@2",
     "playwright-core@1",
     "esbuild@0.25",
+    "@foxglove/ws-protocol@0.8",
 )
 JS = Path(__file__).parent / "js"
 

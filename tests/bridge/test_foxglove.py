@@ -1,12 +1,14 @@
-"""The Foxglove WebSocket protocol: its core without sockets, then a client on the wire that
-sees the turtle's pose, drives it, calls ``/spawn`` and reads a parameter."""
+"""The Foxglove WebSocket protocol: its core without sockets, then clients on the wire that see
+the turtle's pose, drive it, call ``/spawn`` and read a parameter: one written here on
+`websockets`, and Foxglove's own (@foxglove/ws-protocol, in node, with Lichtblick's ROS 1
+message readers and writers)."""
 
 from __future__ import annotations
 
 import json
 import struct
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import Any
 
 import pytest
@@ -19,7 +21,7 @@ from rosx.bridge.outgoing import serialize
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx_turtle.node.turtlesim import TurtlesimNode
 from rosx_turtle.roscpp import NodeArgs
-from tests.support.bridge import start_bridge
+from tests.support.bridge import NodeScript, start_bridge
 
 Pose = get_message_class("turtlesim/Pose")
 Twist = get_message_class("geometry_msgs/Twist")
@@ -191,3 +193,20 @@ def test_a_client_sees_drives_and_calls(foxglove: tuple[Bridge, str]) -> None:
             "parameters": [{"name": "/turtlesim/background_b", "value": 255}],
             "id": "p",
         }
+
+
+def test_foxglove_s_own_client(
+    foxglove: tuple[Bridge, str], node_script: Callable[..., NodeScript]
+) -> None:
+    _, url = foxglove
+    client = node_script("foxglove_client.cjs", url)
+    assert client.step("capabilities") == ["clientPublish", "parameters", "services"]
+    assert client.step("schema") == {"encoding": "ros1", "schemaName": "turtlesim/Pose"}
+    assert client.step("spawned") == {"callId": 7, "name": "foxglove"}
+    assert client.step("parameters") == {
+        "id": "p",
+        "parameters": [{"name": "/turtlesim/background_b", "value": 255}],
+    }
+    assert client.step("turning") == 1.5
+    assert client.finish() == 0
+    assert "status" not in client.steps

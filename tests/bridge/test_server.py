@@ -138,14 +138,14 @@ def test_a_token_guards_the_bridge(master: str) -> None:
 
 
 def test_a_slow_client_loses_its_oldest_messages_not_the_others_time(master: str) -> None:
-    bridge, _ = start_bridge(master, rosapi=False)
+    bridge, lines = start_bridge(master, rosapi=False)
     try:
-        _slow_and_fast(bridge)
+        _slow_and_fast(bridge, lines)
     finally:
         bridge.shutdown("test over")
 
 
-def _slow_and_fast(bridge: Bridge) -> None:
+def _slow_and_fast(bridge: Bridge, lines: list[str]) -> None:
     from rosx.msg.codec.classes import get_message_class
     from rosx.node import Node
 
@@ -182,6 +182,15 @@ def _slow_and_fast(bridge: Bridge) -> None:
             assert got == sorted(got)
         finally:
             publisher.shutdown("test over")
+    dropped = slow_conn.dropped_total()
+    line = (
+        f"Client was sent {dropped} messages fewer on /bulk: it read slower than they came "
+        "(its oldest were dropped)"
+    )
+    deadline = time.monotonic() + 10
+    while line not in lines and time.monotonic() < deadline:
+        time.sleep(0.01)
+    assert line in lines
 
 
 def test_two_clients_cannot_publish_one_topic_with_two_types(running: Running) -> None:
