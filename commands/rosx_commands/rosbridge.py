@@ -9,6 +9,7 @@ The bridge itself is `rosx.bridge.app.Bridge`; this module parses and waits.
 
 from __future__ import annotations
 
+import os
 import threading
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
@@ -106,7 +107,10 @@ def _serve(settings: BridgeOptions, env: Environment) -> int:
         bridge.start()
     except OSError as exc:
         where = f"{settings.address}:{settings.port}"
-        env.err(f"Unable to start the bridge on {where}: {exc.strerror or exc}")
+        if settings.foxglove_port is not None:
+            where += f" and :{settings.foxglove_port}"
+        why = os.strerror(exc.errno).lower() if exc.errno else str(exc)
+        env.err(f"Unable to start the bridge on {where}: {why}")
         return 1
     stop = threading.Event()
     install_signal_handlers(lambda reason: stop.set())

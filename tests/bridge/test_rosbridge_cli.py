@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import re
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -108,3 +109,15 @@ def test_bad_options(argv: list[str], error: str) -> None:
     result = rosx("rosbridge", *argv)
     assert result.status == 2
     assert result.err.splitlines()[-1] == error
+
+
+def test_a_port_in_use_is_one_line(environ: dict[str, str]) -> None:
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        result = rosx("rosbridge", "--port", str(port), "--no-rosapi", environ=environ)
+    assert (result.status, result.err) == (
+        1,
+        f"Unable to start the bridge on 127.0.0.1:{port}: address already in use\n",
+    )
