@@ -52,14 +52,10 @@ class _Failed(Exception):  # noqa: N818 - a report, worded by rospack
 
 
 def _package_here(env: Environment) -> str | None:
-    from rosx.packages.manifest import ManifestError, read_manifest  # noqa: PLC0415 - the package index loads only when used
+    from rosx.packages.manifest import package_in  # noqa: PLC0415 - the package index loads only when used
     from rosx_commands.invocation import working_directory  # noqa: PLC0415 - this tool's parts load only when used
 
-    here = working_directory(env)
-    try:
-        return read_manifest(here).name if (here / "package.xml").is_file() else None
-    except ManifestError:
-        return None
+    return package_in(working_directory(env))
 
 
 def _provided(package: str) -> bool:

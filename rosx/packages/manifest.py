@@ -271,6 +271,16 @@ def check_manifest(manifest: Manifest) -> list[str]:
     return warnings
 
 
+def package_in(directory: Path) -> str | None:
+    """The name of the package whose folder ``directory`` is (its ``package.xml``), or None
+    when it is no package's, or its manifest cannot be read (what rospack and roswtf take
+    when run inside a package without naming one)."""
+    try:
+        return read_manifest(directory).name if (directory / "package.xml").is_file() else None
+    except ManifestError:
+        return None
+
+
 __all__ = [
     "DEPEND_TAGS",
     "MANIFEST",
@@ -279,6 +289,7 @@ __all__ = [
     "Person",
     "check_manifest",
     "name_warning",
+    "package_in",
     "parse_manifest",
     "read_manifest",
 ]
