@@ -32,7 +32,6 @@ _MODULES = (
 _SERVED_BY = {"handle_tracker_deleter": "status_tracker"}
 
 
-
 def _defer_to_next_actionlib() -> None:
     """Put the next ``actionlib`` on ``sys.path`` (not this folder's) in this one's place."""
     here = Path(__file__).resolve().parent.parent
