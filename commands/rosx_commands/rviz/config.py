@@ -86,8 +86,12 @@ class RvizConfig:
 def yaml() -> Any:
     """ruamel.yaml in round-trip mode, writing block style as rviz does."""
     from ruamel.yaml import YAML  # noqa: PLC0415 - loaded with a config
+    from ruamel.yaml.scanner import RoundTripScanner  # noqa: PLC0415 - loaded with a config
+
+    from rosx.msg.text.yamlload import depth_limited  # noqa: PLC0415 - loaded with a config
 
     loader = YAML(typ="rt")
+    loader.Scanner = depth_limited(RoundTripScanner)
     loader.default_flow_style = False
     loader.width = 4096
     return loader
@@ -123,6 +127,11 @@ def parse_config(text: str, name: str) -> RvizConfig:
         raise ConfigError(f"cannot load {name}{where}: {problem}") from None
     except YAMLError as error:
         raise ConfigError(f"cannot load {name}: {str(error).splitlines()[0]}") from None
+    except RecursionError:
+        raise ConfigError(f"cannot load {name}: nested too deeply") from None
+    except (ValueError, LookupError, TypeError, OverflowError) as error:
+        # ruamel's round-trip constructor fails so on some scalars (``-_``, ``._``).
+        raise ConfigError(f"cannot load {name}: invalid value ({error})") from None
     if not isinstance(document, dict) or not isinstance(
         document.get("Visualization Manager"), dict
     ):
@@ -231,7 +240,7 @@ def parse_color(value: Any, default: tuple[int, int, int]) -> tuple[int, int, in
     parts = [part.strip() for part in value.split(";")]
     try:
         red, green, blue = (max(0, min(255, int(float(part)))) for part in parts[:3])
-    except ValueError:
+    except (ValueError, OverflowError):  # OverflowError: an infinite component
         return default
     return (red, green, blue)
 

@@ -82,6 +82,33 @@ _RESOLVERS = (
 
 
 @cache
+def depth_limited(scanner: type) -> type:
+    """A subclass of the ruamel.yaml scanner class ``scanner`` that refuses collections nested
+    more than `MAX_DEPTH` deep (a `ScannerError`, before the square-of-the-depth time)."""
+    from ruamel.yaml.scanner import ScannerError  # noqa: PLC0415 - ruamel loads lazily
+
+    class DepthLimited(scanner):  # type: ignore[misc]
+        def fetch_flow_collection_start(self, token_class: Any, to_push: str) -> None:
+            self._check_depth()
+            super().fetch_flow_collection_start(token_class, to_push)
+
+        def add_indent(self, column: int) -> bool:
+            self._check_depth()
+            return bool(super().add_indent(column))
+
+        def _check_depth(self) -> None:
+            if self.flow_level + len(self.indents) >= MAX_DEPTH:
+                raise ScannerError(
+                    None,
+                    None,
+                    f"collections nested more than {MAX_DEPTH} deep",
+                    self.reader.get_mark(),
+                )
+
+    return DepthLimited
+
+
+@cache
 def _loader_factory() -> Any:
     # ruamel.yaml takes 10-20 ms to import: only commands that read YAML pay for it.
     from ruamel.yaml import YAML  # noqa: PLC0415 - ruamel loads only on this path
@@ -89,7 +116,7 @@ def _loader_factory() -> Any:
     from ruamel.yaml.constructor import SafeConstructor  # noqa: PLC0415 - ruamel loads only on this path
     from ruamel.yaml.events import AliasEvent  # noqa: PLC0415 - ruamel loads only on this path
     from ruamel.yaml.resolver import VersionedResolver  # noqa: PLC0415 - ruamel loads only on this path
-    from ruamel.yaml.scanner import Scanner, ScannerError  # noqa: PLC0415 - ruamel loads only on this path
+    from ruamel.yaml.scanner import Scanner  # noqa: PLC0415 - ruamel loads only on this path
     from ruamel.yaml.tokens import ScalarToken  # noqa: PLC0415 - ruamel loads only on this path
 
     entries: dict[str | None, list[tuple[str, re.Pattern[str]]]] = {}
@@ -124,26 +151,9 @@ def _loader_factory() -> Any:
         "tag:yaml.org,2002:timestamp", PyYAMLConstructor.construct_yaml_timestamp
     )
 
-    class PyYAMLScanner(Scanner):
+    class PyYAMLScanner(depth_limited(Scanner)):  # type: ignore[misc]
         """Plain scalars end where PyYAML ends them: in flow context, ``a:{`` is ``a`` + ``:``.
         Collections nest at most `MAX_DEPTH` deep."""
-
-        def fetch_flow_collection_start(self, token_class: Any, to_push: str) -> None:
-            self._check_depth(self.flow_level + len(self.indents))
-            super().fetch_flow_collection_start(token_class, to_push)
-
-        def add_indent(self, column: int) -> bool:
-            self._check_depth(self.flow_level + len(self.indents))
-            return bool(super().add_indent(column))
-
-        def _check_depth(self, depth: int) -> None:
-            if depth >= MAX_DEPTH:
-                raise ScannerError(
-                    None,
-                    None,
-                    f"collections nested more than {MAX_DEPTH} deep",
-                    self.reader.get_mark(),
-                )
 
         def scan_plain(self) -> Any:
             reader = self.reader
