@@ -66,6 +66,11 @@ def command_error(error: BaseException, env: Environment, status: int) -> Comman
 
         if isinstance(error, ServiceError):
             return CommandError(f"ERROR: {error}", status)
+    if "rosx.bag.errors" in loaded:
+        from rosx.bag.errors import BagError  # noqa: PLC0415 - bag code loads only for bags
+
+        if isinstance(error, BagError):  # a damaged chunk met while reading messages
+            return CommandError(f"ERROR: {error}", status)
     if "rosx.graph.describe" in loaded:
         from rosx.graph.describe import NodeContactError, UnknownTopicError  # noqa: PLC0415 - graph code loads only when asked for
 

@@ -199,8 +199,12 @@ class BagReader:
         self.file.seek(header.data_pos + header.data_size)
         entries: dict[int, list[tuple[int, int]]] = {}
         for _ in range(len(self.chunks[index].counts)):
-            fields, data = self._read_record(rec.OP_INDEX_DATA)
+            # ``count`` entries follow the header, whatever its data length says (as ROS 1
+            # reads them: a damaged length loses nothing).
+            fields, _ = self._read_record_header(rec.OP_INDEX_DATA)
             count = rec.field_u32(fields, "count")
+            self._check_within(count * rec.INDEX_ENTRY.size)
+            data = self.file.read(count * rec.INDEX_ENTRY.size)
             entries[rec.field_u32(fields, "conn")] = rec.parse_index(data, count)
         return entries
 

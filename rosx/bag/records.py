@@ -321,8 +321,8 @@ def decompress(compression: str, data: bytes, size: int) -> bytes:
             or bytes that do not decompress to ``size``.
     """
     if compression == "none":
-        out = data
-    elif compression in ("bz2", "lz4"):
+        return data  # the stored bytes are the records, whatever the size field says (ROS 1)
+    if compression in ("bz2", "lz4"):
         if size > CHUNK_FLOOR and size > MAX_RATIO * len(data):
             raise BagFormatError(
                 f"Chunk says it holds {size} bytes in {len(data)} bytes of {compression}: "

@@ -234,11 +234,14 @@ def reindex(argv: list[str], env: Environment) -> int:
 
     def operation(source: str, out: str) -> None:
         report = rebuild(out)
+        said = (
+            f"{out}: kept {_count(report.messages, 'message')} in {_count(report.chunks, 'chunk')}"
+        )
         if report.dropped_bytes:
-            env.err(
-                f"{out}: dropped {report.dropped_bytes} bytes after the last complete chunk "
-                f"(kept {report.messages} messages in {report.chunks} chunks)"
-            )
+            said += f"; dropped {report.dropped_bytes} bytes, damaged or cut short"
+        if report.dropped_messages:
+            said += f"; left out {_count(report.dropped_messages, 'damaged message')}"
+        env.err(said)
 
     def check(path: str) -> bool:
         problem = bag_file_problem(path)
@@ -247,6 +250,10 @@ def reindex(argv: list[str], env: Environment) -> int:
         return problem is None
 
     return _in_place(env, args, options, operation, copy_first=True, check=check, measure=data_size)
+
+
+def _count(number: int, thing: str) -> str:
+    return f"{number} {thing}{'' if number == 1 else 's'}"
 
 
 def filter_bag(argv: list[str], env: Environment) -> int:
@@ -373,8 +380,12 @@ def check(argv: list[str], env: Environment) -> int:
         except Exception:  # unknown here: it plays with the definition the bag recorded
             return None
 
-    with bag:
-        changed = changed_types(bag, current_md5)
+    try:
+        with bag:
+            changed = changed_types(bag, current_md5)
+    except BagError as exc:  # a damaged chunk: what ROS 1 calls an unindexed bag
+        env.err(f"ERROR reading {args[0]}: {exc}.  Run rosbag reindex.")
+        return ExitStatus.ERROR
     if not changed:
         env.out("Bag file does not need any migrations.")
         return ExitStatus.OK
