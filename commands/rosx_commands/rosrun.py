@@ -150,7 +150,7 @@ def plan(argv: list[str], env: Environment) -> Launch | Callable[[], int] | int:
         return ExitStatus.ERROR
     index = PackageIndex.from_environ(env.environ)
     bundled = bundled_program(package, executable)
-    if bundled is not None and not overlays(index.path_packages.get(package), executable):
+    if bundled is not None and not overlays(index.on_path(package), executable):
         if debug:
             env.out(f"[rosrun] Looking in rospack dir: {bundled.parent}")
         return _start(bundled, prefix, rest, debug, env)

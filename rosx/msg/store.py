@@ -85,12 +85,12 @@ class TypeStore:
 
     def package_dir(self, package: str) -> Path | None:
         """The directory of ``package`` when its definitions live in files."""
-        root = self.path_packages.get(package)
+        root = self._index.on_path(package)
         return self._bundled_packages.get(package) if root is None else root
 
     def _directories(self, package: str, kind: str) -> list[Path]:
         """Where files of ``package`` may live, the package path's first."""
-        roots = (self.path_packages.get(package), self._bundled_packages.get(package))
+        roots = (self._index.on_path(package), self._bundled_packages.get(package))
         return [root / kind for root in roots if root is not None]
 
     @property
@@ -103,8 +103,8 @@ class TypeStore:
 
     def _has_package(self, package: str) -> bool:
         return (
-            package in self.path_packages
-            or package in self._bundled_packages
+            package in self._bundled_packages
+            or self._index.on_path(package) is not None
             or any(name.partition("/")[0] == package for name in standard_types())
         )
 

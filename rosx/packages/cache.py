@@ -11,6 +11,12 @@ cost of one ``stat`` per folder the crawl listed (no listing, no manifest read):
   unlike a modification time nothing sets it back;
 - each ``package.xml`` must have its change time and size (a package renamed in its manifest).
 
+A package that is found needs less: nothing the crawl met after it can change where it is
+(the first of a name wins), so a lookup checks only what came before it in the crawl's
+order, its manifest included (`KeptCrawl.find`): a package of the user's workspace, in front
+of the path, is found with a few hundred ``stat`` calls, where the whole of Debian's
+``/usr/share`` takes thousands; and what one question checked, the next does not check again.
+
 Times a file system may not yet have moved on from are not trusted: a crawl that saw a time less
 than `RACY_SECONDS` old (or in the future) is not written, and the next command crawls again,
 as git treats its index's "racy" entries. A cache that cannot be read or written is no cache:
@@ -33,7 +39,7 @@ from rosx.packages.crawl import Seen, find_packages
 
 #: Changes younger than this may not have moved a file system's times yet (FAT: 2 s).
 RACY_SECONDS = 2.0
-_VERSION = 1
+_VERSION = 2
 
 
 def cache_file(folder: Path, roots: list[Path]) -> Path:
@@ -42,30 +48,81 @@ def cache_file(folder: Path, roots: list[Path]) -> Path:
     return folder / f"rosx_packages_{key:08x}"
 
 
+class KeptCrawl:
+    """A process's view of the crawl kept for one package path: what it has checked of it so
+    far (in the crawl's order), so that each question checks only what no earlier one did."""
+
+    def __init__(self, roots: list[Path], folder: Path | None) -> None:
+        self.roots = roots
+        self.folder = folder
+        self._kept = _load(cache_file(folder, roots), roots) if folder and roots else None
+        self._directories_checked = 0
+        self._manifests_checked = 0
+
+    def find(self, name: str) -> Path | None:
+        """Where package ``name`` is, if the cache has it and nothing before it in the crawl's
+        order has changed; None when that cannot tell (`packages` then answers)."""
+        if self._kept is None:
+            return None
+        found = self._kept[0].get(name)
+        if found is None:
+            return None
+        directory, listed, manifest = found
+        return Path(directory) if self._unchanged(listed, manifest + 1) else None
+
+    def packages(self) -> dict[str, Path]:
+        """Every package on the path, by name: the kept crawl while all of it is unchanged,
+        else a new crawl (kept in turn)."""
+        if self._kept is not None:
+            packages, directories, manifests = self._kept
+            if self._unchanged(len(directories), len(manifests)):
+                return {name: Path(directory) for name, (directory, _, _) in packages.items()}
+        if self.folder is None or not self.roots:
+            return find_packages(self.roots)
+        seen = Seen()
+        started = time.time_ns()
+        found = find_packages(self.roots, seen)
+        _write(cache_file(self.folder, self.roots), self.roots, found, seen, started)
+        return found
+
+    def _unchanged(self, directories: int, manifests: int) -> bool:
+        """Whether the first ``directories`` folders and ``manifests`` manifests of the kept
+        crawl are as they were (those checked before are not checked again)."""
+        assert self._kept is not None
+        _, kept_directories, kept_manifests = self._kept
+        if not _unchanged(
+            kept_directories[self._directories_checked : directories],
+            kept_manifests[self._manifests_checked : manifests],
+        ):
+            self._kept = None  # stale: every answer comes from a new crawl
+            return False
+        self._directories_checked = max(self._directories_checked, directories)
+        self._manifests_checked = max(self._manifests_checked, manifests)
+        return True
+
+
 def cached_packages(roots: list[Path], folder: Path | None) -> dict[str, Path]:
     """The packages on ``roots`` by name, as `find_packages` finds them: from the cache in
     ``folder`` while the tree is unchanged, else crawled (and the cache written again)."""
-    if folder is None or not roots:
-        return find_packages(roots)
-    path = cache_file(folder, roots)
-    kept = _read(path, roots)
-    if kept is not None:
-        return kept
-    seen = Seen()
-    started = time.time_ns()
-    found = find_packages(roots, seen)
-    _write(path, roots, found, seen, started)
-    return found
+    return KeptCrawl(roots, folder).packages()
 
 
-def _read(path: Path, roots: list[Path]) -> dict[str, Path] | None:
+_Kept = tuple[dict[str, tuple[str, int, int]], list[tuple[str, int]], list[tuple[str, int, int]]]
+
+
+def _load(path: Path, roots: list[Path]) -> _Kept | None:
     try:
         data = marshal.loads(path.read_bytes())
         version, kept_roots, packages, directories, manifests = data
+        if version != _VERSION or kept_roots != [str(r) for r in roots]:
+            return None
+        by_name = {name: (directory, listed, at) for name, directory, listed, at in packages}
     except (OSError, EOFError, ValueError, TypeError):
         return None
-    if version != _VERSION or kept_roots != [str(r) for r in roots]:
-        return None
+    return by_name, directories, manifests
+
+
+def _unchanged(directories: list[tuple[str, int]], manifests: list[tuple[str, int, int]]) -> bool:
     stat = os.stat
     for directory, changed in directories:
         try:
@@ -73,15 +130,15 @@ def _read(path: Path, roots: list[Path]) -> dict[str, Path] | None:
         except OSError:  # a root that was not there (-1) may still not be
             now = -1
         if now != changed:
-            return None
+            return False
     for manifest, changed, size in manifests:
         try:
             now_stat = stat(manifest)
         except OSError:
-            return None
+            return False
         if now_stat.st_ctime_ns != changed or now_stat.st_size != size:
-            return None
-    return {name: Path(directory) for name, directory in packages}
+            return False
+    return True
 
 
 def _write(path: Path, roots: list[Path], found: dict[str, Path], seen: Seen, started: int) -> None:
@@ -92,7 +149,7 @@ def _write(path: Path, roots: list[Path], found: dict[str, Path], seen: Seen, st
     data = (
         _VERSION,
         [str(r) for r in roots],
-        [(name, str(directory)) for name, directory in found.items()],
+        [(name, str(directory), *seen.positions[name]) for name, directory in found.items()],
         seen.directories,
         seen.manifests,
     )
@@ -106,4 +163,4 @@ def _write(path: Path, roots: list[Path], found: dict[str, Path], seen: Seen, st
             partial.unlink()
 
 
-__all__ = ["RACY_SECONDS", "cache_file", "cached_packages"]
+__all__ = ["RACY_SECONDS", "KeptCrawl", "cache_file", "cached_packages"]

@@ -56,6 +56,9 @@ class Seen:
         self.directories: list[tuple[str, int]] = []
         #: ``(path of package.xml, st_ctime_ns, st_size)``.
         self.manifests: list[tuple[str, int, int]] = []
+        #: Each package found, by name: how many directories had been listed before it, and
+        #: where its manifest is in `manifests` (what came before it in the crawl's order).
+        self.positions: dict[str, tuple[int, int]] = {}
 
 
 def find_packages(roots: list[Path], seen: Seen | None = None) -> dict[str, Path]:
@@ -95,6 +98,8 @@ def _crawl(directory: str, found: dict[str, Path], seen: Seen | None) -> None:
         name = package_name(Path(manifest.path))
         if name and name not in found:
             found[name] = Path(directory)
+            if seen is not None:
+                seen.positions[name] = (len(seen.directories), len(seen.manifests) - 1)
         return
     if "CATKIN_IGNORE" in entries or "rospack_nosubdirs" in entries:
         return

@@ -27,6 +27,7 @@ if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
     from pathlib import Path
 
+    from rosx.packages.cache import KeptCrawl
     from rosx.packages.manifest import Manifest
 
 
@@ -81,11 +82,15 @@ class PackageIndex:
         )
 
     @cached_property
+    def _kept(self) -> KeptCrawl:
+        from rosx.packages.cache import KeptCrawl  # noqa: PLC0415 - crawling or not
+
+        return KeptCrawl(self.package_path, self._cache_folder)
+
+    @cached_property
     def path_packages(self) -> dict[str, Path]:
         """The packages found on the package path alone, by name."""
-        from rosx.packages.cache import cached_packages  # noqa: PLC0415 - crawling or not
-
-        return cached_packages(self.package_path, self._cache_folder)
+        return self._kept.packages()
 
     @cached_property
     def packages(self) -> dict[str, Path]:
@@ -95,9 +100,19 @@ class PackageIndex:
             found.setdefault(name, directory)
         return dict(sorted(found.items()))
 
+    def on_path(self, name: str) -> Path | None:
+        """The directory of package ``name`` on the package path alone, if it is there: asked
+        of the cache for this one package while the whole crawl is not needed
+        (`rosx.packages.cache.KeptCrawl.find`: what precedes it on the path checked only)."""
+        if "path_packages" not in self.__dict__:
+            found = self._kept.find(name)
+            if found is not None:
+                return found
+        return self.path_packages.get(name)
+
     def find(self, name: str) -> Path:
         """The directory of package ``name``; `PackageNotFoundError` if it has none."""
-        directory = self.packages.get(name)
+        directory = self.on_path(name) or bundled_packages().get(name)
         if directory is None:
             raise PackageNotFoundError(name)
         return directory
@@ -106,12 +121,12 @@ class PackageIndex:
         """Where package ``name``'s files are looked for: the package path's directory, then
         rosx's own of that name. A package on the path shadows rosx's only for the files it
         has (a message-only ``turtlesim`` leaves rosx's launch files reachable)."""
-        found = [d for d in (self.path_packages.get(name), bundled_packages().get(name)) if d]
+        found = [d for d in (self.on_path(name), bundled_packages().get(name)) if d]
         return list(dict.fromkeys(found))
 
     def is_known(self, name: str) -> bool:
         """Whether ``name`` is a package: with a directory, or one rosx provides."""
-        if name in self.packages:
+        if self.on_path(name) is not None or name in bundled_packages():
             return True
         return self._provides is not None and self._provides(name)
 
@@ -119,7 +134,7 @@ class PackageIndex:
         """The manifest of ``name``; None for a package rosx provides without one."""
         cached = self._manifests.get(name)
         if cached is None:
-            directory = self.packages.get(name)
+            directory = self.on_path(name) or bundled_packages().get(name)
             if directory is None:
                 if self.is_known(name):
                     return None

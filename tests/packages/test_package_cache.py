@@ -131,3 +131,34 @@ def test_rospack_keeps_its_crawl_in_ros_home(tree: tuple[list[Path], Path]) -> N
     assert rosx("rospack", "find", "new_pkg", environ=env).out == f"{roots[0]}/new_pkg\n"
     index = PackageIndex.from_environ(env)
     assert index.path_packages == find_packages(roots)
+
+
+def index(roots: list[Path], home: Path) -> PackageIndex:
+    """A new process's index of ``roots`` (its crawl kept in ``home``)."""
+    return PackageIndex(roots, cache_folder=home)
+
+
+def test_one_package_is_found_checking_what_comes_before_it(
+    tree: tuple[list[Path], Path],
+) -> None:
+    """The first of a name wins: what the crawl met after a package cannot move it, what it
+    met before can (a package of that name made in front of it, another renamed to it)."""
+    roots, home = tree
+    src, system, _ = roots
+    kept(roots, home)
+    package(system / "zz_later", "late_pkg")  # after roscpp and lab2 in the crawl's order
+    assert index(roots, home).find("lab2") == src / "lab2"
+    found = index(roots, home)
+    assert found.find("roscpp") == system / "roscpp"
+    assert (
+        "late_pkg" in found.packages and found.find("late_pkg") == system / "zz_later" / "late_pkg"
+    )
+    kept(roots, home)
+    package(src, "roscpp")  # in front of the system's
+    assert index(roots, home).find("roscpp") == src / "roscpp"
+    kept(roots, home)
+    manifest = src / "group" / "deep_pkg" / "package.xml"
+    manifest.write_text(manifest.read_text().replace("deep_pkg", "lab2"))
+    assert index(roots, home).find("lab2") == src / "group" / "deep_pkg"  # "group" < "lab2"
+    kept(roots, home)
+    assert index(roots, home).directories("lab2") == [src / "group" / "deep_pkg"]
