@@ -13,8 +13,8 @@ from pathlib import Path
 
 import pytest
 
-from rosx.bag import SHIM_DIR as BAG_SHIM_DIR
 from rosx.client.script import SHIM_DIR
+from rosx_commands.scripts import shim_dirs
 from tests.support.cli import clean_environ
 from tests.support.ros1 import needs_ros1, ros1_python_with_path
 from tests.support.scripts import json_of, run_script
@@ -193,18 +193,40 @@ def test_a_python_without_rosx_is_told_what_to_do(tmp_path: Path) -> None:
     assert "rosx rosrun PACKAGE SCRIPT" in done.stderr
 
 
+#: Each shim rosx has, and a name its ROS 1 module has (``module.name`` when a submodule holds it).
+ROS1_NAMES = {
+    "actionlib": "SimpleActionClient",
+    "genpy": "Message",
+    "rosbag": "Bag",
+    "rosgraph": "Master",
+    "roslib": "load_manifest",
+    "rospkg": "RosPack",
+    "rospy": "init_node",
+    "tf": "transformations.quaternion_from_euler",
+    "tf2_geometry_msgs": "do_transform_point",
+    "tf2_py": "BufferCore",
+    "tf2_ros": "Buffer",
+}
+
+
+def test_the_ros1_test_knows_every_shim() -> None:
+    shims = {p.name for d in shim_dirs() for p in d.iterdir() if (p / "__init__.py").is_file()}
+    assert shims == set(ROS1_NAMES)
+
+
 @needs_ros1
-def test_ros1s_python_keeps_ros1s_rospy_with_the_shim_on_its_path(tmp_path: Path) -> None:
-    shims = [SHIM_DIR, BAG_SHIM_DIR]
-    code = "import rospy, rospy.exceptions, rosbag; print(rospy.__file__)"
-    done = ros1_python_with_path(code, shims, tmp_path)
+@pytest.mark.parametrize("name", sorted(ROS1_NAMES))
+def test_ros1s_python_gets_ros1s_module_with_every_shim_folder_on_its_path(
+    tmp_path: Path, name: str
+) -> None:
+    # rosx's shim folders are on PYTHONPATH in a shell that sourced a workspace; ROS 1's Python
+    # there must get ROS 1's module, not loop from one of rosx's shim folders to the next.
+    submodule, _, attribute = ROS1_NAMES[name].rpartition(".")
+    module = f"{name}.{submodule}" if submodule else name
+    code = f"import {module}; print({name}.__file__); {module}.{attribute}"
+    done = ros1_python_with_path(code, list(shim_dirs()), tmp_path)
     assert done.returncode == 0, done.stderr
-    assert done.stdout.strip() == "/usr/lib/python3/dist-packages/rospy/__init__.py"
-    rosbag = ros1_python_with_path("import rosbag; print(rosbag.__file__)", shims, tmp_path)
-    assert rosbag.stdout.strip() == "/usr/lib/python3/dist-packages/rosbag/__init__.py"
-    for name in ("roslib", "rospkg", "genpy"):
-        other = ros1_python_with_path(f"import {name}; print({name}.__file__)", shims, tmp_path)
-        assert other.stdout.strip() == f"/usr/lib/python3/dist-packages/{name}/__init__.py"
+    assert done.stdout == f"/usr/lib/python3/dist-packages/{name}/__init__.py\n"
 
 
 @pytest.mark.parametrize("module", ["rospy.exceptions"])

@@ -5,16 +5,14 @@ is on ``sys.path`` only for the scripts rosx runs. ROS 1's module paths are rosx
 (``actionlib.action_client`` is `rosx.actionlib.action_client` …), and the package has the
 names ROS 1's ``actionlib/__init__.py`` gathers from them. ``actionlib.msg`` (TestAction …)
 comes from the type store, as every ``<package>.msg`` does. A Python that cannot import rosx
-gets the next ``actionlib`` on its path instead.
+gets the next ``actionlib`` on its path instead (``_rosx_shim``, in the client layer's shim
+directory).
 """
 
 from __future__ import annotations
 
 import importlib
-import importlib.machinery
-import importlib.util
 import sys
-from pathlib import Path
 
 #: ROS 1's modules of actionlib, each served by rosx's module of the same name.
 _MODULES = (
@@ -32,26 +30,13 @@ _MODULES = (
 _SERVED_BY = {"handle_tracker_deleter": "status_tracker"}
 
 
-def _defer_to_next_actionlib() -> None:
-    """Put the next ``actionlib`` on ``sys.path`` (not this folder's) in this one's place."""
-    here = Path(__file__).resolve().parent.parent
-    path = [p for p in sys.path if Path(p or ".").resolve() != here]
-    spec = importlib.machinery.PathFinder.find_spec("actionlib", path)
-    if spec is None or spec.loader is None:
-        raise ImportError(
-            "this actionlib is rosx's, and this Python cannot import rosx "
-            f"({sys.executable}); run the script with `rosx rosrun PACKAGE SCRIPT`"
-        )
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["actionlib"] = module
-    spec.loader.exec_module(module)
-
-
 try:
     import rosx.actionlib  # noqa: F401 - whether this Python has rosx
     from rosx.client.modules import install as _install
 except ImportError:
-    _defer_to_next_actionlib()
+    from _rosx_shim import load_next  # type: ignore[import-not-found]
+
+    load_next("actionlib")
 else:
     _install()
     for _name in _MODULES:
