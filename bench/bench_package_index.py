@@ -32,22 +32,11 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
 from bench import interpreter
 from bench.interpreter import ROS1_PYTHON
+from tests.support.packages import package
 from tests.support.ros1 import ros1_available, ros1_environ
 
-MANIFEST = """\
-<?xml version="1.0"?>
-<package format="2">
-  <name>{name}</name>
-  <version>0.1.0</version>
-  <description>The {name} package</description>
-  <maintainer email="student@example.com">student</maintainer>
-  <license>BSD</license>
-  <buildtool_depend>catkin</buildtool_depend>
-  <depend>rospy</depend>
-  <depend>std_msgs</depend>
-  <depend>geometry_msgs</depend>
-</package>
-"""
+#: What each package depends on (a rospy package's usual list).
+DEPENDS = ("rospy", "std_msgs", "geometry_msgs")
 
 #: How long ago the generated files were made (a fresh file's time is not trusted by rosx's
 #: cache for 2 s, as git's index does not trust one; a real workspace is older).
@@ -59,13 +48,12 @@ def workspace(root: Path, count: int) -> Path:
     src = root / "src"
     for number in range(count):
         name = f"pkg_{number:03d}"
-        package = src / name
+        made = package(src, name, *DEPENDS)
         for folder in ("msg", "scripts", "launch", "src"):
-            (package / folder).mkdir(parents=True)
-        (package / "package.xml").write_text(MANIFEST.format(name=name))
-        (package / "CMakeLists.txt").write_text(f"project({name})\n")
-        (package / "msg" / f"Reading{number:03d}.msg").write_text("float64 value\n")
-        (package / "scripts" / "node.py").write_text("import rospy\n")
+            (made / folder).mkdir()
+        (made / "CMakeLists.txt").write_text(f"project({name})\n")
+        (made / "msg" / f"Reading{number:03d}.msg").write_text("float64 value\n")
+        (made / "scripts" / "node.py").write_text("import rospy\n")
     age(root)
     return src
 
@@ -163,9 +151,7 @@ def fresh(src: Path, env: dict[str, str], rosx: str) -> None:
     # Both caches fresh just before the change, as in a session that ran a command a moment ago.
     for argv in (["/usr/bin/rospack", "list-names"], [rosx, "rospack", "list-names"]):
         subprocess.run(argv, env=env, capture_output=True, check=True)
-    made = src / "made_just_now"
-    made.mkdir()
-    (made / "package.xml").write_text(MANIFEST.format(name="made_just_now"))
+    package(src, "made_just_now", *DEPENDS)
     shutil.rmtree(src / "pkg_000")
 
     def answer(argv: list[str]) -> tuple[str, float]:
