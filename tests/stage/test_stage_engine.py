@@ -7,7 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from rosx_turtle.stage.engine.grid import distance_lower_bound, rasterise
+from rosx_turtle.stage.engine.grid import Grid, distance_transform, rasterise
+from rosx_turtle.stage.engine.laser import cast
 from rosx_turtle.stage.engine.simulation import StageSim
 from rosx_turtle.stage.world.model import build
 from rosx_turtle.stage.world.worldfile import parse
@@ -123,12 +124,54 @@ def test_odometry_follows_stage_localization() -> None:
     assert report.odom[0] == pytest.approx([0.1, 0.0, 0.0])
 
 
-def test_the_distance_bound_never_exceeds_the_euclidean_distance() -> None:
+@pytest.mark.parametrize(
+    ("shape", "density"), [((40, 50), 0.02), ((30, 80), 0.5), ((60, 60), 0.001), ((1, 9), 0.2)]
+)
+def test_the_distance_transform_is_exact(shape: tuple[int, int], density: float) -> None:
     rng = np.random.default_rng(3)
-    seen = rng.random((40, 50)) < 0.02
-    bound = distance_lower_bound(seen)
+    seen = rng.random(shape) < density
+    seen[0, 0] = True
+    distance = distance_transform(seen)
     rows, cols = np.nonzero(seen)
-    yy, xx = np.mgrid[0:40, 0:50]
+    yy, xx = np.mgrid[0 : shape[0], 0 : shape[1]]
     exact = np.sqrt((yy[..., None] - rows) ** 2 + (xx[..., None] - cols) ** 2).min(axis=2)
-    assert np.all(bound <= exact + 1e-5)
-    assert np.all(bound >= exact / math.sqrt(2) - 1e-5)
+    assert np.abs(distance - exact).max() < 1e-4
+
+
+def first_cell_on_ray(solid: np.ndarray, res: float, x: float, y: float, angle: float) -> float:
+    """Where a ray from (x, y) (the grid's corner at 0, 0) enters its first solid cell, found
+    by visiting the cells it crosses one by one; inf for none."""
+    rows, cols = solid.shape
+    dx, dy = math.cos(angle), math.sin(angle)
+    col, row = math.floor(x / res), math.floor(y / res)
+    step_x, step_y = (1 if dx > 0 else -1), (1 if dy > 0 else -1)
+    next_x = ((col + (dx > 0)) * res - x) / dx if dx else math.inf
+    next_y = ((row + (dy > 0)) * res - y) / dy if dy else math.inf
+    while 0 <= row < rows and 0 <= col < cols:
+        if next_x < next_y:
+            t, col, next_x = next_x, col + step_x, next_x + res / abs(dx)
+        else:
+            t, row, next_y = next_y, row + step_y, next_y + res / abs(dy)
+        if 0 <= row < rows and 0 <= col < cols and solid[row, col]:
+            return t
+    return math.inf
+
+
+def test_every_beam_reads_where_it_enters_its_first_wall_cell() -> None:
+    """Rays that graze walls, pass by corners or run along a cell's edges read the distance at
+    which they enter the first cell they cross, as a cell-by-cell walk finds it."""
+    rng = np.random.default_rng(7)
+    solid = rng.random((60, 80)) < 0.03
+    solid[[0, -1], :] = solid[:, [0, -1]] = True
+    grid = Grid(solid, solid.astype(np.float32), (0.0, 0.0), 0.05)
+    free_rows, free_cols = np.nonzero(~solid)
+    pick = rng.integers(0, free_rows.size, 2000)
+    x = (free_cols[pick] + rng.random(2000)) * 0.05
+    y = (free_rows[pick] + rng.random(2000)) * 0.05
+    angle = rng.random(2000) * 2 * math.pi
+    angle[:200] = rng.choice([0.0, math.pi / 2, math.pi, -math.pi / 2, math.pi / 4], 200)
+    ranges, intensity = cast(grid, x, y, angle, np.full(2000, 3.0))
+    rays = zip(x.tolist(), y.tolist(), angle.tolist(), strict=True)
+    expected = [min(first_cell_on_ray(solid, 0.05, *ray), 3.0) for ray in rays]
+    assert ranges == pytest.approx(expected, abs=1e-6)
+    assert np.array_equal(intensity > 0, np.array(expected) < 3.0)

@@ -1,17 +1,24 @@
 """Lasers: every beam of every robot cast at once through the grid, then against the robots.
 
-`cast` marches all rays together by sphere tracing: each ray advances by the grid's clearance
-at its tip (a distance that cannot skip a wall), at least one cell, until its tip is in a
-cell a laser sees, leaves the grid or passes its range; rays that hit are then refined by a
-few bisection steps between the last free point and the hit. Rays that finish drop out of the
-working set, so the few that graze walls cost little. `cast_bodies` intersects the rays with
-oriented boxes (the robots' bodies) in one broadcast slab test.
+`cast` moves all rays together, in rounds, in the grid's cell units. Each round a ray takes
+the longer of two steps, both exact: the sphere-tracing step (the grid's clearance at its tip
+less the most a cell's extent can take off it, √2 cells: it can reach a wall's face but never
+pass it) and the step to the next cell boundary it crosses (it then stands in the next cell,
+which the next round looks at). So far from walls rays leap, and near them they go cell by
+cell, never cutting a cell's corner; the distance at which a ray first stands in a cell a
+laser sees is where it entered it. Rays that finish drop out of the working set (its arrays
+are the rows of one array, compacted in one call), so the few that run along walls, a cell a
+round, cost little.
+
+`cast_bodies` intersects the rays with oriented boxes (the robots' bodies) in one broadcast
+slab test, over only the rays whose angle can meet each box.
 
 A beam that hits nothing reads its ``range_max`` and intensity 0, as in Stage.
 """
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 import numpy as np  # noqa: TID253 - the engine is numpy through and through
@@ -22,17 +29,21 @@ if TYPE_CHECKING:
     from rosx_turtle.stage.engine.grid import Grid
 
     Floats = npt.NDArray[np.float64]
+    Indices = npt.NDArray[np.intp]
 
-#: Sphere-tracing rounds before the last rays are given up as misses (a safety net: far fewer
-#: are needed, since every round advances a ray by at least half a cell).
-MAX_ROUNDS = 4096
-#: Bisection steps that refine a hit (each halves the error left by the last step).
-REFINE_STEPS = 5
-#: The shortest step a ray takes, in cells: a ray grazing a wall creeps along it at this pace,
-#: and at most a corner of a cell can be cut by it (the hit is then refined by bisection).
-STEP_MIN_CELLS = 1.0
-#: A clearance is measured between cell centres: this many cells are kept as a margin.
-_MARGIN_CELLS = 1.5
+#: Rounds before the last rays are given up as misses (a safety net: every round moves a ray
+#: into the next cell at least).
+MAX_ROUNDS = 100_000
+#: What a cell's extent can take off a distance between centres, in cells: half a diagonal at
+#: each end.
+_MARGIN = math.sqrt(2.0)
+#: How far past a boundary a ray steps to stand in the next cell (cells; far below any
+#: distance a laser reports).
+_NUDGE = 1e-6
+#: A boundary index no ray reaches, for the axis a ray runs parallel to.
+_NEVER = 1e300
+# The rows of the working set's array.
+_T, _X, _Y, _UX, _UY, _END, _NEXT_X, _NEXT_Y, _INV_X, _INV_Y, _RAY = range(11)
 
 
 def cast(
@@ -50,58 +61,68 @@ def cast(
     count = x.shape[0]
     dx, dy = np.cos(angle), np.sin(angle)
     res = grid.resolution
-    clearance = grid.clearance
-    returns = grid.returns
-    rows, cols = grid.shape
     t_enter, t_exit = _grid_span(grid, x, y, dx, dy)
     ranges = range_max.astype(np.float64, copy=True)
     intensity = np.zeros(count, dtype=np.float32)
-    t = t_enter.copy()
-    last = t.copy()
-    active = np.flatnonzero((t_enter <= t_exit) & (t_enter < range_max))
-    step_min = STEP_MIN_CELLS * res
-    x0, y0 = grid.origin
+    live = np.flatnonzero((t_enter <= t_exit) & (t_enter < range_max))
+    if live.size == 0:
+        return ranges, intensity
+    end = np.minimum(range_max, t_exit)
+    state = _working_set(grid, x[live], y[live], dx[live], dy[live], t_enter[live], end[live])
+    state[_RAY] = live
+    returns = grid.returns.ravel()
+    clearance = grid.clearance.ravel()
+    cols = grid.shape[1]
     for _ in range(MAX_ROUNDS):
-        if active.size == 0:
+        t, px, py = state[_T], state[_X], state[_Y]
+        col = px.astype(np.intp)  # px >= 0 inside the grid: truncation is floor
+        row = py.astype(np.intp)
+        cell = row * cols + col
+        seen = returns.take(cell, mode="clip")  # rays past their end are dropped below
+        done = (seen > 0) | (t > state[_END])
+        if done.any():
+            hit = done & (t <= state[_END])
+            rays = state[_RAY, hit].astype(np.intp)
+            ranges[rays] = t[hit] * res
+            intensity[rays] = seen[hit]
+            keep = ~done
+            state = state[:, keep]
+            col, row, cell = col[keep], row[keep], cell[keep]
+            t, px, py = state[_T], state[_X], state[_Y]
+        if state.shape[1] == 0:
             break
-        ta = t[active]
-        px = x[active] + ta * dx[active]
-        py = y[active] + ta * dy[active]
-        col = np.floor((px - x0) / res).astype(np.intp)
-        row = np.floor((py - y0) / res).astype(np.intp)
-        inside = (row >= 0) & (row < rows) & (col >= 0) & (col < cols)
-        np.clip(row, 0, rows - 1, out=row)
-        np.clip(col, 0, cols - 1, out=col)
-        seen = returns[row, col]
-        hit = inside & (seen > 0)
-        gone = ~inside | (ta > range_max[active]) | (ta > t_exit[active])
-        if hit.any():
-            which = active[hit]
-            ranges[which] = ta[hit]
-            intensity[which] = seen[hit]
-        keep = ~(hit | gone)
-        active = active[keep]
-        step = np.maximum(clearance[row[keep], col[keep]] - _MARGIN_CELLS * res, step_min)
-        last[active] = t[active]
-        t[active] = ta[keep] + step
-    hits = intensity > 0
-    if hits.any():
-        ranges[hits] = _refine(grid, x[hits], y[hits], dx[hits], dy[hits], last[hits], ranges[hits])
+        with np.errstate(over="ignore", invalid="ignore"):
+            cross_x = (col + state[_NEXT_X] - px) * state[_INV_X]
+            cross_y = (row + state[_NEXT_Y] - py) * state[_INV_Y]
+        step = np.maximum(clearance.take(cell, mode="clip") - _MARGIN, np.minimum(cross_x, cross_y))
+        step += _NUDGE
+        t += step
+        px += step * state[_UX]
+        py += step * state[_UY]
     np.minimum(ranges, range_max, out=ranges)
     return ranges, intensity
 
 
-def _refine(
-    grid: Grid, x: Floats, y: Floats, dx: Floats, dy: Floats, free: Floats, hit: Floats
+def _working_set(
+    grid: Grid, x: Floats, y: Floats, ux: Floats, uy: Floats, start: Floats, end: Floats
 ) -> Floats:
-    """Bisect between a free point and a hit, ``REFINE_STEPS`` times; the hit end."""
-    for _ in range(REFINE_STEPS):
-        mid = 0.5 * (free + hit)
-        row, col, inside = grid.cells(x + mid * dx, y + mid * dy)
-        seen = inside & (grid.returns[row, col] > 0)
-        hit = np.where(seen, mid, hit)
-        free = np.where(seen, free, mid)
-    return hit
+    """The rows of the working set (in cells) for rays from (x, y) along (ux, uy), their tips
+    at ``start`` and their ends at ``end`` (metres); `_RAY` is left to the caller."""
+    res = grid.resolution
+    state = np.empty((11, x.shape[0]))
+    t = state[_T]
+    t[:] = start / res
+    state[_X] = (x - grid.origin[0]) / res + t * ux
+    state[_Y] = (y - grid.origin[1]) / res + t * uy
+    state[_UX], state[_UY] = ux, uy
+    state[_END] = end / res
+    with np.errstate(divide="ignore"):
+        # The next boundary is the cell's right (top) edge going up, its left (bottom) going
+        # down; none for the axis a ray runs parallel to.
+        for u, boundary, inverse in ((ux, _NEXT_X, _INV_X), (uy, _NEXT_Y, _INV_Y)):
+            state[boundary] = np.where(u > 0, 1.0, np.where(u < 0, 0.0, _NEVER))
+            state[inverse] = np.where(u == 0, _NEVER, 1.0 / np.where(u == 0, 1.0, u))
+    return state
 
 
 def _grid_span(grid: Grid, x: Floats, y: Floats, dx: Floats, dy: Floats) -> tuple[Floats, Floats]:
@@ -126,32 +147,47 @@ def _grid_span(grid: Grid, x: Floats, y: Floats, dx: Floats, dy: Floats) -> tupl
 
 
 def cast_bodies(
-    x: Floats,
-    y: Floats,
-    angle: Floats,
-    owner: npt.NDArray[np.intp],
+    origin: Floats,
+    first: Floats,
+    increment: Floats,
+    samples: Indices,
+    owner: Indices,
     centre: Floats,
     yaw: Floats,
     half: Floats,
-) -> tuple[Floats, npt.NDArray[np.intp]]:
-    """Distance along each ray to the nearest box it enters (inf for none) and that box,
-    skipping the box of its ``owner`` (an index past the last box: none); box ``k`` has centre
-    ``centre[k]`` (x, y), heading ``yaw[k]`` and half sizes ``half[k]``. Rays starting inside a
-    box other than their owner's read 0."""
-    if centre.shape[0] == 0:
-        return np.full(x.shape, np.inf), np.zeros(x.shape, dtype=np.intp)
-    cos, sin = np.cos(yaw)[None, :], np.sin(yaw)[None, :]
-    # Ray origins and directions in every box's frame: (rays, boxes).
-    rx = x[:, None] - centre[None, :, 0]
-    ry = y[:, None] - centre[None, :, 1]
-    ox = rx * cos + ry * sin
-    oy = -rx * sin + ry * cos
-    dx, dy = np.cos(angle)[:, None], np.sin(angle)[:, None]
-    ux = dx * cos + dy * sin
-    uy = -dx * sin + dy * cos
-    near = np.zeros_like(ox)
-    far = np.full_like(ox, np.inf)
-    for o, u, h in ((ox, ux, half[None, :, 0]), (oy, uy, half[None, :, 1])):
+) -> tuple[Floats, Indices]:
+    """Where the beams of fans meet oriented boxes: the distance along each beam to the nearest
+    box it enters (inf for none) and that box.
+
+    Fan ``f`` is ``samples[f]`` beams from ``origin[f]`` (x, y) at angles ``first[f] + i *
+    increment[f]``, skipping the box of its ``owner`` (an index past the last box: none); the
+    beams of all fans are returned one fan after another. Box ``k`` has centre ``centre[k]``,
+    heading ``yaw[k]`` and half sizes ``half[k]``. A beam starting inside a box reads 0.
+
+    Only the beams whose angle can meet a box's bounding circle are tested (a few per box
+    and fan), in one broadcast slab test.
+    """
+    total = int(samples.sum())
+    distance = np.full(total, np.inf)
+    nearest = np.zeros(total, dtype=np.intp)
+    boxes = centre.shape[0]
+    if boxes == 0 or total == 0:
+        return distance, nearest
+    fan, box, beam = _beams_near_boxes(origin, first, increment, samples, owner, centre, half)
+    if fan.size == 0:
+        return distance, nearest
+    angle = first[fan] + beam * increment[fan]
+    cos, sin = np.cos(yaw[box]), np.sin(yaw[box])
+    rx = origin[fan, 0] - centre[box, 0]
+    ry = origin[fan, 1] - centre[box, 1]
+    dx, dy = np.cos(angle), np.sin(angle)
+    # The beam's origin and direction in the box's frame, then the slab test on each axis.
+    near = np.zeros(fan.shape)
+    far = np.full(fan.shape, np.inf)
+    for o, u, h in (
+        (rx * cos + ry * sin, dx * cos + dy * sin, half[box, 0]),
+        (-rx * sin + ry * cos, -dx * sin + dy * cos, half[box, 1]),
+    ):
         with np.errstate(divide="ignore", invalid="ignore"):
             a = (-h - o) / u
             b = (h - o) / u
@@ -159,12 +195,64 @@ def cast_bodies(
         inside = np.where(np.abs(o) <= h, -np.inf, np.inf)
         near = np.maximum(near, np.where(parallel, inside, np.minimum(a, b)))
         far = np.minimum(far, np.where(parallel, np.inf, np.maximum(a, b)))
-    distance = np.where(near <= far, near, np.inf)
-    mine = owner[:, None] == np.arange(centre.shape[0])[None, :]
-    distance[mine] = np.inf
-    nearest = distance.argmin(axis=1)
-    result: Floats = distance[np.arange(x.shape[0]), nearest]
-    return result, nearest
+    met = near <= far
+    starts = np.cumsum(samples) - samples
+    ray, box, near = (starts[fan] + beam)[met], box[met], near[met]
+    if ray.size == 0:
+        return distance, nearest
+    order = np.lexsort((near, ray))  # by beam, then by distance: each beam's nearest first
+    ray, box, near = ray[order], box[order], near[order]
+    nearest_first = np.concatenate([[True], ray[1:] != ray[:-1]])
+    distance[ray[nearest_first]] = near[nearest_first]
+    nearest[ray[nearest_first]] = box[nearest_first]
+    return distance, nearest
 
 
-__all__ = ["MAX_ROUNDS", "REFINE_STEPS", "cast", "cast_bodies"]
+def _beams_near_boxes(
+    origin: Floats,
+    first: Floats,
+    increment: Floats,
+    samples: Indices,
+    owner: Indices,
+    centre: Floats,
+    half: Floats,
+) -> tuple[Indices, Indices, Indices]:
+    """(fan, box, beam) for every beam of every fan whose angle is within the angle a box's
+    bounding circle spans from the fan's origin (every beam when the origin is in the circle),
+    the owner's box left out."""
+    fans, boxes = origin.shape[0], centre.shape[0]
+    radius = np.hypot(half[:, 0], half[:, 1])[None, :]
+    rx = centre[None, :, 0] - origin[:, None, 0]
+    ry = centre[None, :, 1] - origin[:, None, 1]
+    reach = np.hypot(rx, ry)
+    within = reach <= radius
+    spread = np.arcsin(np.clip(radius / np.where(within, 1.0, reach), 0.0, 1.0))
+    bearing = np.mod(np.arctan2(ry, rx) - first[:, None], 2 * math.pi)
+    step = np.where(increment > 0, increment, 1.0)[:, None]
+    last = (samples - 1)[:, None]
+    los, his = [], []
+    # The circle's span, and the same a turn before and after (a fan may pass 0 or 2π).
+    for turn in (-2 * math.pi, 0.0, 2 * math.pi):
+        lo = np.ceil((bearing + turn - spread) / step)
+        hi = np.floor((bearing + turn + spread) / step)
+        if turn == 0.0:
+            lo, hi = np.where(within, 0, lo), np.where(within, last, hi)
+        else:
+            hi = np.where(within, -1, hi)
+        los.append(np.maximum(lo, 0))
+        his.append(np.minimum(hi, last))
+    lo = np.stack(los).astype(np.intp)
+    hi = np.stack(his).astype(np.intp)
+    mine = owner[:, None] == np.arange(boxes)[None, :]
+    counts = np.where(mine[None], 0, np.maximum(hi - lo + 1, 0)).ravel()
+    fan = np.broadcast_to(np.arange(fans)[None, :, None], lo.shape).ravel()
+    box = np.broadcast_to(np.arange(boxes)[None, None, :], lo.shape).ravel()
+    total = int(counts.sum())
+    fan, box = np.repeat(fan, counts), np.repeat(box, counts)
+    # Beam numbers: each run's low end, then 0, 1, 2... within the run.
+    starts = np.cumsum(counts) - counts
+    beam = np.repeat(lo.ravel(), counts) + np.arange(total) - np.repeat(starts, counts)
+    return fan, box, beam
+
+
+__all__ = ["MAX_ROUNDS", "cast", "cast_bodies"]

@@ -75,26 +75,56 @@ def clip_command(
 
 
 def blocked(grid: Grid, bodies: Bodies, x: Floats, y: Floats, yaw: Floats) -> npt.NDArray[np.bool_]:
-    """Which robots at (x, y, yaw) overlap a solid cell or another robot's body."""
-    centres = bodies.centres(x, y, yaw)
-    cos, sin = np.cos(yaw)[:, None], np.sin(yaw)[:, None]
-    px = centres[:, 0:1] + bodies.points[:, :, 0] * cos - bodies.points[:, :, 1] * sin
-    py = centres[:, 1:2] + bodies.points[:, :, 0] * sin + bodies.points[:, :, 1] * cos
-    hit = np.asarray(grid.solid_at(px, py).any(axis=1), dtype=np.bool_)
+    """Which robots at (x, y, yaw) overlap a solid cell or another robot's body.
+
+    Only the robots whose bounding circle may reach a solid cell (the grid's `Grid.room` at
+    the centre tells) and the pairs whose circles overlap are tested point by point.
+    """
     count = x.shape[0]
+    hit = np.zeros(count, dtype=np.bool_)
+    centres = bodies.centres(x, y, yaw)
+    radius = np.hypot(bodies.half[:, 0], bodies.half[:, 1])
+    row, col, inside = grid.cells(centres[:, 0], centres[:, 1])
+    # A solid cell's point is at least the distance between the cells' centres less √2 cells.
+    room = np.where(inside, grid.room[row, col] - math.sqrt(2.0), 0.0) * grid.resolution
+    near = np.flatnonzero(room <= radius)
+    if near.size:
+        px, py = _points(bodies, centres, yaw, near)
+        hit[near] = grid.solid_at(px, py).any(axis=1)
     if count > 1:
-        # Every robot's points in every other robot's box frame: (robots, others, points).
-        rx = px[:, None, :] - centres[None, :, 0:1]
-        ry = py[:, None, :] - centres[None, :, 1:2]
-        c, s = np.cos(yaw)[None, :, None], np.sin(yaw)[None, :, None]
-        u = rx * c + ry * s
-        v = -rx * s + ry * c
-        half = bodies.half[None, :, :]
-        inside = (np.abs(u) < half[:, :, 0:1]) & (np.abs(v) < half[:, :, 1:2])
-        touching = np.asarray(inside.any(axis=2), dtype=np.bool_)
-        touching[np.arange(count), np.arange(count)] = False
-        hit = hit | touching.any(axis=1) | touching.any(axis=0)
+        apart = np.hypot(
+            centres[:, None, 0] - centres[None, :, 0], centres[:, None, 1] - centres[None, :, 1]
+        )
+        close = np.triu(apart < radius[:, None] + radius[None, :], k=1)
+        for a, b in zip(*np.nonzero(close), strict=True):
+            if _touch(bodies, centres, yaw, int(a), int(b)):
+                hit[a] = hit[b] = True
     return hit
+
+
+def _points(
+    bodies: Bodies, centres: Floats, yaw: Floats, which: npt.NDArray[np.intp]
+) -> tuple[Floats, Floats]:
+    """The world points of the bodies of robots ``which``: (robots, points) x and y."""
+    cos, sin = np.cos(yaw[which])[:, None], np.sin(yaw[which])[:, None]
+    local = bodies.points[which]
+    px = centres[which, 0:1] + local[:, :, 0] * cos - local[:, :, 1] * sin
+    py = centres[which, 1:2] + local[:, :, 0] * sin + local[:, :, 1] * cos
+    return px, py
+
+
+def _touch(bodies: Bodies, centres: Floats, yaw: Floats, a: int, b: int) -> bool:
+    """Whether the bodies of robots ``a`` and ``b`` overlap (either's points in the other)."""
+    pair = np.array([a, b])
+    px, py = _points(bodies, centres, yaw, pair)
+    for mine, other in ((0, 1), (1, 0)):
+        k = int(pair[other])
+        rx, ry = px[mine] - centres[k, 0], py[mine] - centres[k, 1]
+        c, s = math.cos(yaw[k]), math.sin(yaw[k])
+        u, v = rx * c + ry * s, -rx * s + ry * c
+        if np.any((np.abs(u) < bodies.half[k, 0]) & (np.abs(v) < bodies.half[k, 1])):
+            return True
+    return False
 
 
 def advance(

@@ -90,6 +90,8 @@ class StageSim:
         sizes = np.array([r.size[:2] for r in robots], dtype=np.float64).reshape(count, 2)
         offsets = np.array([r.origin[:2] for r in robots], dtype=np.float64).reshape(count, 2)
         self.bodies = Bodies.boxes(sizes, offsets, grid.resolution / 2)
+        # The distance fields, once per world, before the first step needs them.
+        grid.clearance, grid.room  # noqa: B018
         self.visible = np.array([r.ranger_return > 0 for r in robots], dtype=np.bool_)
         self.odom_origin = np.array(
             [r.localization_origin or r.pose for r in robots], dtype=np.float64
@@ -180,7 +182,8 @@ class StageSim:
         """Cast lasers ``which`` (indices into `lasers`) from the robots' current poses."""
         if not which:
             return ()
-        xs, ys, angles, limits, owners, sizes = [], [], [], [], [], []
+        xs, ys, angles, limits, sizes = [], [], [], [], []
+        origins, firsts, increments, owners = [], [], [], []
         for i in which:
             robot, _, laser = self.lasers[i]
             px, py, pa = self.pose[robot]
@@ -190,24 +193,34 @@ class StageSim:
             count = laser.samples
             xs.append(np.full(count, ox))
             ys.append(np.full(count, oy))
-            angles.append(self._beams[i] + pa + la)
+            beams = self._beams[i]
+            angles.append(beams + pa + la)
             limits.append(np.full(count, laser.range_max))
-            owners.append(np.full(count, robot, dtype=np.intp))
             sizes.append(count)
+            origins.append((ox, oy))
+            firsts.append(beams[0] + pa + la)
+            increments.append(laser.angle_increment if count > 1 else 0.0)
+            owners.append(robot)
         x, y, angle = np.concatenate(xs), np.concatenate(ys), np.concatenate(angles)
         limit = np.concatenate(limits)
         ranges, intensity = cast(self.grid, x, y, angle, limit)
         if self.visible.any():
             seen = np.flatnonzero(self.visible)
-            owner = np.concatenate(owners)
             centres = self.bodies.centres(
                 self.pose[seen, 0], self.pose[seen, 1], self.pose[seen, 2]
             )
-            # A ray's own robot among the visible ones (past the end: it is not one of them).
+            # A fan's own robot among the visible ones (past the end: it is not one of them).
             where = np.full(len(self.robots), len(seen), dtype=np.intp)
             where[seen] = np.arange(len(seen))
             bodies, nearest = cast_bodies(
-                x, y, angle, where[owner], centres, self.pose[seen, 2], self.bodies.half[seen]
+                np.array(origins, dtype=np.float64).reshape(-1, 2),
+                np.array(firsts, dtype=np.float64),
+                np.array(increments, dtype=np.float64),
+                np.array(sizes, dtype=np.intp),
+                where[np.array(owners, dtype=np.intp)],
+                centres,
+                self.pose[seen, 2],
+                self.bodies.half[seen],
             )
             closer = bodies < ranges
             if closer.any():
