@@ -6,14 +6,18 @@ turtlesim's log lines instead, and runs until SIGINT or SIGTERM. Either way othe
 attach with ``ROS_MASTER_URI``. The first time it runs where ROS 1's command names do not run
 rosx's tools, it says how to make every terminal ready (``rosx shell-init --install``).
 
+``--robot [WORLD]`` runs the robot lab instead (`rosx_turtle.stage.lab`): stageros in the
+TurtleBot3-shaped arena (or WORLD), its map on ``/map`` (or ``--map MAP.yaml``'s), ``map`` →
+``odom``, and teleop_twist_keyboard in a pane, beside the same live panels.
+
 ``--tf-demo`` adds turtle_tf2's demo (a broadcaster per turtle, the listener that spawns
 turtle2 and makes it follow turtle1), as ``roslaunch turtle_tf2 turtle_tf2_demo.launch`` does.
 
 With ``--join`` it starts no core: turtlesim and teleop (and the screen) join the master already
 running at ``ROS_MASTER_URI`` (or, with ``--port``, the one on that port of this host). When the
 port is taken by a master, it says which nodes run there and how to join it or pick another
-port. Exit status 0; 1 when the port is taken or the master to join does not answer; 2 for a
-bad option.
+port. Exit status 0; 1 when the port is taken, the master to join does not answer, or the
+robot lab's world or map cannot be read; 2 for a bad option.
 """
 
 from __future__ import annotations
@@ -31,6 +35,7 @@ from rosx.transport.address import advertised_host, http_uri
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.sim.host import SimHost
+from rosx_turtle.stage.lab.plan import LabError, plan_lab
 from rosx_turtle.tui.running import run_app
 
 if TYPE_CHECKING:
@@ -39,6 +44,7 @@ if TYPE_CHECKING:
     from _typeshed import SupportsWrite
 
     from rosx_turtle.env import Env
+    from rosx_turtle.stage.lab.host import LabHost
 
 DESCRIPTION = (
     "Run a ROS master, /rosout, turtlesim and a keyboard teleop in one process, and show the "
@@ -93,6 +99,18 @@ def _parse(argv: Sequence[str], env: Env) -> argparse.Namespace:
         "--headless", action="store_true", help="no screen: print log lines, run until Ctrl-C"
     )
     parser.add_argument(
+        "--robot",
+        nargs="?",
+        const="",
+        default=None,
+        metavar="WORLD",
+        help="the robot lab instead: a simulated robot with a laser (Stage's WORLD, else a "
+        "TurtleBot3-shaped arena), its map and keyboard teleop",
+    )
+    parser.add_argument(
+        "--map", metavar="MAP.yaml", help="with --robot: the map map_server serves on /map"
+    )
+    parser.add_argument(
         "--tf-demo",
         action="store_true",
         help="also run turtle_tf2's demo: turtle2 follows turtle1 through tf",
@@ -111,15 +129,27 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
     console = Console(env.stdout, env.stderr, env.environ) if headless else None
     port_number = DEFAULT_MASTER_PORT if options.port is None else options.port
     join = _join_uri(options.port, env) if options.join else None
-    host = SimHost(
-        port_number,
-        env.environ,
-        console=console,
-        seed=seed,
-        watch=not headless,
-        join=join,
-        tf_demo=options.tf_demo,
-    )
+    if options.map and options.robot is None:
+        env.stderr.write("rosx sim: error: --map goes with --robot\n")
+        return 2
+    host: SimHost | LabHost
+    if options.robot is None:
+        host = SimHost(
+            port_number,
+            env.environ,
+            console=console,
+            seed=seed,
+            watch=not headless,
+            join=join,
+            tf_demo=options.tf_demo,
+        )
+    else:
+        from rosx_turtle.stage.lab.host import LabHost  # noqa: PLC0415 - numpy, the engine
+
+        plan = plan_lab(options.robot or None, options.map)
+        host = LabHost(
+            plan, port_number, env.environ, console=console, watch=not headless, join=join
+        )
     try:
         host.start()
     except PortInUseError as busy:
@@ -128,6 +158,9 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
     except (MasterUnreachable, MasterError):
         _error(env, f"ERROR: Unable to communicate with master at {join}")
         _error(env, "Start one (rosx roscore), or run rosx sim without --join for its own.")
+        return 1
+    except LabError as problem:
+        _error(env, str(problem))
         return 1
     except KeyboardInterrupt:  # Ctrl-C while starting: what started has been stopped
         return 0
@@ -186,7 +219,7 @@ def _error(env: Env, text: str) -> None:
     env.stderr.flush()
 
 
-def _run_headless(host: SimHost, env: Env) -> None:
+def _run_headless(host: SimHost | LabHost, env: Env) -> None:
     env.stdout.write(f"ROS_MASTER_URI={host.master_uri}\n")
     env.stdout.flush()
     with stop_on_signals() as stop:
@@ -194,7 +227,12 @@ def _run_headless(host: SimHost, env: Env) -> None:
             pass
 
 
-def _run_screen(host: SimHost, notice: str | None) -> None:
-    from rosx_turtle.tui.factory import make_sim_app  # noqa: PLC0415 - textual for the screen
+def _run_screen(host: SimHost | LabHost, notice: str | None) -> None:
+    if isinstance(host, SimHost):
+        from rosx_turtle.tui.factory import make_sim_app  # noqa: PLC0415 - textual for the screen
 
-    run_app(make_sim_app(host, notice=notice))
+        run_app(make_sim_app(host, notice=notice))
+        return
+    from rosx_turtle.stage.view.lab_app import make_lab_app  # noqa: PLC0415 - textual
+
+    run_app(make_lab_app(host, notice=notice))

@@ -2,7 +2,7 @@
 
 A topic shows ``rostopic info``'s text and, under it, its latest messages as ``rostopic echo``
 prints them (the newest last, refreshed a few times a second); a node shows ``rosnode info``'s
-text. The texts come from the link (`SimLink.describe_topic`, `describe_node`, `echo`) on worker
+text. The texts come from the link (`Details.describe_topic`, `describe_node`, `echo`) on worker
 threads, so a slow node never freezes the screen.
 """
 
@@ -22,7 +22,7 @@ if TYPE_CHECKING:
 
     from textual.app import ComposeResult
 
-    from rosx_turtle.tui.link import SimLink
+    from rosx_turtle.tui.link import Details
 
 #: How many of a topic's latest messages are shown.
 KEEP = 3
@@ -50,7 +50,7 @@ class DetailsScreen(ModalScreen[None]):
         Binding("q", "close", "Close", show=False),
     ]
 
-    def __init__(self, link: SimLink, kind: str, name: str) -> None:
+    def __init__(self, link: Details, kind: str, name: str) -> None:
         super().__init__()
         self.link = link
         self.kind = kind

@@ -1,6 +1,7 @@
 """`SimLink`: what the sim's terminal UI needs from the ROS side, and nothing more.
 
-`rosx_turtle.sim.host.SimHost` is the real one (a master, ``/rosout``, ``/turtlesim`` and
+`Details` is the part the details screen asks of any host (the robot lab's too).
+`rosx_turtle.sim.host.SimHost` is the real `SimLink` (a master, ``/rosout``, ``/turtlesim`` and
 ``/teleop_turtle`` in this process); tests may hand the same app a link with fixed feeds.
 """
 
@@ -17,7 +18,24 @@ if TYPE_CHECKING:
     from rosx_turtle.view.scene import Scene
 
 
-class SimLink(Protocol):
+class Details(Protocol):
+    """The details of a topic or node that Enter on a row of the graph panels shows."""
+
+    def describe_topic(self, topic: str) -> str:
+        """What ``rostopic info TOPIC`` prints (may block: called from a worker thread)."""
+        ...
+
+    def describe_node(self, node: str) -> str:
+        """What ``rosnode info NODE`` prints (may block: called from a worker thread)."""
+        ...
+
+    def echo(self, topic: str, offer: Callable[[str], object]) -> Callable[[], None]:
+        """Call ``offer(text)`` with each message of ``topic`` as ``rostopic echo`` prints it,
+        from any thread, until the returned function is called (may block: a worker thread)."""
+        ...
+
+
+class SimLink(Details, Protocol):
     """The feeds the panes show, the way the teleop pane drives, and the details of a topic
     or node."""
 
@@ -48,17 +66,4 @@ class SimLink(Protocol):
 
     def drive(self, linear: float, angular: float) -> None:
         """Publish one command for turtle1: ``linear.x`` and ``angular.z``, all else 0."""
-        ...
-
-    def describe_topic(self, topic: str) -> str:
-        """What ``rostopic info TOPIC`` prints (may block: called from a worker thread)."""
-        ...
-
-    def describe_node(self, node: str) -> str:
-        """What ``rosnode info NODE`` prints (may block: called from a worker thread)."""
-        ...
-
-    def echo(self, topic: str, offer: Callable[[str], object]) -> Callable[[], None]:
-        """Call ``offer(text)`` with each message of ``topic`` as ``rostopic echo`` prints it,
-        from any thread, until the returned function is called (may block: a worker thread)."""
         ...
