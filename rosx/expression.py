@@ -109,7 +109,7 @@ MAX_SIZE = 100_000
 #: The most bits an integer may have (Python prints at most 4 300 digits, about 14 300 bits).
 MAX_BITS = 1 << 17
 #: The most work one evaluation may do: values computed plus items of the values made.
-BUDGET = 200_000
+BUDGET = 100_000
 
 
 def _range(*args: int) -> range:

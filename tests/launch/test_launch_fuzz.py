@@ -191,7 +191,7 @@ def _load(root: Path, data: bytes) -> None:
         assert "\n" not in text, text
 
 
-@fuzz_settings(100)
+@fuzz_settings(80)
 @given(text=launch_files)
 def test_launch_files_load_or_are_refused(folder: Path, text: str) -> None:
     _load(folder, text.encode())

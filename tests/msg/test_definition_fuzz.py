@@ -122,7 +122,7 @@ def _serialized(msg: Any) -> bytes:
     return buffer.getvalue()
 
 
-@fuzz_settings(150)
+@fuzz_settings(80)
 @given(text=definitions, data=st.binary(max_size=64))
 def test_accepted_definitions_make_classes_that_read_any_bytes(
     folder: Path, text: str, data: bytes

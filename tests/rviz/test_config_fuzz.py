@@ -90,7 +90,7 @@ def configs(draw: st.DrawFn) -> str:
     return "\n".join(lines)
 
 
-@fuzz_settings(200)
+@fuzz_settings(150)
 @given(text=st.one_of(configs(), st.text(max_size=80)))
 def test_rviz_configs_are_read_or_refused_in_one_line(text: str) -> None:
     try:
