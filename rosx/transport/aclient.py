@@ -74,7 +74,23 @@ class AsyncXmlRpcClient:
             for _, writer in connections:
                 writer.close()
 
+    def _sweep(self) -> None:
+        """Close kept connections their servers have closed: a node that died, or a server's
+        idle timeout. Each would otherwise hold a descriptor (in CLOSE_WAIT) until the next call
+        to its server, and a master or ``/rosout`` never calls a dead node again."""
+        for key, connections in list(self._idle.items()):
+            alive = [c for c in connections if not (c[0].at_eof() or c[1].is_closing())]
+            for connection in connections:
+                if connection not in alive:
+                    connection[1].close()
+            self._idle_count -= len(connections) - len(alive)
+            if alive:
+                self._idle[key] = alive
+            else:
+                del self._idle[key]
+
     async def _call(self, uri: str, key: Key, payload: bytes) -> Any:
+        self._sweep()
         connections = self._idle.get(key)
         if connections:
             connection = connections.pop()

@@ -1,4 +1,5 @@
-"""The descriptor reserve: which connections a server gives up when descriptors run short.
+"""The descriptor reserve: which connections a server gives up when descriptors run short;
+and a client that keeps no connection to a server that went away.
 
 Only idle connections are closed, the oldest first, across all of the process's servers, and
 the log says so once; a connection whose call is being answered gets its answer.
@@ -12,11 +13,14 @@ import logging
 import socket
 import threading
 from collections.abc import Callable, Iterator
+from pathlib import Path
 
 import pytest
 
 from rosx.transport import descriptors
+from rosx.transport.aclient import AsyncXmlRpcClient
 from rosx.transport.loop_thread import ServerThread
+from rosx.transport.server import XmlRpcServer
 from tests.support.procs import wait_for
 from tests.support.reserve import closed_by_peer
 
@@ -102,3 +106,35 @@ def test_a_connection_being_answered_is_never_closed(warned_afresh: None) -> Non
 
 async def _shed_everything() -> None:
     descriptors.shed(10_000, 1024)
+
+
+_FDS = Path("/proc/self/fd")
+
+
+def _open_descriptors() -> int:
+    return len(list(_FDS.iterdir()))
+
+
+@pytest.mark.skipif(not _FDS.is_dir(), reason="counts descriptors in /proc")
+def test_kept_connections_to_servers_that_went_away_are_closed() -> None:
+    # What /rosout and the master do: call many nodes once each; the nodes die. Their kept
+    # connections must not stay open (CLOSE_WAIT) for good, one descriptor per dead node.
+    async def scenario() -> None:
+        client = AsyncXmlRpcClient(timeout=5.0)
+        before = _open_descriptors()
+        for _ in range(20):
+            server = XmlRpcServer({"ping": lambda: "pong"})
+            await server.start()
+            assert await client.call(server.uri, "ping") == "pong"
+            await server.close()
+        alive = XmlRpcServer({"ping": lambda: "pong"})
+        await alive.start()
+        for _ in range(3):  # the server's closing reaches the client within a turn or two
+            await asyncio.sleep(0)
+        assert await client.call(alive.uri, "ping") == "pong"
+        # The live server's listening socket, its end of the call, and the client's.
+        assert _open_descriptors() <= before + 3
+        await alive.close()
+        await client.close()
+
+    asyncio.run(scenario())
