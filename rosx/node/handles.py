@@ -6,8 +6,9 @@ its queue and the threads that run their callbacks). The topic is unregistered f
 when its last handle is.
 
 A handle is the door to its topic or service for tools and libraries: what they need of the
-connections (who has been sent what, stopping a subscription without losing what arrived) is a
-method here, so nothing above the node runtime handles links, streams or sockets. Each handle
+connections (who is connected, who has been sent what, stopping a subscription without losing
+what arrived) is a method here, so nothing above the node runtime handles links, streams or
+sockets. ARCHITECTURE.md lists these methods ("New libraries stay on public doors"). Each handle
 is given its release by the node that made it (a closure), so it calls nothing private of the
 node.
 """
