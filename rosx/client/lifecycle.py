@@ -7,6 +7,9 @@ parameters, and a second call is allowed only with the same arguments. While the
 be reached it logs rospy's ``Unable to immediately register with master node [...]`` once and
 keeps trying, until the master answers or the process is told to stop.
 
+Unless ``disable_rostime`` is given, a true ``/use_sim_time`` parameter makes the node's time
+follow ``/clock`` (`rosx.node.simtime`, `rosx.client.timing`).
+
 Unless ``disable_signals`` is given, SIGINT (Ctrl-C) and SIGTERM shut the node down as rospy's
 handlers do: no `KeyboardInterrupt` reaches the program; instead `is_shutdown` becomes true and
 sleeps end with `ROSInterruptException`. The teardown runs on a thread of its own, because a
@@ -104,6 +107,8 @@ def init_node(
     log_file = _open_log_file(name)
     node = _start_node(name, log_level or INFO, xmlrpc_port, tcpros_port, disable_rosout)
     node.on_shutdown(state.CLIENT.signal_shutdown)
+    if not disable_rostime:
+        _init_time(node)
     if log_file is not None:
         node.log_sink.record = log_file.write
         node.on_shutdown(
@@ -180,6 +185,26 @@ def _start_node(
             )
             told = True
         state.CLIENT.shutdown_event.wait(_RETRY_PERIOD)
+
+
+def _init_time(node: Node) -> None:
+    """ROS time from ``/clock`` when ``/use_sim_time`` is set (rospy's ``init_simtime``).
+
+    Raises:
+        ROSInitException: the master could not be asked (rospy's words), the node shut down.
+    """
+    from rosx.master.client import MasterError  # noqa: PLC0415 - the node runtime loads with the first node
+    from rosx.node.simtime import follow_sim_time  # noqa: PLC0415 - the node runtime loads with the first node
+    from rosx.transport.errors import TransportError  # noqa: PLC0415 - the network code loads only to talk
+
+    try:
+        follow_sim_time(node)
+    except (MasterError, TransportError) as error:
+        _console(ERROR, _line(ERROR, f"Unable to initialize /clock: {error}"))
+        node.shutdown("Failed to initialize time")
+        raise ROSInitException(
+            "Failed to initialize time. Please check logs for additional details"
+        ) from None
 
 
 def _line(level: int, message: str) -> str:

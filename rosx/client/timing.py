@@ -1,10 +1,15 @@
 """Time for rospy-style nodes: `Time`, `Duration`, `get_rostime`, `sleep`, `Rate` and `Timer`.
 
-The node runs on wall-clock time. As in rospy, reading ROS time (``Time.now()``,
-`get_rostime`, creating a `Rate`) needs `init_node` first and otherwise raises
-``time is not initialized. Have you called init_node()?``. Sleeps end early when the node
+ROS time is the node's clock (`rosx.node.clock.Clock`): the wall clock, or, when
+``/use_sim_time`` is set as `init_node` starts the node, ``/clock`` (0 until its first message),
+as in rospy: ``Time.now()``, `sleep`, `Rate` and `Timer` then follow the simulator, however fast
+it runs. As in rospy, reading ROS time (``Time.now()``, `get_rostime`, creating a `Rate`) needs
+`init_node` first and otherwise raises ``time is not initialized. Have you called
+init_node()?``; a sleep before it sleeps on the wall clock. Sleeps end early when the node
 shuts down and then raise `ROSInterruptException` (``ROS shutdown request``), so that a loop
-``while not rospy.is_shutdown(): …; rate.sleep()`` ends promptly on Ctrl-C.
+``while not rospy.is_shutdown(): …; rate.sleep()`` ends promptly on Ctrl-C; a sleep during
+which simulated time goes back raises `ROSTimeMovedBackwardsException` (a `Rate` made with
+``reset=True`` starts its rhythm afresh instead).
 """
 
 from __future__ import annotations
@@ -14,11 +19,15 @@ import time
 from typing import TYPE_CHECKING
 
 from rosx.client import state
-from rosx.client.exceptions import ROSInitException, ROSInterruptException
+from rosx.client.exceptions import (
+    ROSInitException,
+    ROSInterruptException,
+    ROSTimeMovedBackwardsException,
+)
 from rosx.msg.codec import rostime
+from rosx.node.clock import WALL, Clock
 from rosx.node.clock import Rate as _NodeRate
-from rosx.node.clock import sleep as _node_sleep
-from rosx.node.errors import NodeShutdownError
+from rosx.node.errors import NodeShutdownError, TimeMovedBackwardsError
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -62,6 +71,12 @@ def _check_time() -> None:
         raise ROSInitException("time is not initialized. Have you called init_node()?")
 
 
+def _clock() -> Clock:
+    """The node's clock; the wall clock before `init_node`."""
+    node = state.CLIENT.node
+    return WALL if node is None else node.clock
+
+
 def get_rostime() -> Time:
     """The current ROS time as a `Time`.
 
@@ -69,8 +84,19 @@ def get_rostime() -> Time:
         ROSInitException: `init_node` has not been called.
     """
     _check_time()
-    nanos = time.time_ns()
-    return Time(nanos // 1_000_000_000, nanos % 1_000_000_000)
+    current = _clock().now()
+    return Time(current.secs, current.nsecs)
+
+
+def is_wallclock() -> bool:
+    """Whether ROS time is the wall clock (no ``/use_sim_time``), as rospy's
+    ``rospy.rostime.is_wallclock``."""
+    return _clock().is_wallclock
+
+
+def wallsleep(duration: float) -> None:
+    """Sleep ``duration`` seconds of wall-clock time, whatever ROS time does."""
+    time.sleep(duration)
 
 
 def get_time() -> float:
@@ -83,11 +109,14 @@ def sleep(duration: float | rostime.Duration) -> None:
 
     Raises:
         ROSInterruptException: the node shut down before the time was up.
+        ROSTimeMovedBackwardsException: simulated time went back meanwhile.
     """
     try:
-        _node_sleep(duration, shutdown=state.CLIENT.shutdown_event)
+        _clock().sleep(duration, shutdown=state.CLIENT.shutdown_event)
     except NodeShutdownError:
         raise ROSInterruptException("ROS shutdown request") from None
+    except TimeMovedBackwardsError as moved:
+        raise ROSTimeMovedBackwardsException(moved.jump) from None
 
 
 class Rate:
@@ -95,7 +124,9 @@ class Rate:
 
     def __init__(self, hz: float, reset: bool = False) -> None:
         _check_time()
-        self._rate = _NodeRate(hz, shutdown=state.CLIENT.shutdown_event)
+        self._rate = _NodeRate(
+            hz, shutdown=state.CLIENT.shutdown_event, clock=_clock(), reset=reset
+        )
         self.sleep_dur = Duration(0, int(1e9 / hz))
         self._reset = reset
 
@@ -109,11 +140,15 @@ class Rate:
 
         Raises:
             ROSInterruptException: the node shut down meanwhile.
+            ROSTimeMovedBackwardsException: simulated time went back meanwhile (unless the
+                rate was made with ``reset``).
         """
         try:
             self._rate.sleep()
         except NodeShutdownError:
             raise ROSInterruptException("ROS shutdown request") from None
+        except TimeMovedBackwardsError as moved:
+            raise ROSTimeMovedBackwardsException(moved.jump) from None
 
 
 class TimerEvent:
@@ -166,7 +201,9 @@ class Timer(threading.Thread):
             try:
                 rate.sleep()
             except ROSInterruptException:
-                break
+                if state.CLIENT.is_shutdown() or self._halt.is_set():
+                    break
+                raise  # simulated time went back: the timer ends, as rospy's
             if self._halt.is_set():
                 break
             current_real = get_rostime()
@@ -189,5 +226,7 @@ __all__ = [
     "TimerEvent",
     "get_rostime",
     "get_time",
+    "is_wallclock",
     "sleep",
+    "wallsleep",
 ]

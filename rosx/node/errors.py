@@ -2,7 +2,8 @@
 
 `ServiceError` is what rospy calls ``ServiceException``: a service call that failed (its
 subclasses say how, `rosx.node.service_client`), or a handler's way to refuse a request;
-`NodeShutdownError` is raised by calls made on a node that has been shut down. A master's
+`NodeShutdownError` is raised by calls made on a node that has been shut down,
+`TimeMovedBackwardsError` by a sleep in simulated time that saw the time go back. A master's
 refusal is `rosx.master.client.MasterError`; connection failures surface as
 `rosx.transport.errors.TransportError` (`rosx.master.client.MasterUnreachable` for the master).
 """
@@ -20,3 +21,11 @@ class ServiceError(NodeError):
 
 class NodeShutdownError(NodeError):
     """The node has been shut down, so it can no longer do what was asked."""
+
+
+class TimeMovedBackwardsError(NodeError):
+    """Simulated time (``/clock``) jumped backwards during a sleep, by ``jump`` seconds."""
+
+    def __init__(self, jump: float) -> None:
+        super().__init__(f"ROS time moved backwards by {jump} s")
+        self.jump = jump

@@ -1,10 +1,11 @@
 """What every node does for logging, as rospy nodes do: publish ``/rosout``, serve its levels.
 
 `RosoutPublisher` turns a node's log records into ``rosgraph_msgs/Log`` messages on
-``/rosout`` (latched, queue of 100, as rospy advertises it), with the node's topics and the
-wall-clock stamp. `advertise_logger_services` serves ``~get_loggers`` (``roscpp/GetLoggers``)
-and ``~set_logger_level`` (``roscpp/SetLoggerLevel``) over the node's `NodeLog` levels; an
-unknown level name is logged as rospy logs it, ``Bad logging level: X``.
+``/rosout`` (latched, queue of 100, as rospy advertises it), with the node's topics and a
+stamp of the node's ROS time (its `Clock`). `advertise_logger_services` serves
+``~get_loggers`` (``roscpp/GetLoggers``) and ``~set_logger_level``
+(``roscpp/SetLoggerLevel``) over the node's `NodeLog` levels; an unknown level name is logged
+as rospy logs it, ``Bad logging level: X``.
 """
 
 from __future__ import annotations
@@ -13,7 +14,6 @@ from typing import TYPE_CHECKING, Any
 
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import rosout
-from rosx.node.clock import now
 
 if TYPE_CHECKING:
     from rosx.node.node import Node
@@ -40,7 +40,7 @@ class RosoutPublisher:
             line=line,
             topics=list(dict.fromkeys([*node.publications, *node.subscriptions])),
         )
-        record.header.stamp = now()
+        record.header.stamp = node.clock.now()
         self.publisher.publish(record)
 
 

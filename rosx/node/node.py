@@ -27,6 +27,7 @@ from rosx.master.client import MasterClient, reply_value
 from rosx.master.defaults import master_uri as find_master_uri
 from rosx.names import make_global_ns, ns_join, resolve, resolve_remappings
 from rosx.node import local, rosout, unixros
+from rosx.node.clock import Clock
 from rosx.node.errors import NodeShutdownError, ServiceError
 from rosx.node.handles import Publisher, ServiceHandle, Subscriber
 from rosx.node.log_services import RosoutPublisher, advertise_logger_services
@@ -128,6 +129,8 @@ class Node:
         self.shutdown_reason = ""
         #: ``_name:=value`` arguments (name without ``_`` → YAML text), set as ``~name`` on start.
         self.private_params = dict(private_params or {})
+        #: The node's ROS time: the wall clock, or ``/clock`` (`rosx.node.simtime`).
+        self.clock = Clock()
 
     # -- lifecycle ---------------------------------------------------------------------------
 
@@ -214,6 +217,7 @@ class Node:
                 self._closer = threading.get_ident()
                 self.shutdown_reason = reason
                 self._shutdown.set()
+                self.clock.wake()
         if closer is not None:
             if closer != threading.get_ident() and not self.io.in_loop_thread():
                 self._closed.wait(_FINISH_TIMEOUT)

@@ -439,6 +439,45 @@ def test_hz_reports_every_second(
         )
 
 
+def test_hz_measures_in_simulated_time_unless_told_the_wall(
+    env: dict[str, str], master: str, make_node: Callable[[str], Node]
+) -> None:
+    """With /use_sim_time set, ROS 1's rostopic hz measures gaps on /clock: 20 messages a
+    wall second, half a simulated second apart, are 2 a simulated second; --wall-time 20."""
+    node = make_node("/simulator")
+    node.params.set("/use_sim_time", True)
+    clock = node.advertise("/clock", get_message_class("rosgraph_msgs/Clock"), queue_size=10)
+    data = node.advertise("/r/sim", Int32, queue_size=10)
+    stop = threading.Event()
+
+    def run() -> None:
+        seconds = 100.0
+        while not stop.wait(0.05):
+            seconds += 0.5
+            clock.publish(get_message_class("rosgraph_msgs/Clock")(clock=Time.from_sec(seconds)))
+            data.publish(Int32(1))
+
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    try:
+        rates = {}
+        for extra in ([], ["--wall-time"]):
+            result = run_for(
+                master, 2.3, "rostopic", "hz", *extra, "/r/sim", environ=env, until=_lines(3)
+            )
+            assert result.status == 0, result.err
+            assert result.err == "WARNING: may be using simulated time\n"
+            found = re.search(r"average rate: (\d+\.\d{3})", result.out)
+            assert found, result.out
+            rates[bool(extra)] = float(found[1])
+    finally:
+        stop.set()
+        thread.join()
+        node.params.delete("/use_sim_time")  # the master is the module's
+    assert 1.0 < rates[False] < 4.0  # simulated time: 2 a second
+    assert rates[True] > 6.0  # the wall clock's 20 a second, give or take a busy machine
+
+
 def test_hz_of_several_topics_prints_a_table(
     stream: Callable[..., None], env: dict[str, str], master: str
 ) -> None:

@@ -248,6 +248,7 @@ def echo(argv: list[str], env: Environment) -> int:
             noarr=options.noarr,
             nostr=options.nostr,
             width=width,
+            clock=node.clock.now,
         )
         sim_time = session.use_sim_time("/use_sim_time")
         node.subscribe(real_topic, msg_class, printer)

@@ -107,10 +107,10 @@ class Publishing:
     def at_rate(self, msg: Message, args: list[Any], rate: float) -> None:
         """Publish ``msg`` ``rate`` times a second until interrupted."""
         from rosx.node import Rate  # noqa: PLC0415 - the node runtime loads with the first node
-        from rosx.node.errors import NodeShutdownError  # noqa: PLC0415 - the node runtime loads with the first node
+        from rosx.node.errors import NodeShutdownError, TimeMovedBackwardsError  # noqa: PLC0415 - the node runtime loads with the first node
 
         node = self.publisher.node
-        pacer = Rate(rate, shutdown=node.shutdown_event)
+        pacer = Rate(rate, shutdown=node.shutdown_event, clock=node.clock)
         while not node.is_shutdown():
             if self.substitute_keywords:
                 self.fill(msg, args)
@@ -119,7 +119,7 @@ class Publishing:
             self.send(msg)
             try:
                 pacer.sleep()
-            except NodeShutdownError:
+            except (NodeShutdownError, TimeMovedBackwardsError):  # as rospy's Rate: the end
                 return
 
     def spin(self) -> None:
@@ -145,10 +145,12 @@ class Publishing:
     ) -> None:
         """YAML documents from ``-f FILE`` or standard input, one message each."""
         from rosx.node import Rate  # noqa: PLC0415 - the node runtime loads with the first node
-        from rosx.node.errors import NodeShutdownError  # noqa: PLC0415 - the node runtime loads with the first node
+        from rosx.node.errors import NodeShutdownError, TimeMovedBackwardsError  # noqa: PLC0415 - the node runtime loads with the first node
 
         node = self.publisher.node
-        pacer = Rate(rate, shutdown=node.shutdown_event) if rate is not None else None
+        pacer = (
+            Rate(rate, shutdown=node.shutdown_event, clock=node.clock) if rate is not None else None
+        )
         self.wait_for_subscriber(SUBSCRIBER_TIMEOUT)
         for document in documents:
             if node.is_shutdown():
@@ -167,7 +169,7 @@ class Publishing:
             if pacer is not None:
                 try:
                     pacer.sleep()
-                except NodeShutdownError:
+                except (NodeShutdownError, TimeMovedBackwardsError):  # as rospy's Rate: the end
                     break
             if node.is_shutdown() or once:
                 break

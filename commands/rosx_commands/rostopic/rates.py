@@ -1,6 +1,10 @@
 """``rostopic hz``, ``bw`` and ``delay``: subscribe, measure (`rosx.node.stats`),
 print a report every second until interrupted.
 
+As ROS 1's, hz and delay measure in ROS time (the node's clock: ``/clock`` when
+``/use_sim_time`` is set, where a message that comes while it reads 0 is not counted), hz with
+``--wall-time`` and bw in wall-clock time; the reports come every wall-clock second.
+
 hz and bw subscribe raw (rospy's ``AnyMsg``): messages are never decoded, so any type works and
 fast topics cost little; only ``hz --filter`` decodes, to give the expression a message. delay
 decodes, to read ``header.stamp``.
@@ -19,6 +23,8 @@ from rosx_commands.rostopic.session import MessageFilter, Session
 
 if TYPE_CHECKING:
     from collections.abc import Callable
+
+    from rosx.node import Node
 
 #: Seconds between two reports.
 REPORT_PERIOD = 1.0
@@ -106,10 +112,11 @@ def hz(argv: list[str], env: Environment) -> int:
                 return ExitStatus.OK
             type_name, real_topic = found
             msg_class = session.message_class(type_name) if message_filter else None
+            clock = time.time if options.use_wtime else _ros_seconds(node)
             node.subscribe(
                 real_topic,
                 msg_class,
-                _hz_callback(tracker, topic, real_topic, message_filter),
+                _hz_callback(tracker, topic, real_topic, message_filter, clock),
                 tcp_nodelay=bool(options.tcp_nodelay),
             )
             _subscribed(env, real_topic)
@@ -118,19 +125,35 @@ def hz(argv: list[str], env: Environment) -> int:
     return ExitStatus.OK
 
 
+def _ros_seconds(node: Node) -> Callable[[], float | None]:
+    """The node's ROS time in seconds, None while simulated time reads 0 (ROS 1's tools then
+    leave the message out)."""
+    clock = node.clock
+
+    def seconds() -> float | None:
+        current = clock.now()
+        return None if current.is_zero() else current.to_sec()
+
+    return seconds
+
+
 def _hz_callback(
-    tracker: HzTracker, key: str, topic: str, message_filter: MessageFilter | None
+    tracker: HzTracker,
+    key: str,
+    topic: str,
+    message_filter: MessageFilter | None,
+    clock: Callable[[], float | None],
 ) -> Callable[[Any], None]:
-    clock = time.time
     arrived = tracker.arrived
-    if message_filter is None:
-        return lambda msg: arrived(key, clock())
 
-    def filtered(msg: Any) -> None:
-        if message_filter(msg, topic):
-            arrived(key, clock())
+    def counted(msg: Any) -> None:
+        if message_filter is not None and not message_filter(msg, topic):
+            return
+        now = clock()
+        if now is not None:
+            arrived(key, now)
 
-    return filtered
+    return counted
 
 
 # -- bw ------------------------------------------------------------------------------------
@@ -205,7 +228,10 @@ def delay(argv: list[str], env: Environment) -> int:
         msg_class = session.message_class(type_name)
         node = session.start_node()
         node.subscribe(
-            real_topic, msg_class, _delay_callback(env, tracker), tcp_nodelay=args.tcp_nodelay
+            real_topic,
+            msg_class,
+            _delay_callback(env, tracker, _ros_seconds(node)),
+            tcp_nodelay=args.tcp_nodelay,
         )
         _subscribed(env, real_topic)
         _warn_sim_time(session)
@@ -213,7 +239,9 @@ def delay(argv: list[str], env: Environment) -> int:
     return ExitStatus.OK
 
 
-def _delay_callback(env: Environment, tracker: DelayTracker) -> Callable[[Any], None]:
+def _delay_callback(
+    env: Environment, tracker: DelayTracker, clock: Callable[[], float | None]
+) -> Callable[[Any], None]:
     def callback(msg: Any) -> None:
         if not getattr(msg, "_has_header", False):
             from rosx.node.rosout import ERROR, console_line  # noqa: PLC0415 - the node runtime loads with the first node
@@ -222,6 +250,8 @@ def _delay_callback(env: Environment, tracker: DelayTracker) -> Callable[[Any], 
             env.stderr.write(console_line(ERROR, "msg does not have header") + "\n")
             env.stderr.flush()
             return
-        tracker.arrived(time.time(), msg.header.stamp.to_sec())
+        now = clock()
+        if now is not None:
+            tracker.arrived(now, msg.header.stamp.to_sec())
 
     return callback

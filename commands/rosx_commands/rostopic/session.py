@@ -86,7 +86,12 @@ class Session:
         )
         self.node = node
         # A master lost from here on raises MasterUnreachable, which the CLI reports.
-        return node.start()
+        node.start()
+        # As rospy's init_node: ROS time follows /clock when /use_sim_time is set.
+        from rosx.node.simtime import follow_sim_time  # noqa: PLC0415 - with the node runtime
+
+        follow_sim_time(node)
+        return node
 
     def is_shutdown(self) -> bool:
         """Whether the node was shut down (``rosnode kill``); False before it starts."""

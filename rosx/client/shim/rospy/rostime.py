@@ -5,6 +5,8 @@ from rosx.client.timing import (
     Time,
     get_rostime,
     get_time,
+    is_wallclock,
+    wallsleep,
 )
 
-__all__ = ["Duration", "Time", "get_rostime", "get_time"]
+__all__ = ["Duration", "Time", "get_rostime", "get_time", "is_wallclock", "wallsleep"]
