@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from rosx.packages.crawl import PREFIX
 from rosx.tf.core import BufferCore
 from rosx_commands.rviz.config import ConfigError, load_config, parse_config
 from rosx_commands.rviz.manager import Manager
@@ -145,3 +146,33 @@ def test_rvizs_example_configs_load_with_unsupported_displays_listed(
     assert expected_drawn <= drawn
     assert unsupported == expected_unsupported
     assert config.fixed_frame and not config.fixed_frame.startswith("/")
+
+
+#: The configs the bundled packages install, as Noetic's (``rviz/`` of each package), and the
+#: fixed frame each shows: ``rosrun rviz rviz -d `rospack find turtle_tf2`/rviz/turtle_rviz.rviz``
+#: is the tf2 introduction's step.
+BUNDLED = {
+    "turtle_tf2/rviz/turtle_rviz.rviz": "world",
+    "turtle_tf/rviz/turtle_rviz.rviz": "world",
+    "turtlebot3_stage/rviz/turtlebot3_stage.rviz": "map",
+}
+
+
+def test_every_bundled_config_is_known() -> None:
+    found = {str(p.relative_to(PREFIX / "share")) for p in (PREFIX / "share").glob("*/rviz/*.rviz")}
+    assert found == set(BUNDLED)
+
+
+@pytest.mark.parametrize("path", sorted(BUNDLED))
+def test_the_bundled_configs_draw_every_display(path: str) -> None:
+    config = load_config(str(PREFIX / "share" / path))
+    assert config.fixed_frame == BUNDLED[path]
+    core = BufferCore()
+    core.set("world", "turtle1", 0, (5.5, 5.5, 0, 0, 0, 0, 1), is_static=True)
+    core.set("world", "turtle2", 0, (4.0, 2.0, 0, 0, 0, 0, 1), is_static=True)
+    manager = Manager(config, core)
+    manager.layers(0.0, 0.05)
+    assert [d.summary for d in manager.displays if d.summary == "unsupported"] == []
+    if config.fixed_frame == "world":
+        (tf,) = [d for d in manager.displays if d.class_id == "rviz/TF"]
+        assert tf.summary == "OK (3 frames)"

@@ -120,6 +120,16 @@ def test_tf_draws_every_frame_with_its_name() -> None:
     assert manager.displays[0].summary == "OK (4 frames)"
 
 
+@pytest.mark.parametrize("everything", ["false", "true"])
+def test_tf_hides_only_the_frames_its_config_turns_off(everything: str) -> None:
+    # rviz saves "All Enabled: false" once any frame was unticked (turtle_tf2's own config
+    # has it, listing none): frames discovered later start enabled all the same.
+    frames = f"{{All Enabled: {everything}, odom: {{Value: false}}, laser: {{Value: true}}}}"
+    manager = Manager(config(f"{{Class: rviz/TF, Name: TF, Frames: {frames}}}"), robot_tf())
+    assert {label.text for label in drawn(manager).labels} == {"map", "base_link", "laser"}
+    assert manager.displays[0].summary == "OK (3 frames)"
+
+
 def test_tf_warns_about_frames_it_cannot_place() -> None:
     core = robot_tf()
     core.set("world", "elsewhere", 0, (0, 0, 0, 0, 0, 0, 1), is_static=True)

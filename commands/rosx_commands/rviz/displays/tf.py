@@ -3,8 +3,9 @@
 
 Options as rviz's: ``Show Names``, ``Show Axes``, ``Show Arrows``, ``Marker Scale`` (axes 0.2 m
 long at scale 1, drawn at least a few pixels long so a frame shows at any zoom), ``Frames``
-(``All Enabled`` and each frame's ``Value``). Each frame's status is rviz's: ``Transform OK``,
-or ``No transform from [F] to frame [FIXED]`` (a warning: the TF display shows what connects).
+(each frame's ``Value``; ``All Enabled`` is only the tick box over them, as in rviz). Each
+frame's status is rviz's: ``Transform OK``, or ``No transform from [F] to frame [FIXED]`` (a
+warning: the TF display shows what connects).
 """
 
 from __future__ import annotations
@@ -36,21 +37,22 @@ class TF(Display):
     def clear(self) -> None:
         self.frames_shown = 0
 
-    def _enabled_frames(self) -> tuple[bool, dict[str, bool]]:
+    def _disabled_frames(self) -> set[str]:
+        """The frames the config turns off. ``All Enabled`` is rviz's tick box over the frames
+        it lists when saving: false means some frame was off, not that new frames are (rviz
+        loads it before any frame exists, and every frame it discovers starts enabled)."""
         frames = self.option("Frames", {}) or {}
-        if not hasattr(frames, "get"):
-            return True, {}
-        everything = frames.get("All Enabled", True) is not False
-        chosen = {
-            name: bool(value.get("Value", True))
+        if not hasattr(frames, "items"):
+            return set()
+        return {
+            name
             for name, value in frames.items()
-            if name != "All Enabled" and hasattr(value, "get")
+            if name != "All Enabled" and hasattr(value, "get") and value.get("Value", True) is False
         }
-        return everything, chosen
 
     def draw(self, context: Context) -> Layer:
         frames = context.frames
-        everything, chosen = self._enabled_frames()
+        disabled = self._disabled_frames()
         scale = self.number("Marker Scale", 1.0)
         length = max(AXES_LENGTH * scale, MIN_AXIS_PIXELS * context.metres_per_pixel)
         names, axes = self.flag("Show Names", True), self.flag("Show Axes", True)
@@ -59,7 +61,7 @@ class TF(Display):
         x_axes, y_axes, labels = [], [], []
         for name in sorted(frames.frames()):
             self.statuses.delete(name)
-            if not chosen.get(name, everything):
+            if name in disabled:
                 continue
             answer = frames.lookup(name)
             if isinstance(answer, str):
