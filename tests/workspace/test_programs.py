@@ -30,6 +30,7 @@ from rosx.workspace.programs import (
 )
 from rosx_commands.context import Environment
 from rosx_commands.rosrun import Launch, plan
+from rosx_commands.tools import TOOLS
 from tests.support.cli import clean_environ, rosx, rosx_process
 from tests.support.packages import package
 from tests.support.workspace_text import TerminalText
@@ -265,6 +266,14 @@ def test_roslaunch_of_what_rosx_lacks_says_so_after_ros1s_error() -> None:
     )
     plain = rosx("roslaunch", "turtlebot3_gazebo", "turtlebot3_world.launch")
     assert (plain.status, len(plain.err.splitlines())) == (1, 1)
+
+
+def test_the_readme_lists_every_package_and_tool_that_comes_with_rosx() -> None:
+    readme = " ".join((Path(__file__).parents[2] / "README.md").read_text().split())
+    listed = ", ".join(provided_packages())
+    assert f"list of the installed version): {listed}." in readme
+    unnamed = [t for t in TOOLS if f"`rosx {t}" not in readme and f"`{t}`" not in readme]
+    assert unnamed == []
 
 
 def test_rosx_help_lists_the_packages_that_come_with_rosx() -> None:
