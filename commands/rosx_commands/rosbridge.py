@@ -48,8 +48,8 @@ def _rosbridge(argv: list[str], env: Environment) -> int:
         dest="origins",
         action="append",
         default=[],
-        help="let pages of this origin connect (repeatable; * wildcards; 'null' for files); "
-        "pages served from this machine always may",
+        help="let pages of this origin connect (repeatable; * wildcards; 'null' for pages "
+        "opened from files); pages served from this machine always may",
     )
     parser.add_option(
         "--token", dest="token", default=None, help="clients must send this token (auth op)"
@@ -99,18 +99,22 @@ def _port(text: str) -> int:
 
 
 def _serve(settings: BridgeOptions, env: Environment) -> int:
-    from rosx.bridge.app import Bridge  # noqa: PLC0415 - not for -h or usage errors
+    from rosx.bridge.app import BadParameterError, Bridge  # noqa: PLC0415 - not for -h or usage errors
     from rosx.node import install_signal_handlers  # noqa: PLC0415 - with the bridge
 
     bridge = Bridge(settings, log=env.out)
     try:
         bridge.start()
+    except BadParameterError as exc:
+        env.err(str(exc))
+        return 1
     except OSError as exc:
         where = f"{settings.address}:{settings.port}"
         if settings.foxglove_port is not None:
             where += f" and :{settings.foxglove_port}"
-        why = os.strerror(exc.errno).lower() if exc.errno else str(exc)
-        env.err(f"Unable to start the bridge on {where}: {why}")
+        # a name that does not resolve is a gaierror, whose errno is no errno of the system's
+        why = os.strerror(exc.errno) if exc.errno and exc.errno > 0 else exc.strerror or str(exc)
+        env.err(f"Unable to start the bridge on {where}: {why[:1].lower()}{why[1:]}")
         return 1
     stop = threading.Event()
     install_signal_handlers(lambda reason: stop.set())

@@ -68,6 +68,7 @@ class Bridge:
 
         Raises:
             MasterUnreachable: no master answers.
+            BadParameterError: a private parameter (``~port``…) is not what it names.
             OSError: a port cannot be bound.
         """
         options = self.options
@@ -129,13 +130,13 @@ class Bridge:
 
         port = param("port")
         if port is not None:
-            options.port = int(port)
+            options.port = _whole("~port", port, "a port number (0 to 65535)", 0, 65535)
         address = param("address")
         if address is not None:
             options.address = address
         size = param("max_message_size")
         if size is not None:
-            options.max_message = int(size)
+            options.max_message = _whole("~max_message_size", size, "a number of bytes", 1, None)
         origins = param("allow_origin")
         if origins is not None:
             options.allow_origins = tuple(origins.replace(",", " ").split())
@@ -169,8 +170,22 @@ class Bridge:
         self.shutdown("bridge closed")
 
 
+class BadParameterError(ValueError):
+    """A private parameter of the bridge that cannot be what it names (the message says so)."""
+
+
+def _whole(name: str, text: str, what: str, low: int, high: int | None) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = low - 1
+    if value < low or (high is not None and value > high):
+        raise BadParameterError(f"{name}: {text!r} is not {what}")
+    return value
+
+
 def _url_host(address: str) -> str:
     return f"[{address}]" if ":" in address else address
 
 
-__all__ = ["Bridge", "BridgeOptions"]
+__all__ = ["BadParameterError", "Bridge", "BridgeOptions"]

@@ -1,7 +1,8 @@
 """The bridge's side of the ROS graph: one node whose topics and services serve every client.
 
 `GraphSide` carries out the events of the clients' sessions (`rosx.bridge.ops`) through the
-node runtime's public API: one publisher per topic however many clients advertise it, one
+node runtime's public API: one publisher per topic however many clients advertise it (what
+it publishes in its first second also reaches the subscribers still connecting, `early`), one
 subscription per topic however many clients subscribe (taking messages as their serialized
 bytes, so a cbor-raw client costs no decoding and a topic needs no known type), one service
 per service a client advertises. A topic's message is encoded once per encoding and its
@@ -22,6 +23,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 from rosx.bridge import ops
 from rosx.bridge.convert import ConversionError
+from rosx.bridge.early import EarlyMessages
 from rosx.bridge.outgoing import Outgoing
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import ServiceError
@@ -58,11 +60,13 @@ class Client(Protocol):
 
 
 class _Advertised:
-    __slots__ = ("clients", "publisher")
+    __slots__ = ("clients", "early", "publisher")
 
     def __init__(self, publisher: Publisher) -> None:
         self.publisher = publisher
         self.clients: set[Client] = set()
+        self.early = EarlyMessages()
+        publisher.add_watcher(self.early)
 
 
 class _Subscribed:
@@ -124,6 +128,7 @@ class GraphSide:
             entry = self._advertised.get(event.topic)
             if entry is None:  # the advertisement was refused (another client's type)
                 raise ValueError(f"{event.topic} is not advertised by this client")
+            entry.early.keep(event.message)
             entry.publisher.publish(event.message)
         elif isinstance(event, ops.Subscribe):
             self._subscribe(client, event)

@@ -2,10 +2,13 @@
 
 A web page the user visits could open a WebSocket to ``ws://localhost:9090`` and drive their
 robot; browsers always send the page's ``Origin`` header, so the server refuses origins not on
-its allow-list. By default only pages served from this machine (``localhost``, ``127.x.x.x``,
-``[::1]``, any port) are allowed; programs that send no ``Origin`` (roslibpy, node) are not
-browsers and pass. ``--allow-origin`` adds patterns (``*`` wildcards, ``null`` for pages
-opened from files, ``*`` for any).
+its allow-list. By default only pages of this machine are allowed: served from it
+(``localhost``, ``127.x.x.x``, ``[::1]``, any port), or opened from one of its files where the
+browser says so (``file://``, Chromium with ``--allow-file-access-from-files``); programs that
+send no ``Origin`` (roslibpy, node) are not browsers and pass. Browsers otherwise give a page
+opened from a file the origin ``null``, which sandboxed frames of any web site have too, so
+``null`` is refused unless ``--allow-origin null`` says otherwise (``*`` wildcards, ``*`` for
+any); a refused page's line in the log names the option that lets it in.
 
 With a token, a client proves it knows the token with rosbridge's ``auth`` op, either as the
 ``mac`` itself or as rosauth's MAC: ``sha512(token + client + dest + rand + t + level + end)``
@@ -26,8 +29,16 @@ _LOCAL_HOSTS = ("localhost", "::1")
 AUTH_WINDOW = 300
 
 
+#: The origin of a page opened from a file of this machine, where the browser tells it (Chromium
+#: with ``--allow-file-access-from-files``); otherwise such a page's origin is ``null``.
+FILE_ORIGIN = "file://"
+
+
 def is_local_origin(origin: str) -> bool:
-    """Whether ``origin`` is a page served from this machine (http or https, any port)."""
+    """Whether ``origin`` is a page of this machine: served from it (http or https, any port),
+    or opened from one of its files (`FILE_ORIGIN`)."""
+    if origin == FILE_ORIGIN:
+        return True
     try:
         parts = urlsplit(origin)
         host = parts.hostname or ""
@@ -64,4 +75,19 @@ def check_auth(token: str, request: dict[str, Any], now: int) -> bool:
     return hmac.compare_digest(mac.encode(), expected.encode())
 
 
-__all__ = ["AUTH_WINDOW", "check_auth", "is_local_origin", "origin_allowed"]
+def refusal(origin: str | None) -> str:
+    """The line the server logs when it refuses a page of ``origin``: what lets it in."""
+    return (
+        f"Refused a connection from a page of {origin}: not an allowed origin (--allow-origin "
+        f"{origin}, or allow_origin:={origin} with roslaunch, lets its pages connect)"
+    )
+
+
+__all__ = [
+    "AUTH_WINDOW",
+    "FILE_ORIGIN",
+    "check_auth",
+    "is_local_origin",
+    "origin_allowed",
+    "refusal",
+]

@@ -31,7 +31,7 @@ from websockets.exceptions import ConnectionClosed
 from websockets.protocol import State
 
 from rosx.bridge.protocol import DEFAULT_MAX_MESSAGE, Session
-from rosx.bridge.safety import origin_allowed
+from rosx.bridge.safety import origin_allowed, refusal
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -245,7 +245,7 @@ class BridgeServer:
         origin = request.headers.get("Origin")
         if origin_allowed(origin, self.allow_origins):
             return None
-        self.log(f"Refused a connection from a page of {origin}: not an allowed origin")
+        self.log(refusal(origin))
         return ws.respond(
             403,
             f"Origin {origin} is not allowed: start the bridge with --allow-origin {origin} "

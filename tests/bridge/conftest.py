@@ -74,13 +74,16 @@ def npm_dir() -> Path:
         marker.write_text("\n".join(NPM_PACKAGES))
     for script in JS.iterdir():
         shutil.copy(script, folder / script.name)
-    bundled = subprocess.run(
-        [str(folder / "node_modules/.bin/esbuild"), "page.mjs", "--bundle", "--format=esm",
-         "--platform=browser", "--outfile=page.js", "--log-level=warning",
-         "--alias:ws=./ws-browser.mjs"],
-        cwd=folder, capture_output=True, text=True, timeout=120, check=False,
-    )  # fmt: skip
-    assert bundled.returncode == 0, bundled.stderr
+    # a module for page.html; a classic script for file-page.html (a file's page may not load
+    # modules)
+    for form, out in (("esm", "page.js"), ("iife", "page-classic.js")):
+        bundled = subprocess.run(
+            [str(folder / "node_modules/.bin/esbuild"), "page.mjs", "--bundle", f"--format={form}",
+             "--platform=browser", f"--outfile={out}", "--log-level=warning",
+             "--alias:ws=./ws-browser.mjs"],
+            cwd=folder, capture_output=True, text=True, timeout=120, check=False,
+        )  # fmt: skip
+        assert bundled.returncode == 0, bundled.stderr
     return folder
 
 

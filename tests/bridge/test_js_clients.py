@@ -20,7 +20,7 @@ import pytest
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
-from tests.support.bridge import NodeScript, Running
+from tests.support.bridge import NodeScript, Running, start_bridge
 from tests.support.cli import clean_environ, rosx
 
 CHROMIUM = Path("/usr/bin/chromium")
@@ -128,3 +128,24 @@ def test_a_foreign_page_cannot_connect(
         f"Refused a connection from a page of http://evil.example:{page_server}" in line
         for line in running.lines
     )
+
+
+@needs_chromium
+def test_a_page_opened_from_a_file_connects_once_its_origin_is_allowed(
+    running: Running, npm_dir: Path, node_script: Callable[..., NodeScript]
+) -> None:
+    # The roslibjs tutorial's page is a file opened in the browser: its origin is "null", as
+    # sandboxed frames of any web site are, so it is refused until allowed; the log says how.
+    url = f"file://{npm_dir}/file-page.html?port={{}}"
+    refused = node_script("browser.cjs", url.format(running.port), "1")
+    assert refused.step("pose") == "error: connection closed"
+    assert refused.finish() == 0
+    assert any("(--allow-origin null, or allow_origin:=null" in line for line in running.lines)
+    bridge, _ = start_bridge(running.master, rosapi=False, allow_origins=("null",))
+    try:
+        browser = node_script("browser.cjs", url.format(bridge.port), "1")
+        (shown,) = browser.values("pose")
+        assert browser.finish() == 0
+    finally:
+        bridge.shutdown("test over")
+    assert re.fullmatch(r"x=\d+\.\d{3} y=\d+\.\d{3} theta=-?\d+\.\d{3}", shown), shown

@@ -436,6 +436,7 @@ def test_a_token_is_needed_before_anything_else() -> None:
         ("https://127.0.0.1", (), True),
         ("http://[::1]:3000", (), True),
         ("https://evil.example", (), False),
+        ("file://", (), True),
         ("null", (), False),
         ("null", ("null",), True),
         ("https://app.lichtblick.dev", ("https://*.lichtblick.dev",), True),

@@ -15,7 +15,7 @@ from collections.abc import Iterator
 import pytest
 from websockets.sync.client import connect
 
-from tests.support.cli import clean_environ, rosx
+from tests.support.cli import clean_environ, rosx, rosx_process
 
 
 @pytest.fixture
@@ -121,3 +121,29 @@ def test_a_port_in_use_is_one_line(environ: dict[str, str]) -> None:
         1,
         f"Unable to start the bridge on 127.0.0.1:{port}: address already in use\n",
     )
+
+
+def test_an_address_that_does_not_resolve_is_one_line(environ: dict[str, str]) -> None:
+    result = rosx("rosbridge", "--address", "no-such-host.invalid", "--no-rosapi", environ=environ)
+    assert (result.status, result.err) == (
+        1,
+        "Unable to start the bridge on no-such-host.invalid:9090: name or service not known\n",
+    )
+
+
+@pytest.mark.parametrize(
+    ("name", "param", "error"),
+    [
+        ("a", "_port:=http", "~port: 'http' is not a port number (0 to 65535)"),
+        ("b", "_port:=70000", "~port: '70000' is not a port number (0 to 65535)"),
+        ("c", "_max_message_size:=-3", "~max_message_size: '-3' is not a number of bytes"),
+    ],
+)
+def test_a_bad_private_parameter_is_one_line(
+    master: str, name: str, param: str, error: str
+) -> None:
+    # as `roslaunch rosbridge_server rosbridge_websocket.launch port:=http` sets it; a node
+    # name each, as the parameters stay on the master
+    program = ("rosrun", "rosbridge_server", "rosbridge_websocket", f"__name:=bridge_{name}")
+    result = rosx_process(*program, param, ROS_MASTER_URI=master, ROS_IP="127.0.0.1")
+    assert (result.status, result.err) == (1, error + "\n")

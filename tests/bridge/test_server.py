@@ -110,6 +110,57 @@ def test_a_foreign_page_is_refused_and_a_local_one_served(running: Running) -> N
     )
 
 
+def test_a_refused_page_is_told_in_the_log_how_to_let_it_in(running: Running) -> None:
+    # Browsers give a page opened from a file the origin "null", as sandboxed frames of any site.
+    with pytest.raises(InvalidStatus):
+        connect(running.url, origin=Origin("null"))
+    line = (
+        "Refused a connection from a page of null: not an allowed origin (--allow-origin null, "
+        "or allow_origin:=null with roslaunch, lets its pages connect)"
+    )
+    deadline = time.monotonic() + 10
+    while line not in running.lines:
+        assert time.monotonic() < deadline, running.lines
+        time.sleep(0.01)
+    # Chromium with --allow-file-access-from-files says "file://": a page of this machine.
+    with connect(running.url, origin=Origin("file://")) as ws:
+        pose_arrives(ws)
+
+
+def test_a_message_published_as_the_topic_is_advertised_reaches_subscribers(
+    running: Running,
+) -> None:
+    # The roslibjs tutorial's page publishes once, at load: the subscribers connect to the new
+    # publisher after the message is sent, and get it all the same (rosbridge_suite keeps a
+    # publisher's first second for them).
+    from rosx.msg.codec.classes import get_message_class
+    from rosx.node import Node
+
+    twist_class = get_message_class("geometry_msgs/Twist")
+    listener = Node("cmd_vel_listener", master_uri=running.master, environ=running.environ)
+    got: list[float] = []
+    listener.start().subscribe("/tutorial_cmd_vel", twist_class, lambda m: got.append(m.linear.x))
+    try:
+        with connect(running.url) as ws:
+            advertise = {
+                "op": "advertise",
+                "topic": "/tutorial_cmd_vel",
+                "type": "geometry_msgs/Twist",
+            }
+            ws.send(json.dumps(advertise))
+            ws.send(
+                json.dumps(
+                    {"op": "publish", "topic": "/tutorial_cmd_vel", "msg": {"linear": {"x": 0.1}}}
+                )
+            )
+            deadline = time.monotonic() + 10
+            while not got and time.monotonic() < deadline:
+                time.sleep(0.01)
+    finally:
+        listener.shutdown("test over")
+    assert got == [0.1]
+
+
 def test_a_token_guards_the_bridge(master: str) -> None:
     bridge, _ = start_bridge(master, rosapi=False, token="let-me-in")
     try:
