@@ -39,6 +39,9 @@ class FixedSource:
     def frames(self) -> list[FrameInfo]:
         return self.core.frames()
 
+    def now(self) -> float:
+        return 101.5
+
     def close(self) -> None:
         self.closed = True
 
@@ -68,7 +71,7 @@ def labels(app: TfTreeApp) -> list[str]:
 def test_the_pane_draws_the_tree_with_rates_and_delays() -> None:
     core = demo_core()
     source = FixedSource(core)
-    app = TfTreeApp(TfTreePane(source, periodic=False, clock=lambda: 101.5))
+    app = TfTreeApp(TfTreePane(source, periodic=False))
 
     async def drive() -> None:
         async with app.run_test(size=SNAPSHOT_SIZE) as pilot:

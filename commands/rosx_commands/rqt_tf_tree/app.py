@@ -15,7 +15,7 @@ from textual.containers import Vertical  # noqa: TID253 - TUI code
 from textual.widgets import Static, Tree  # noqa: TID253 - TUI code
 
 from rosx_commands.paneapp import PaneApp
-from rosx_commands.rqt_tf_tree.source import Row, now, tree_rows
+from rosx_commands.rqt_tf_tree.source import Row, tree_rows
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Sequence
@@ -59,13 +59,13 @@ class TfTreePane(Vertical):
         source: TfSource,
         *,
         periodic: bool = True,
-        clock: Callable[[], float] = now,
+        clock: Callable[[], float] | None = None,
         id: str | None = None,
     ) -> None:
         super().__init__(id=id)
         self.source = source
         self.periodic = periodic
-        self.clock = clock
+        self.clock = source.now if clock is None else clock
         self.rows: list[Row] = []
         self.error: str | None = None
 

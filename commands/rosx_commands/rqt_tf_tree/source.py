@@ -37,6 +37,10 @@ class TfSource(Protocol):
 
     def frames(self) -> Sequence[FrameInfo]: ...
 
+    def now(self) -> float:
+        """ROS time in seconds, which the delays are measured from."""
+        ...
+
     def close(self) -> None: ...
 
 
@@ -92,17 +96,19 @@ class LiveTfSource(ToolNode):
 
     def frames(self) -> Sequence[FrameInfo]:
         if self._buffer is None:
+            from rosx.node.simtime import follow_sim_time  # noqa: PLC0415 - with the node runtime
             from rosx.tf import Buffer, TransformListener  # noqa: PLC0415 - tf code loads only when used
 
             node = self._started()
+            follow_sim_time(node)  # as rqt's rospy node: /clock's time under /use_sim_time
             self._buffer = Buffer(node=node, debug=False)
             TransformListener(self._buffer, node=node)
         return self._buffer.frames()
 
+    def now(self) -> float:
+        """The node's ROS time (the wall clock before the node starts), in seconds."""
+        node = self._node
+        return time.time() if node is None else node.clock.now().to_sec()
 
-def now() -> float:
-    """The wall clock, in seconds (the time the delays are measured from)."""
-    return time.time()
 
-
-__all__ = ["LiveTfSource", "Row", "TfSource", "now", "tree_rows"]
+__all__ = ["LiveTfSource", "Row", "TfSource", "tree_rows"]

@@ -88,7 +88,7 @@ def echo_loop(
             stamp, values = buffer.lookup(source, target, 0)
             text = transform_text(stamp, values, precision)
         except TransformException as error:
-            text = failure_text(error, buffer.all_frames_as_string(), time.time_ns())
+            text = failure_text(error, buffer.all_frames_as_string(), node.clock.now().to_nsec())
         env.stdout.write(text)
         env.stdout.flush()
         # ros::Rate: each tick one period after the last; a late loop starts afresh.

@@ -10,14 +10,13 @@ broadcaster of a static frame reads ``<node>(static)``: its real name, where ROS
 from __future__ import annotations
 
 import threading
-import time
 from collections import deque
 from typing import TYPE_CHECKING, Any
 
 from rosx_commands.tf_tools import anonymous
 
 if TYPE_CHECKING:
-    from collections.abc import Sequence
+    from collections.abc import Callable, Sequence
 
     from rosx.node import Node
     from rosx.tf import Buffer
@@ -38,7 +37,7 @@ class Stats:
         self.arrivals: dict[str, deque[float]] = {}
 
     def heard(self, message: Any, static: bool, now: float) -> None:
-        """Account one TFMessage (``now``: the wall clock in seconds)."""
+        """Account one TFMessage (``now``: ROS time in seconds, ``/clock``'s under sim time)."""
         header = getattr(message, "_connection_header", None) or {}
         who = header.get("callerid", "unknown_publisher") + ("(static)" if static else "")
         total = 0.0
@@ -139,10 +138,13 @@ def monitor(
             return
     stats = Stats()
     tf_message = get_message_class("tf2_msgs/TFMessage")
-    node.subscribe("tf", tf_message, lambda m: stats.heard(m, False, time.time()), queue_size=100)
-    node.subscribe(
-        "tf_static", tf_message, lambda m: stats.heard(m, True, time.time()), queue_size=100
-    )
+    clock = node.clock
+
+    def heard(static: bool) -> Callable[[Any], None]:
+        return lambda message: stats.heard(message, static, clock.now().to_sec())
+
+    node.subscribe("tf", tf_message, heard(False), queue_size=100)
+    node.subscribe("tf_static", tf_message, heard(True), queue_size=100)
     average = largest = 0.0
     counter = 0
     while not node.is_shutdown():
@@ -150,7 +152,7 @@ def monitor(
         if chain is not None:
             try:
                 stamp, _ = buffer.lookup(frame_a or "", frame_b or "", 0)
-                delay = time.time() - stamp / 1e9
+                delay = clock.now().to_sec() - stamp / 1e9
                 average = 0.01 * delay + 0.99 * average
                 largest = max(largest, delay)
             except TransformException:

@@ -1,7 +1,8 @@
 """Running one of tf's C++ tools as a process: its node, until a signal or a shutdown.
 
 The node starts once the master answers (roscpp's ``Failed to contact master … Retrying...``
-until then); the tool's body runs on a thread of its own while the main thread waits for
+until then) and keeps ROS time as roscpp does (``/clock`` when ``/use_sim_time`` is set); the
+tool's body runs on a thread of its own while the main thread waits for
 SIGINT/SIGTERM or the node's shutdown (``rosnode kill``), after which the node leaves the graph
 and the exit status is 0, as with roscpp.
 """
@@ -23,6 +24,7 @@ if TYPE_CHECKING:
 
 def run_node(args: NodeArgs, env: Environment, body: Callable[[Node], object]) -> int:
     """Start ``args``' node, run ``body(node)`` beside the wait; 0 once stopped."""
+    from rosx.node.simtime import follow_sim_time  # noqa: PLC0415 - the node runtime loads with the node
     from rosx_turtle.console import Console  # noqa: PLC0415 - turtlesim's parts load only when used
     from rosx_turtle.program import master_address, run_until_stopped  # noqa: PLC0415 - turtlesim's parts load only when used
 
@@ -31,6 +33,7 @@ def run_node(args: NodeArgs, env: Environment, body: Callable[[Node], object]) -
     def start() -> Node:
         node = args.make_node(env.environ)
         node.start()
+        follow_sim_time(node)
         args.set_private_params(node)
         worker = threading.Thread(target=_guarded, args=(body, node), daemon=True)
         worker.start()

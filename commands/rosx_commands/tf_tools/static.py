@@ -121,8 +121,6 @@ def static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
             return 1
 
     def body(node: Node) -> None:
-        import time  # noqa: PLC0415 - time is not needed at start-up
-
         from rosx.tf import StaticTransformBroadcaster  # noqa: PLC0415 - tf code loads only when used
 
         if not transform:
@@ -149,7 +147,7 @@ def static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
             transform[:] = found
         parent, child, values = transform
         StaticTransformBroadcaster(node=node).sendTransform(
-            _message(parent, child, time.time_ns(), values)
+            _message(parent, child, node.clock.now().to_nsec(), values)
         )
         console.print(INFO, f"Spinning until killed publishing {parent} to {child}")
         node.wait_for_shutdown()
@@ -201,15 +199,21 @@ def tf_static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
     ahead = round(period * 1e9)
 
     def body(node: Node) -> None:
-        import time  # noqa: PLC0415 - time is not needed at start-up
-
+        from rosx.node.errors import NodeShutdownError, TimeMovedBackwardsError  # noqa: PLC0415 - with the node runtime
         from rosx.tf import TransformBroadcaster  # noqa: PLC0415 - tf code loads only when used
 
         broadcaster = TransformBroadcaster(node=node)
+        # stamped ahead in ROS time and paced by it, as roscpp's: under simulated time it
+        # follows /clock (and waits for the first), so lookups in the simulator's time work
         while not node.is_shutdown():
-            broadcaster.sendTransform(_message(parent, child, time.time_ns() + ahead, values))
-            if node.wait_for_shutdown(max(period, 0.0)):
+            stamp = node.clock.now().to_nsec() + ahead
+            broadcaster.sendTransform(_message(parent, child, stamp, values))
+            try:
+                node.clock.sleep(max(period, 0.0), shutdown=node.shutdown_event)
+            except NodeShutdownError:
                 break
+            except TimeMovedBackwardsError:
+                continue
 
     from rosx_commands.tf_tools.running import run_node  # noqa: PLC0415 - this tool's parts load only when used
 
