@@ -11,9 +11,10 @@ of it that rosx does not carry out gets a CMake warning naming its file and line
 (`rosx.workspace.cmake.unsupported`), never silence. ``devel/``
 receives ``setup.sh``, ``setup.bash`` and ``setup.zsh``, which export Noetic's environment
 with the source space in front of ``ROS_PACKAGE_PATH`` (where rosx finds packages and their
-types), put rosx's ``rospy`` on ``PYTHONPATH``, define ``roscd``/``rosls`` and put ROS 1's
-command names (programs in ``devel/bin``) in front of ``PATH``, and ``.catkin``,
-which marks ``devel/`` as a workspace (``roscd`` with no argument goes there). With the
+types; ``devel/share/<pkg>/msg/`` holds the messages generated from ``.action`` files, as
+genaction writes them), put rosx's ``rospy`` on ``PYTHONPATH``, define ``roscd``/``rosls``
+and put ROS 1's command names (programs in ``devel/bin``) in front of ``PATH``, and
+``.catkin``, which marks ``devel/`` as a workspace (``roscd`` with no argument goes there). With the
 ``install`` target, ``install/`` is written too (`rosx.workspace.install`). C++ targets are
 named once, as not built: rosx compiles nothing.
 
@@ -222,6 +223,7 @@ class CatkinMake:
             yield f"-- ~~  - {manifest.name}"
         yield _RULE
         built: list[PackageTypes] = []
+        actions: list[tuple[str, Path]] = []
         cpp = _cpp_targets(ordered)
         if cpp:
             yield NO_CPP + "; ".join(f"{pkg} ({', '.join(names)})" for pkg, names in cpp)
@@ -237,6 +239,7 @@ class CatkinMake:
             for path in type_paths(manifest, chosen)["action"]:
                 yield f"-- Generating .msg files for action {manifest.name}/{path.stem} {path}"
                 yield f"Generating for action {path.stem}"
+                actions.append((manifest.name, path))
             types = build_types(manifest, self._package_path(), chosen)
             yield (
                 f"-- {manifest.name}: {len(types.messages)} messages, "
@@ -246,7 +249,7 @@ class CatkinMake:
         yield "-- Configuring done"
         yield "-- Generating done"
         yield f"-- Build files have been written to: {layout.build}"
-        self._write(built)
+        self._write(built, actions)
         yield from _progress(built)
         if self.install:
             from rosx.workspace.install import install_space  # noqa: PLC0415 - workspace code loads only when used
@@ -294,7 +297,7 @@ class CatkinMake:
             chosen[folder] = [*(chosen.get(folder) or []), *declared.files]
         return chosen
 
-    def _write(self, built: list[PackageTypes]) -> None:
+    def _write(self, built: list[PackageTypes], actions: list[tuple[str, Path]]) -> None:
         layout = self.layout
         (layout.build / "CATKIN_IGNORE").touch()
         (layout.build / ".built_by").write_text("catkin_make", encoding="utf-8")
@@ -306,6 +309,16 @@ class CatkinMake:
         (devel / ".built_by").write_text("catkin_make", encoding="utf-8")
         for name, text in self._setup_files(layout.source, devel).items():
             (devel / name).write_text(text, encoding="utf-8")
+        if actions:
+            from rosx.msg.parser import action_texts  # noqa: PLC0415 - for packages with actions
+
+        for package, path in actions:
+            # genaction's seven messages, where catkin puts them (`ls devel/share/PKG/msg/`)
+            folder = devel / "share" / package / "msg"
+            folder.mkdir(parents=True, exist_ok=True)
+            text = path.read_text(encoding="utf-8")
+            for suffix, message in action_texts(path.stem, text).items():
+                (folder / f"{path.stem}{suffix}.msg").write_text(message, encoding="utf-8")
 
     def _setup_files(self, source: Path, space: Path) -> dict[str, str]:
         """The setup files of a space (devel or install) whose packages are in ``source``;

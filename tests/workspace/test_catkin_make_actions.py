@@ -3,12 +3,14 @@ each, the files it names are the ones built, and no command is ignored silently.
 
 from __future__ import annotations
 
+import subprocess
 from pathlib import Path
 
 import pytest
 
 from tests.support.cli import Result, clean_environ, rosx
 from tests.support.packages import package
+from tests.support.ros1 import ROS1_PYTHON, needs_ros1, ros1_environ
 
 CMAKELISTS = """\
 cmake_minimum_required(VERSION 3.0.2)
@@ -64,6 +66,30 @@ def test_an_action_is_generated_as_genaction_does(
         "[100%] Generating Python from MSG lab3/DriveFeedback\n"
         "[100%] Built target lab3_generate_messages_py\n"
     )
+
+
+GENACTION = Path("/usr/lib/actionlib_msgs/genaction.py")
+
+
+@needs_ros1
+@pytest.mark.skipif(not GENACTION.exists(), reason="Debian's actionlib_msgs is not installed")
+def test_the_generated_messages_are_in_devel_share_as_genaction_writes_them(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # The actionlib tutorial checks its build with `ls devel/share/actionlib_tutorials/msg/`.
+    directory = lab3(tmp_path)
+    assert catkin_make(tmp_path, monkeypatch).status == 0
+    theirs = tmp_path / "genaction"
+    subprocess.run(
+        [ROS1_PYTHON, str(GENACTION), "-o", str(theirs), str(directory / "action" / "Drive.action")],
+        env=ros1_environ(), capture_output=True, timeout=60, check=True,
+    )  # fmt: skip
+    ours = tmp_path / "devel" / "share" / "lab3" / "msg"
+    names = sorted(p.name for p in theirs.iterdir())
+    assert len(names) == 7
+    assert sorted(p.name for p in ours.iterdir()) == names
+    for name in names:
+        assert (ours / name).read_bytes() == (theirs / name).read_bytes(), name
 
 
 def test_the_files_cmakelists_names_are_the_ones_built(
