@@ -25,6 +25,10 @@ from tests.support.cli import clean_environ
 ROOT = Path(__file__).parents[2]
 
 
+#: How a program's first screen may take to come on a loaded machine (seconds).
+STARTUP = 60.0
+
+
 def needs_tmux() -> str:
     """tmux's path; skips the test where there is none."""
     path = shutil.which("tmux")
@@ -170,6 +174,27 @@ class Tmux:
                         os.killpg(int(pid), signal.SIGKILL)
         finally:
             self._run("kill-server")
+
+
+def footer(rows: list[str]) -> list[str]:
+    """The words of the last row that shows anything."""
+    return next(row for row in reversed(rows) if row.strip()).split()
+
+
+def fits_and_shows_how_to_quit(term: Tmux, columns: int) -> None:
+    """No line is wider than the terminal, and the footer begins with the quit key."""
+    rows = term.wait_for("Quit")
+    assert footer(rows)[:2] == ["q", "Quit"], rows
+    lines = term.lines()
+    assert all(len(line) <= columns for line in lines), lines
+
+
+def quits_on_ctrl_c(term: Tmux) -> None:
+    """Ctrl-C ends the program, and without a traceback."""
+    term.keys("C-c")
+    assert term.ended()
+    lines = term.lines()
+    assert not any("Traceback" in line for line in lines), lines
 
 
 def _running(pid: str) -> bool:

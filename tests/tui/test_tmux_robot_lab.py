@@ -11,8 +11,7 @@ import pytest
 
 from rosx_turtle.stage.view.picture import HIT
 from tests.support.procs import free_port
-from tests.support.tmux import Tmux
-from tests.tui.test_tmux_screens import STARTUP, fits_and_shows_how_to_quit, quits_on_ctrl_c
+from tests.support.tmux import STARTUP, Tmux, fits_and_shows_how_to_quit, quits_on_ctrl_c
 
 SIZES = [(80, 24), (120, 40)]
 HIT_COLOUR = ";".join(str(part) for part in HIT)

@@ -11,18 +11,19 @@ import pytest
 from rosx_turtle.engine.constants import DEFAULT_BACKGROUND
 from rosx_turtle.sim.host import SimHost
 from tests.support.procs import free_port
-from tests.support.tmux import Cell, Tmux, needs_tmux
+from tests.support.tmux import (
+    STARTUP,
+    Cell,
+    Tmux,
+    fits_and_shows_how_to_quit,
+    footer,
+    needs_tmux,
+    quits_on_ctrl_c,
+)
 
 SIZES = [(80, 24), (120, 40)]
-#: How a program's first screen may take to come on a loaded machine (seconds).
-STARTUP = 60.0
 POND_BLUE = ";".join(str(part) for part in DEFAULT_BACKGROUND)
 HALF_BLOCK = "\u2580"
-
-
-def footer(rows: list[str]) -> list[str]:
-    """The words of the last row that shows anything."""
-    return next(row for row in reversed(rows) if row.strip()).split()
 
 
 def has_words(rows: list[str], *words: str) -> bool:
@@ -67,22 +68,6 @@ def turtle_in_the_pond(screen: list[list[Cell]]) -> bool:
     ys, xs = [y for y, _ in turtle], [x for _, x in turtle]
     # Within a cell: the middle may fall between two.
     return min(ys) - 1 <= middle_y <= max(ys) + 1 and min(xs) - 1 <= middle_x <= max(xs) + 1
-
-
-def fits_and_shows_how_to_quit(term: Tmux, columns: int) -> None:
-    """No line is wider than the terminal, and the footer begins with the quit key."""
-    rows = term.wait_for("Quit")
-    assert footer(rows)[:2] == ["q", "Quit"], rows
-    lines = term.lines()
-    assert all(len(line) <= columns for line in lines), lines
-
-
-def quits_on_ctrl_c(term: Tmux) -> None:
-    """Ctrl-C ends the program, and without a traceback."""
-    term.keys("C-c")
-    assert term.ended()
-    lines = term.lines()
-    assert not any("Traceback" in line for line in lines), lines
 
 
 @pytest.fixture
