@@ -23,7 +23,8 @@ as git treats its index's "racy" entries. A cache that cannot be read or written
 the path is crawled, as without one.
 
 The file is ``ROS_HOME/rosx_packages_<hash of the path>``, written whole under another name and
-renamed, so a reader sees the old file or the new one.
+renamed, so a reader sees the old file or the new one. Its format and the check are
+`rosx.packages.kept`, which a <TAB> reads without the rest of the index.
 """
 
 from __future__ import annotations
@@ -32,20 +33,18 @@ import contextlib
 import marshal
 import os
 import time
-import zlib
 from pathlib import Path
 
+from rosx.packages import kept as kept_format
 from rosx.packages.crawl import Seen, find_packages
 
 #: Changes younger than this may not have moved a file system's times yet (FAT: 2 s).
 RACY_SECONDS = 2.0
-_VERSION = 2
 
 
 def cache_file(folder: Path, roots: list[Path]) -> Path:
     """Where the crawl of ``roots`` is kept in ``folder`` (``ROS_HOME``)."""
-    key = zlib.crc32(os.pathsep.join(str(r) for r in roots).encode())
-    return folder / f"rosx_packages_{key:08x}"
+    return Path(kept_format.kept_file(str(folder), [str(r) for r in roots]))
 
 
 class KeptCrawl:
@@ -55,7 +54,11 @@ class KeptCrawl:
     def __init__(self, roots: list[Path], folder: Path | None) -> None:
         self.roots = roots
         self.folder = folder
-        self._kept = _load(cache_file(folder, roots), roots) if folder and roots else None
+        self._kept = (
+            kept_format.read_kept(str(cache_file(folder, roots)), [str(r) for r in roots])
+            if folder and roots
+            else None
+        )
         self._directories_checked = 0
         self._manifests_checked = 0
 
@@ -90,7 +93,7 @@ class KeptCrawl:
         crawl are as they were (those checked before are not checked again)."""
         assert self._kept is not None
         _, kept_directories, kept_manifests = self._kept
-        if not _unchanged(
+        if not kept_format.unchanged(
             kept_directories[self._directories_checked : directories],
             kept_manifests[self._manifests_checked : manifests],
         ):
@@ -107,47 +110,13 @@ def cached_packages(roots: list[Path], folder: Path | None) -> dict[str, Path]:
     return KeptCrawl(roots, folder).packages()
 
 
-_Kept = tuple[dict[str, tuple[str, int, int]], list[tuple[str, int]], list[tuple[str, int, int]]]
-
-
-def _load(path: Path, roots: list[Path]) -> _Kept | None:
-    try:
-        data = marshal.loads(path.read_bytes())
-        version, kept_roots, packages, directories, manifests = data
-        if version != _VERSION or kept_roots != [str(r) for r in roots]:
-            return None
-        by_name = {name: (directory, listed, at) for name, directory, listed, at in packages}
-    except (OSError, EOFError, ValueError, TypeError):
-        return None
-    return by_name, directories, manifests
-
-
-def _unchanged(directories: list[tuple[str, int]], manifests: list[tuple[str, int, int]]) -> bool:
-    stat = os.stat
-    for directory, changed in directories:
-        try:
-            now = stat(directory).st_ctime_ns
-        except OSError:  # a root that was not there (-1) may still not be
-            now = -1
-        if now != changed:
-            return False
-    for manifest, changed, size in manifests:
-        try:
-            now_stat = stat(manifest)
-        except OSError:
-            return False
-        if now_stat.st_ctime_ns != changed or now_stat.st_size != size:
-            return False
-    return True
-
-
 def _write(path: Path, roots: list[Path], found: dict[str, Path], seen: Seen, started: int) -> None:
     newest = started - int(RACY_SECONDS * 1e9)
     times = [t for _, t in seen.directories] + [t for _, t, _ in seen.manifests]
     if any(t > newest for t in times):
         return  # racy: a change within the file system's resolution could go unseen
     data = (
-        _VERSION,
+        kept_format.VERSION,
         [str(r) for r in roots],
         [(name, str(directory), *seen.positions[name]) for name, directory in found.items()],
         seen.directories,

@@ -10,24 +10,22 @@ The packages rosx ships are data files of the wheel, under one prefix laid out a
 Noetic's dependency facts), its ``msg/`` and ``srv/`` files (the original texts, comments
 included) and its scripts; ``lib/<package>/`` holds the programs rosrun finds there, as catkin's
 ``libexec`` folders. turtlesim's package directory is the ``rosx_turtle`` Python package itself,
-beside its code (`BUNDLED_MODULES`).
+beside its code. `rosx.packages.bundled` finds them; here they are paths.
 """
 
 from __future__ import annotations
 
-import importlib.util
 import os
 import re
 from functools import cache
 from pathlib import Path
 
+from rosx.packages import bundled
+
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
 
 #: The install prefix of the ROS packages shipped with rosx (``share/``, ``lib/``).
-PREFIX = Path(__file__).parent / "noetic"
-
-#: Python packages shipped with rosx that hold ROS package directories (found, not imported).
-BUNDLED_MODULES = ("rosx_turtle",)
+PREFIX = Path(bundled.PREFIX)
 
 
 def package_name(manifest: Path) -> str | None:
@@ -112,20 +110,7 @@ def _crawl(directory: str, found: dict[str, Path], seen: Seen | None) -> None:
 @cache
 def bundled_packages() -> dict[str, Path]:
     """The ROS package directories shipped with rosx (`PREFIX`'s and turtlesim's), by name."""
-    # rosx's own folders are named as their packages (a test checks it): no manifest is read.
-    # share/ros is ROS_ROOT, without a package.xml (see its README).
-    share = PREFIX / "share"
-    found = {
-        entry.name: share / entry.name
-        for entry in sorted(share.iterdir(), key=str)
-        if (entry / "package.xml").is_file()
-    }
-    for module in BUNDLED_MODULES:
-        spec = importlib.util.find_spec(module)
-        if spec is not None and spec.origin is not None:
-            for name, directory in find_packages([Path(spec.origin).parent]).items():
-                found.setdefault(name, directory)
-    return found
+    return {name: Path(folder) for name, folder in bundled.bundled_folders().items()}
 
 
 def bundled_libexec(package: str) -> Path | None:

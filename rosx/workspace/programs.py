@@ -30,7 +30,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
 from rosx.packages import crawl
-from rosx.packages.crawl import BUNDLED_MODULES, bundled_libexec, bundled_packages
+from rosx.packages.bundled import BUNDLED_MODULES, provided_names
+from rosx.packages.crawl import bundled_libexec, bundled_packages
 from rosx.workspace.executables import executable_names, find_executables, is_python_script
 
 if TYPE_CHECKING:
@@ -77,13 +78,9 @@ def program_names(package: str) -> list[str]:
 
 @cache
 def provided_packages() -> tuple[str, ...]:
-    """The ROS packages rosx provides: bundled folders, and packages with programs in ``lib/``."""
-    try:
-        with os.scandir(crawl.PREFIX / "lib") as listing:
-            with_programs = {entry.name for entry in listing if entry.is_dir()}
-    except OSError:
-        with_programs = set()
-    return tuple(sorted(with_programs | set(bundled_packages())))
+    """The ROS packages rosx provides: bundled folders, and packages with programs in ``lib/``
+    (`rosx.packages.bundled.provided_names`)."""
+    return tuple(provided_names())
 
 
 def is_provided(package: str) -> bool:

@@ -15,6 +15,7 @@ from rosx.packages import cache as package_cache
 from rosx.packages.cache import cache_file, cached_packages
 from rosx.packages.crawl import find_packages
 from rosx.packages.index import PackageIndex
+from rosx.packages.kept import kept_find, listed_packages, root_text
 from tests.support.cli import clean_environ, rosx
 from tests.support.packages import package
 
@@ -162,3 +163,41 @@ def test_one_package_is_found_checking_what_comes_before_it(
     assert index(roots, home).find("lab2") == src / "group" / "deep_pkg"  # "group" < "lab2"
     kept(roots, home)
     assert index(roots, home).directories("lab2") == [src / "group" / "deep_pkg"]
+
+
+# -- what rospack list, rospack find and a <TAB> read without the index ----------------------
+
+
+def environ_of(roots: list[Path], home: Path) -> dict[str, str]:
+    return clean_environ(ROS_PACKAGE_PATH=":".join(str(r) for r in roots), ROS_HOME=str(home))
+
+
+def test_the_kept_crawl_answers_as_the_index_while_it_holds(
+    tree: tuple[list[Path], Path],
+) -> None:
+    """`rosx.packages.kept` reads the kept crawl with os alone: the index's list and the
+    index's find, and no answer (the index then crawls) once what they depend on changed."""
+    roots, home = tree
+    src, system, _ = roots
+    env = environ_of(roots, home)
+    assert listed_packages(env) is None and kept_find(env, "lab2") is None  # nothing kept yet
+    kept(roots, home)
+    whole = index(roots, home)
+    assert listed_packages(env) == {name: str(d) for name, d in whole.packages.items()}
+    assert "turtlesim" in whole.packages  # rosx's own, after the path's
+    for name in ("lab2", "deep_pkg", "roscpp", "turtlesim"):
+        assert kept_find(env, name) == str(whole.find(name))
+    assert kept_find(env, "nowhere") is None
+    package(system / "zz_later", "late_pkg")  # after the workspace in the crawl's order
+    assert kept_find(env, "lab2") == str(src / "lab2")  # nothing before it changed
+    assert kept_find(env, "roscpp") is None  # its own folder changed: the index answers
+    assert kept_find(env, "turtlesim") is None  # the path could now hide rosx's own
+    assert listed_packages(env) is None
+
+
+@pytest.mark.parametrize(
+    "entry", ["/usr/share", "/usr/share/", "//net/share", "///usr//share/./", "ws/src", "./ws", "."]
+)
+def test_the_kept_crawl_names_its_roots_as_pathlib_writes_them(entry: str) -> None:
+    assert root_text(entry) == str(Path(entry))
+

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import pytest
 
+from rosx.packages.bundled import BUNDLED_MODULES
 from rosx.packages.crawl import PREFIX, bundled_packages
 from rosx.packages.manifest import check_manifest, read_manifest
 from tests.support.cli import clean_environ, rosx
@@ -190,3 +191,11 @@ def test_dependencies_are_what_debians_rospack_computes_over_the_same_manifests(
         theirs_on = set(_debian("depends-on1", package, package_path=path).split())
         assert ours_on <= theirs_on, package
         assert all(name not in bundled_packages() for name in theirs_on - ours_on), package
+
+
+def test_each_bundled_module_is_the_folder_of_the_package_it_is_named_for() -> None:
+    """`rosx.packages.bundled` names them without reading their manifests (a <TAB> lists them)."""
+    for module, name in BUNDLED_MODULES.items():
+        folder = bundled_packages()[name]
+        assert folder.name == module
+        assert read_manifest(folder).name == name

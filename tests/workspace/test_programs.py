@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 
 from rosx.launch.run.runner import provided_program
-from rosx.packages import crawl
+from rosx.packages import bundled, crawl
 from rosx.workspace import programs
 from rosx.workspace.programs import (
     bundled_program,
@@ -138,6 +138,7 @@ def prefix(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
                 (directory / "package.xml").read_text()
             )
     monkeypatch.setattr(crawl, "PREFIX", root)
+    monkeypatch.setattr(bundled, "PREFIX", str(root))
     _forget_the_tree()
     yield root
     _forget_the_tree()
