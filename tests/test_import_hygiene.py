@@ -191,3 +191,44 @@ def test_rqt_tools_load_no_tui_before_they_draw(argv: list[str]) -> None:
         f"run_tool({argv!r}, Environment(stdout=io.StringIO(), stderr=io.StringIO(), environ={{}}))"
     )
     assert not {m for m in loaded if m.split(".")[0] in ("textual", "textual_plot", "numpy")}
+
+
+def test_a_tab_for_package_names_loads_neither_pathlib_nor_the_index(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The Python a shell's <TAB> starts (no ``site``) reads the kept crawl with ``os`` alone;
+    ``rospack list`` and ``find`` do too."""
+    import shlex
+
+    from rosx.packages import cache
+    from rosx_commands.invocation import complete_command
+    from tests.support.packages import package
+
+    monkeypatch.setattr(cache, "RACY_SECONDS", 0.0)  # the tree was made a moment ago
+    package(tmp_path / "src", "lab2")
+    environ = {"ROS_PACKAGE_PATH": str(tmp_path / "src"), "ROS_HOME": str(tmp_path / "home")}
+    cache.cached_packages([tmp_path / "src"], tmp_path / "home")  # kept by an earlier command
+    python, *flags, code = shlex.split(complete_command())
+    # What it loaded, said as it exits (atexit is built in, as the modules it needs are).
+    said = "import atexit; atexit.register(lambda: print('', *sorted(sys.modules))); "
+    code = code.replace("from rosx_commands", said + "from rosx_commands")
+    done = subprocess.run(
+        [python, *flags, code, "1", "roscd", "la"],
+        env=environ,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    offered, loaded = done.stdout.split("\0")
+    assert offered == "lab2/"
+    light = set(loaded.split())
+    assert "rosx.packages.kept" in light
+    assert not light & {"pathlib", "re", "enum", "rosx.packages.index", "rosx.packages.crawl"}
+    for argv in (["rospack", "list"], ["rospack", "find", "lab2"]):
+        by_rospack = _modules_after(
+            "import io\nfrom rosx_commands.context import Environment\n"
+            "from rosx_commands.main import run_tool\n"
+            f"run_tool({argv!r}, Environment(stdout=io.StringIO(), environ={environ!r}))"
+        )
+        assert "rosx.packages.kept" in by_rospack
+        assert not by_rospack & {"pathlib", "rosx.packages.index", "rosx.packages.crawl"}

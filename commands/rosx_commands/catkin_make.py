@@ -73,7 +73,7 @@ def _catkin_make(argv: list[str], env: Environment) -> int:
 
     from rosx.workspace.build import CatkinMake, workspace_layout  # noqa: PLC0415 - workspace code loads only when used
     from rosx.workspace.errors import BuildError  # noqa: PLC0415 - workspace code loads only when used
-    from rosx_commands.invocation import self_command, working_directory  # noqa: PLC0415 - this tool's parts load only when used
+    from rosx_commands.invocation import complete_command, self_command, working_directory  # noqa: PLC0415 - this tool's parts load only when used
     from rosx_commands.scripts import shim_dirs  # noqa: PLC0415 - this tool's parts load only when used
 
     layout = workspace_layout(working_directory(env), args.directory, args.source, args.build)
@@ -90,6 +90,7 @@ def _catkin_make(argv: list[str], env: Environment) -> int:
         commands=[name for name in ROS_COMMANDS if name in TOOLS],
         only=only,
         install="install" in targets,
+        complete=complete_command(),
     )
     try:
         if not layout.base.exists():

@@ -9,20 +9,29 @@ options, the live graph's nodes, topics, services and parameters (asked of the m
 short timeout: no master, no candidates), message and service types, and the YAML prototype of
 a message after ``rostopic pub TOPIC TYPE`` or ``rosservice call SERVICE``. Nothing printed
 means the shell's own file-name completion.
+
+A <TAB> must answer at once, so the shell functions do not run ``rosx complete``: they start
+Python for `main` alone, without ``site`` (the module path is given,
+`rosx_commands.invocation.complete_command`). Package names, what most <TAB>s ask, come from
+the package index's kept crawl, checked with ``os`` alone (`rosx.packages.kept`: never stale,
+a package made a moment ago is offered), and rosx's own packages (`rosx.packages.bundled`);
+nothing else is imported for them: no ``pathlib``, no ``re``, not the index. Only when the kept
+crawl cannot tell does the index crawl (and keep its crawl for the next <TAB>).
 """
 
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
-from pathlib import Path
-
-from rosx_commands.context import Environment, ExitStatus
+import sys
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from collections.abc import Callable, Mapping, Sequence
+    from pathlib import Path
+
     from rosx.msg.store import TypeStore
     from rosx.packages.index import PackageIndex
+    from rosx_commands.context import Environment
 
 #: Seconds the master has to answer a completion's question.
 MASTER_TIMEOUT = 0.5
@@ -72,11 +81,11 @@ _ROSLAUNCH_OPTIONS = (
 class _Line:
     """The command line being completed."""
 
-    def __init__(self, words: list[str], cword: int, env: Environment) -> None:
+    def __init__(self, words: list[str], cword: int, environ: Mapping[str, str]) -> None:
         self.words = words
         self.cword = cword
         self.current = words[cword] if cword < len(words) else ""
-        self.env = env
+        self.environ = environ
         self._index: PackageIndex | None = None
         self._store: TypeStore | None = None
 
@@ -88,15 +97,28 @@ class _Line:
         if self._index is None:
             from rosx.packages.index import PackageIndex  # noqa: PLC0415 - the package index loads only when used
 
-            self._index = PackageIndex.from_environ(self.env.environ)
+            self._index = PackageIndex.from_environ(self.environ)
         return self._index
+
+    def package_names(self) -> list[str]:
+        """Every package's name, sorted (``rospack list-names``): from the kept crawl while it
+        is unchanged, else from the index (which crawls)."""
+        from rosx.packages.kept import listed_packages  # noqa: PLC0415 - the index's parts load only when used
+
+        return list(listed_packages(self.environ) or self.index.packages)
+
+    @property
+    def master_uri(self) -> str:
+        from rosx.master.defaults import master_uri  # noqa: PLC0415 - the master's address only to talk to one
+
+        return master_uri(self.environ)
 
     @property
     def store(self) -> TypeStore:
         if self._store is None:
             from rosx.msg.store import TypeStore  # noqa: PLC0415 - the type store loads on first use
 
-            self._store = TypeStore.from_environ(self.env.environ)
+            self._store = TypeStore.from_environ(self.environ)
         return self._store
 
     def package_dir(self, name: str) -> Path | None:
@@ -104,6 +126,8 @@ class _Line:
 
 
 def _walk_files(line: _Line, package: str) -> list[Path]:
+    from pathlib import Path  # noqa: PLC0415 - a <TAB> for package names does without it
+
     from rosx.packages.crawl import libexec_dir  # noqa: PLC0415 - the package index loads only when used
 
     directory = line.package_dir(package)
@@ -138,7 +162,7 @@ def _locations(line: _Line) -> list[str]:
     """``roscd``/``rosls``: ``pkg/``, or the folders below ``pkg/sub/``."""
     current = line.current
     if "/" not in current:
-        return [f"{name}/" for name in [*line.index.packages, "log"]]
+        return [f"{name}/" for name in [*line.package_names(), "log"]]
     package, _, rest = current.partition("/")
     base = line.package_dir(package)
     if base is None:
@@ -158,7 +182,7 @@ def _master_lists(line: _Line, what: str) -> list[str]:
     from rosx.master.client import MasterClient, MasterError  # noqa: PLC0415 - the master's code loads only to talk to one
     from rosx.transport.errors import TransportError  # noqa: PLC0415 - the network code loads only to talk
 
-    master = MasterClient(line.env.master_uri, "/rosx_complete", timeout=MASTER_TIMEOUT)
+    master = MasterClient(line.master_uri, "/rosx_complete", timeout=MASTER_TIMEOUT)
     try:
         if what == "params":
             return sorted(str(n) for n in master.getParamNames())
@@ -178,7 +202,7 @@ def _topic_type(line: _Line, topic: str) -> str | None:
     from rosx.master.client import MasterClient, MasterError  # noqa: PLC0415 - the master's code loads only to talk to one
     from rosx.transport.errors import TransportError  # noqa: PLC0415 - the network code loads only to talk
 
-    master = MasterClient(line.env.master_uri, "/rosx_complete", timeout=MASTER_TIMEOUT)
+    master = MasterClient(line.master_uri, "/rosx_complete", timeout=MASTER_TIMEOUT)
     try:
         return master.topic_types().get(topic)
     except (MasterError, TransportError, OSError):
@@ -222,9 +246,9 @@ def _rosrun(line: _Line) -> list[str]:
     if line.cword == start:
         if line.current.startswith("-"):
             return ["--prefix", "--debug"]
-        from rosx.workspace.programs import provided_packages  # noqa: PLC0415 - rosrun only
+        from rosx.packages.bundled import provided_names  # noqa: PLC0415 - rosrun only
 
-        return sorted({*line.index.packages, *provided_packages()})
+        return sorted({*line.package_names(), *provided_names()})
     if line.cword == start + 1:
         return _executables(line, line.word(start))
     return []
@@ -232,7 +256,7 @@ def _rosrun(line: _Line) -> list[str]:
 
 def _by_package(line: _Line, second: list[str]) -> list[str]:
     if line.cword == 1:
-        return list(line.index.packages)
+        return line.package_names()
     if line.cword == 2:
         return second
     return []
@@ -242,9 +266,12 @@ def _roslaunch(line: _Line) -> list[str]:
     if line.current.startswith("--"):
         return _ROSLAUNCH_OPTIONS.split()
     if line.cword == 1:
-        here = Path(line.env.environ.get("PWD") or ".")
-        local = sorted(p.name for p in here.glob("*") if p.suffix in (".launch", ".test"))
-        return [*line.index.packages, *local]
+        try:
+            here = os.listdir(line.environ.get("PWD") or ".")  # noqa: PTH208 - a <TAB> does without pathlib
+        except OSError:
+            here = []
+        local = sorted(n for n in here if os.path.splitext(n)[1] in (".launch", ".test"))  # noqa: PTH122
+        return [*line.package_names(), *local]
     first = line.word(1)
     if line.cword == 2 and not first.endswith((".launch", ".test")):
         return _files(line, first, (".launch", ".test"))
@@ -258,7 +285,7 @@ def _launch_args(line: _Line) -> list[str]:
     given = [w for w in line.words[1 : line.cword] if ":=" not in w][:2]
     try:
         files, _ = resolve_launch_arguments(given, line.index)
-        plan = load_launch(files, {}, line.env.environ, line.index, args_only=True, core_params={})
+        plan = load_launch(files, {}, line.environ, line.index, args_only=True, core_params={})
     except (LaunchError, OSError, ValueError):
         return []
     return [f"{name}:=" for name in plan.arg_docs]
@@ -325,7 +352,7 @@ def _service_proto(line: _Line, service: str) -> list[str]:
     from rosx.node.service_client import probe_service  # noqa: PLC0415 - the node runtime loads with the first node
     from rosx.transport.errors import TransportError  # noqa: PLC0415 - the network code loads only to talk
 
-    master = MasterClient(line.env.master_uri, "/rosx_complete", timeout=MASTER_TIMEOUT)
+    master = MasterClient(line.master_uri, "/rosx_complete", timeout=MASTER_TIMEOUT)
     try:
         header = probe_service(master, service, timeout=MASTER_TIMEOUT)
     except (ServiceError, MasterError, TransportError, OSError):
@@ -343,19 +370,19 @@ def _rosmsg(line: _Line, kind: str) -> list[str]:
     if sub in ("show", "info", "users", "md5"):
         return _types(line, kind)
     if sub == "package":
-        return list(line.index.packages)
+        return line.package_names()
     return []
 
 
 def candidates(line: _Line) -> list[str]:
     """Every candidate for the current word (before filtering by what is typed)."""
-    command = Path(line.word(0)).name
+    command = os.path.basename(line.word(0))  # noqa: PTH119 - a <TAB> does without pathlib
     if command == "rosx" and line.cword == 1:
         from rosx_commands.tools import TOOLS  # noqa: PLC0415 - this tool's parts load only when used
 
         return [*TOOLS, "roscd", "rosls"]
     if command == "rosx":
-        return candidates(_Line(line.words[1:], line.cword - 1, line.env))
+        return candidates(_Line(line.words[1:], line.cword - 1, line.environ))
     if line.cword == 1 and command in _SUBCOMMANDS:
         return _SUBCOMMANDS[command].split()
     sub = line.word(1)
@@ -363,7 +390,7 @@ def candidates(line: _Line) -> list[str]:
         case "roscd" | "rosls":
             return _locations(line) if line.cword == 1 else []
         case "rospack" | "catkin_create_pkg" | "rosversion":
-            return list(line.index.packages)
+            return line.package_names()
         case "rosrun":
             return _rosrun(line)
         case "rosed" | "roscp":
@@ -395,19 +422,39 @@ def candidates(line: _Line) -> list[str]:
 
 def complete(argv: Sequence[str], env: Environment) -> int:
     """Print the candidates for ``complete CWORD WORD…``, each followed by a NUL."""
+    return _complete(argv, env.environ, env.stdout.write, env.err)
+
+
+def main() -> None:
+    """``rosx complete`` for a shell's <TAB>, in a Python started for it alone (see the module's
+    docstring): the words after ``-c`` are the command's."""
+    sys.exit(_complete(sys.argv[1:], os.environ, sys.stdout.write, _print_error))
+
+
+def _print_error(text: str) -> None:
+    sys.stderr.write(text + "\n")
+
+
+def _complete(
+    argv: Sequence[str],
+    environ: Mapping[str, str],
+    write: Callable[[str], object],
+    error: Callable[[str], None],
+) -> int:
+    # Exit statuses as numbers: the <TAB>'s Python does not load the tools' enum.
     args = list(argv)
     if not args or not args[0].isdigit():
-        env.err("usage: rosx complete CWORD WORD...")
-        return ExitStatus.USAGE
-    line = _Line(args[1:], int(args[0]), env)
+        error("usage: rosx complete CWORD WORD...")
+        return 2
+    line = _Line(args[1:], int(args[0]), environ)
     try:
         found = candidates(line)
     except Exception:
-        return ExitStatus.ERROR
+        return 1
     typed = line.current
     shown = list(dict.fromkeys(c for c in found if c.startswith((typed, '"'))))
-    env.stdout.write("".join(f"{c}\0" for c in shown))
-    return ExitStatus.OK
+    write("".join(f"{c}\0" for c in shown))
+    return 0
 
 
-__all__ = ["candidates", "complete"]
+__all__ = ["candidates", "complete", "main"]

@@ -33,7 +33,7 @@ def shell_init(argv: Sequence[str], env: Environment) -> int:
     """Print the shell code for the shell named in ``argv`` (bash by default)."""
     from rosx.workspace.shell import ROS_COMMANDS, SHELLS  # noqa: PLC0415 - workspace code loads only when used
     from rosx.workspace.shell import shell_init as code  # noqa: PLC0415 - workspace code loads only when used
-    from rosx_commands.invocation import self_command  # noqa: PLC0415 - this tool's parts load only when used
+    from rosx_commands.invocation import complete_command, self_command  # noqa: PLC0415 - this tool's parts load only when used
     from rosx_commands.tools import TOOLS  # noqa: PLC0415 - this tool's parts load only when used
 
     args = list(argv)
@@ -50,7 +50,7 @@ def shell_init(argv: Sequence[str], env: Environment) -> int:
     commands = [name for name in ROS_COMMANDS if name in TOOLS]
     rosx = self_command()
     folder = _written_folder(env, rosx, commands)
-    env.stdout.write(code(rosx, shell, commands, folder))
+    env.stdout.write(code(rosx, shell, commands, folder, complete_command()))
     return ExitStatus.OK
 
 

@@ -155,11 +155,14 @@ class CatkinMake:
         commands: Sequence[str] = (),
         only: list[str] | None = None,
         install: bool = False,
+        complete: str | None = None,
     ) -> None:
         self.layout = layout
         self.environ = environ
         self.shim_dirs = list(shim_dirs)
         self.rosx = rosx
+        #: How the setup files' <TAB> runs ``rosx complete`` (`rosx.workspace.completion`).
+        self.complete = complete
         #: ROS 1's command names, written as programs in each space's ``bin/``.
         self.commands = list(commands)
         self.only = only
@@ -336,7 +339,9 @@ class CatkinMake:
             )
         }
         for shell in ("bash", "zsh"):
-            files[f"setup.{shell}"] = setup_for_shell(shell, str(space), self.rosx, self.commands)
+            files[f"setup.{shell}"] = setup_for_shell(
+                shell, str(space), self.rosx, self.commands, self.complete
+            )
         return files
 
 

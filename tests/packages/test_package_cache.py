@@ -6,7 +6,9 @@ is seen by the next command (rospack's cache may answer from 60 s before).
 
 from __future__ import annotations
 
+import shlex
 import shutil
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -201,3 +203,28 @@ def test_the_kept_crawl_answers_as_the_index_while_it_holds(
 def test_the_kept_crawl_names_its_roots_as_pathlib_writes_them(entry: str) -> None:
     assert root_text(entry) == str(Path(entry))
 
+
+def tab(environ: dict[str, str], *words: str) -> list[str]:
+    """What a shell's <TAB> offers after ``words``: the Python the shell functions start."""
+    from rosx_commands.invocation import complete_command
+
+    argv = [*shlex.split(complete_command()), str(len(words) - 1), *words]
+    done = subprocess.run(
+        argv, env=environ, capture_output=True, text=True, timeout=60, check=False
+    )
+    assert done.returncode == 0, done.stderr
+    return [c for c in done.stdout.split("\0") if c]
+
+
+def test_a_tab_offers_a_package_made_a_moment_ago(tree: tuple[list[Path], Path]) -> None:
+    roots, home = tree
+    src = roots[0]
+    env = environ_of(roots, home)
+    kept(roots, home)
+    assert tab(env, "roscd", "la") == ["lab2/"]
+    package(src, "lab3")
+    assert tab(env, "roscd", "la") == ["lab2/", "lab3/"]
+    assert tab(env, "rosrun", "lab") == ["lab2", "lab3"]
+    kept(roots, home)
+    shutil.rmtree(src / "lab3")
+    assert tab(env, "rospack", "find", "la") == ["lab2"]
