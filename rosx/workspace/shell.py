@@ -211,15 +211,20 @@ def setup_for_shell(
     )
 
 
-#: ``_rosx_joined WORD…``: the command that the first words make joined with ``_`` (the longest
-#: of ``$_rosx_names``), with the other words; nothing when they make none.
+#: ``_rosx_joined WORD…``: the command that the first words make joined with ``_`` or with
+#: nothing (the longest of ``$_rosx_names``; `rosx.names.typos.joined`), with the other words;
+#: nothing when they make none.
 _JOINED = """\
 _rosx_joined() {
-  _rosx_try="$1"; _rosx_best=""; _rosx_n=0; _rosx_at=0
+  _rosx_try="$1"; _rosx_glued="$1"; _rosx_best=""; _rosx_n=0; _rosx_at=0
   shift
   for _rosx_w in "$@"; do
-    _rosx_try="${_rosx_try}_$_rosx_w"; _rosx_at=$((_rosx_at + 1))
-    case " $_rosx_names " in *" $_rosx_try "*) _rosx_best="$_rosx_try"; _rosx_n=$_rosx_at ;; esac
+    _rosx_try="${_rosx_try}_$_rosx_w"; _rosx_glued="$_rosx_glued$_rosx_w"
+    _rosx_at=$((_rosx_at + 1))
+    case " $_rosx_names " in
+      *" $_rosx_try "*) _rosx_best="$_rosx_try"; _rosx_n=$_rosx_at ;;
+      *" $_rosx_glued "*) _rosx_best="$_rosx_glued"; _rosx_n=$_rosx_at ;;
+    esac
   done
   if [ -n "$_rosx_best" ]; then
     shift "$_rosx_n"

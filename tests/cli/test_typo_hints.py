@@ -60,6 +60,10 @@ def graph(master: str, make_node: Callable[..., Node]) -> str:
          "[rosparam] Did you mean /turtlesim/background_r? (rosparam get /turtlesim/background_r)"),
         (["rqt", "graph"], 2, "rqt: error: unexpected argument 'graph'",
          "[rqt] Did you mean rqt_graph? (rqt_graph)"),
+        (["rospack", "find", "turtle", "sim"], 1,
+         "[rospack] Error: failed to parse command-line options: too many positional options "
+         "have been specified on the command line",
+         "[rospack] Did you mean turtlesim? (rospack find turtlesim)"),
     ],
 )  # fmt: skip
 def test_words_typed_with_spaces_name_the_command_meant(
@@ -88,6 +92,13 @@ def test_the_shell_names_catkin_make_for_catkin_make_typed_with_a_space(
     said = next(i for i, line in enumerate(lines) if "catkin" in line)
     assert "command not found" in lines[said]  # the shell's own words (or its handler's) first
     assert lines[said + 1] == "[rosx] Did you mean catkin_make? (catkin_make -j4)"
+    glued = user.run(
+        "ros launch turtlesim multisim.launch\necho status=$?", shell, interactive=True
+    )
+    assert glued.stdout.splitlines()[-1] == "status=127"
+    assert glued.stderr.splitlines()[-1] == (
+        "[rosx] Did you mean roslaunch? (roslaunch turtlesim multisim.launch)"
+    )
     other = user.run("no_such_program here\necho status=$?", shell, interactive=True)
     assert other.stdout.splitlines()[-1] == "status=127" and "[rosx]" not in other.stderr
 

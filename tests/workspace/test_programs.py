@@ -213,6 +213,10 @@ def test_a_package_bundled_is_provided_everywhere_with_no_list_to_edit(
             "[rosrun] Did you mean rqt_graph? (rosrun rqt_graph rqt_graph)",
         ),
         (["turtlesm", "turtlesim_node"], "[rosrun] Did you mean turtlesim? (rosrun turtlesim turtlesim_node)"),
+        # a name broken across a line: both words make it, and both go
+        (["turtle", "sim", "turtlesim_node"], "[rosrun] Did you mean turtlesim? (rosrun turtlesim turtlesim_node)"),
+        (["turtle", "sim", "turtle", "teleop", "key"],
+         "[rosrun] Did you mean turtlesim? (rosrun turtlesim turtle_teleop_key)"),
         (["gazebo_ros", "gzserver"], "[rosx] gazebo_ros is not part of rosx"),
         (["turtlebot3_teleop", "x"], "[rosx] turtlebot3_teleop is not part of rosx"),
     ],
@@ -258,6 +262,11 @@ def test_roslaunch_of_what_rosx_lacks_says_so_after_ros1s_error() -> None:
     assert roslaunch(["turtlesim", "multisim.lauch"], env) == 1
     assert err.getvalue().splitlines()[1] == (
         "[roslaunch] Did you mean multisim.launch? (roslaunch turtlesim multisim.launch)"
+    )
+    env, err = _terminal()
+    assert roslaunch(["turtle", "sim", "multisim.launch"], env) == 1
+    assert err.getvalue().splitlines()[1] == (
+        "[roslaunch] Did you mean turtlesim? (roslaunch turtlesim multisim.launch)"
     )
     env, err = _terminal()
     assert roslaunch(["turtlesim", "turtlemimic.launch"], env) == 1
