@@ -121,8 +121,15 @@ class _Line:
             self._store = TypeStore.from_environ(self.environ)
         return self._store
 
-    def package_dir(self, name: str) -> Path | None:
-        return self.index.packages.get(name)
+    def package_dir(self, name: str) -> str | None:
+        """Package ``name``'s folder: from the kept crawl (what precedes it on the path
+        checked), else from the index."""
+        from rosx.packages.kept import kept_find  # noqa: PLC0415 - the index's parts load only when used
+
+        found = kept_find(self.environ, name)
+        if found is None and name in self.index.packages:
+            found = str(self.index.packages[name])
+        return found
 
 
 def _walk_files(line: _Line, package: str) -> list[Path]:
@@ -130,9 +137,10 @@ def _walk_files(line: _Line, package: str) -> list[Path]:
 
     from rosx.packages.crawl import libexec_dir  # noqa: PLC0415 - the package index loads only when used
 
-    directory = line.package_dir(package)
-    if directory is None:
+    folder = line.package_dir(package)
+    if folder is None:
         return []
+    directory = Path(folder)
     found: list[Path] = []
     for root in [r for r in (libexec_dir(directory), directory) if r is not None]:
         for here, subdirs, files in os.walk(root, followlinks=True):
@@ -168,7 +176,7 @@ def _locations(line: _Line) -> list[str]:
     if base is None:
         return []
     parent, _, _ = rest.rpartition("/")
-    folder = base / parent if parent else base
+    folder = os.path.join(base, parent) if parent else base  # noqa: PTH118 - a <TAB> does without pathlib
     try:
         names = sorted(e.name for e in os.scandir(folder) if e.is_dir() and e.name[:1] != ".")
     except OSError:
