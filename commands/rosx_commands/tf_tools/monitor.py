@@ -118,6 +118,7 @@ def monitor(
     """tf_monitor's loop: report every 21 lookups 10 ms apart, until the node shuts down."""
     from rosx.client.timing import Time  # noqa: PLC0415 - the rospy API loads only when used
     from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
+    from rosx.node.errors import NodeShutdownError  # noqa: PLC0415 - with the node runtime
     from rosx.tf import TransformException  # noqa: PLC0415 - tf code loads only when used
 
     out = env.stdout
@@ -139,6 +140,10 @@ def monitor(
     stats = Stats()
     tf_message = get_message_class("tf2_msgs/TFMessage")
     clock = node.clock
+    try:  # under simulated time, delays are measured once /clock has come (not from 0)
+        clock.sleep(0.0, shutdown=node.shutdown_event)
+    except NodeShutdownError:
+        return
 
     def heard(static: bool) -> Callable[[Any], None]:
         return lambda message: stats.heard(message, static, clock.now().to_sec())

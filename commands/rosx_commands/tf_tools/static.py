@@ -204,7 +204,12 @@ def tf_static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
 
         broadcaster = TransformBroadcaster(node=node)
         # stamped ahead in ROS time and paced by it, as roscpp's: under simulated time it
-        # follows /clock (and waits for the first), so lookups in the simulator's time work
+        # follows /clock, so lookups in the simulator's time work; nothing is stamped before
+        # the first /clock (roscpp's would stamp 0.1 s)
+        try:
+            node.clock.sleep(0.0, shutdown=node.shutdown_event)
+        except NodeShutdownError:
+            return
         while not node.is_shutdown():
             stamp = node.clock.now().to_nsec() + ahead
             broadcaster.sendTransform(_message(parent, child, stamp, values))
