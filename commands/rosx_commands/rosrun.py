@@ -57,13 +57,11 @@ def _suggest(
         return  # off a terminal the output stays ROS 1's, for scripts that read it
     from rosx.workspace.executables import suggestion  # noqa: PLC0415 - a name not found
 
-    meant = suggestion(executable, rest, _program_names(package, directory))
-    if meant is None:
+    found = suggestion(executable, rest, _program_names(package, directory))
+    if found is None:
         return
-    words = meant.count("_") - executable.count("_")
-    joined = "_".join([executable, *rest[:words]]) == meant
-    args = rest[words:] if joined else rest
-    command = " ".join(["rosrun", package, meant, *args])
+    meant, words = found
+    command = " ".join(["rosrun", package, meant, *rest[words - 1 :]])
     env.err(f"[rosrun] Did you mean {meant}? ({command})")
 
 

@@ -80,19 +80,20 @@ def executable_names(package_dir: Path) -> list[str]:
     return sorted({path.name for path in _walk(package_dir) if _runnable(path)})
 
 
-def suggestion(name: str, following: list[str], known: list[str]) -> str | None:
-    """The executable a user most likely meant by ``name`` among ``known``: ``name`` joined to
-    the next arguments by ``_`` (spaces typed for underscores, as in ``turtle teleop key``),
-    else the closest name, if one is close."""
+def suggestion(name: str, following: list[str], known: list[str]) -> tuple[str, int] | None:
+    """The executable a user most likely meant by ``name`` among ``known``, with how many of
+    the words ``name, *following`` it stands for: ``name`` joined to the next arguments by
+    ``_`` or nothing (spaces typed for underscores, as in ``turtle teleop key``, or in a name,
+    `rosx.names.typos.joined`), else the closest name, if one is close (one word)."""
     from rosx.names.typos import joined  # noqa: PLC0415 - only for a name not found
 
     found = joined([name, *following], set(known))
     if found is not None:
-        return found[0]
+        return found
     import difflib  # noqa: PLC0415 - only for a name not found
 
     close = difflib.get_close_matches(name, known, n=1, cutoff=0.6)
-    return close[0] if close else None
+    return (close[0], 1) if close else None
 
 
 def is_python_script(path: Path) -> bool:

@@ -238,6 +238,7 @@ def test_rosrun_of_an_unknown_package_says_what_was_meant_on_a_terminal(
     [
         (["turtle", "teleop", "key"], "[rosrun] Did you mean turtle_teleop_key? (rosrun turtlesim turtle_teleop_key)"),
         (["turtlesim", "node", "__name:=a"], "[rosrun] Did you mean turtlesim_node? (rosrun turtlesim turtlesim_node __name:=a)"),
+        (["turtle", "sim_node", "__name:=a"], "[rosrun] Did you mean turtlesim_node? (rosrun turtlesim turtlesim_node __name:=a)"),
     ],
 )  # fmt: skip
 def test_rosrun_of_an_executable_typed_with_spaces_names_it(argv: list[str], line: str) -> None:
