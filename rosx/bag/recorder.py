@@ -6,7 +6,8 @@ connection header; each (topic, header) pair becomes one connection of the bag, 
 
 The contract (ROS 1's ``rosbag record``, tools/rosbag/src/recorder.cpp):
 
-* A callback only stamps the message with the wall clock and queues it; one writer thread
+* A callback only stamps the message with ROS time (the wall clock, or ``/clock`` under
+  ``/use_sim_time``) and queues it; one writer thread
   writes the queue to the bag, so a slow disk never stalls a subscription. The queue holds at
   most ``buffer_size`` bytes (0: unbounded); when full, the oldest queued message is dropped with
   ROS 1's warning (at most one every 5 s). Every message the queue holds when recording stops
@@ -168,7 +169,14 @@ class Recorder:
 
     def start(self) -> None:
         """Subscribe to the named topics, open the first bag, start the writer (and discovery,
-        when asked)."""
+        when asked).
+
+        As ROS 1's (roscpp's ``ros::Time::now()``), messages are stamped with ROS time: with
+        ``/use_sim_time`` set, the time on ``/clock``, and nothing is recorded while it reads 0.
+        """
+        from rosx.node.simtime import follow_sim_time  # noqa: PLC0415 - with the recording
+
+        follow_sim_time(self.node)
         if self.options.publish:
             from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
@@ -288,7 +296,13 @@ class Recorder:
     # -- the queue ---------------------------------------------------------------------------
 
     def _on_message(self, topic: str, msg: RawMessage) -> None:
-        stamp = time.time_ns()
+        clock = self.node.clock
+        if clock.is_wallclock:
+            stamp = time.time_ns()
+        else:
+            stamp = clock.now().to_nsec()
+            if stamp == 0:  # no /clock yet: ROS 1's rosbag record waits for a valid time
+                return
         if self._stopping.is_set() or topic in self._done_topics:
             return
         data = msg._buff

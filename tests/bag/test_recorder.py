@@ -15,6 +15,7 @@ from rosx.bag.player import Player, PlayOptions
 from rosx.bag.reader import BagReader
 from rosx.bag.recorder import Recorder, RecordOptions
 from rosx.msg.codec.classes import get_message_class
+from rosx.msg.codec.rostime import Time
 from rosx.node import Node
 from tests.support.procs import wait_for
 
@@ -125,3 +126,36 @@ class _Sink:
 
     def write(self, data: bytes) -> None:
         self.buff += data
+
+
+def _wait_for_time(recorder: Recorder, seconds: float) -> None:
+    wait_for(lambda: recorder.node.clock.now().to_sec() == seconds, what=f"time {seconds}")
+
+
+def _wait_for_count(recorder: Recorder, count: int) -> None:
+    wait_for(lambda: recorder.written + len(recorder._queue) >= count, what=f"{count} messages")
+
+
+def test_under_sim_time_messages_carry_the_clocks_time(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    """As ROS 1's rosbag record (roscpp's time): with /use_sim_time, the time on /clock."""
+    talker = make_node("simulator")
+    talker.params.set("/use_sim_time", True)
+    try:
+        clock = talker.advertise("/clock", get_message_class("rosgraph_msgs/Clock"), queue_size=10)
+        pub = talker.advertise("/chatter", String, queue_size=None)
+        recorder = _record(make_node("record"), tmp_path / "sim", topics=["/chatter"])
+        wait_for(lambda: pub.get_num_connections() == 1, what="the recorder")
+        wait_for(lambda: clock.get_num_connections() == 1, what="the recorder on /clock")
+        for count, seconds in enumerate((1000, 1001), 1):
+            clock.publish(get_message_class("rosgraph_msgs/Clock")(clock=Time.from_sec(seconds)))
+            _wait_for_time(recorder, seconds)
+            pub.publish(String(data=f"at {seconds}"))
+            _wait_for_count(recorder, count)  # recorded before the clock moves on
+        recorder.stop()
+    finally:
+        talker.params.delete("/use_sim_time")  # the master is the module's
+    with BagReader(tmp_path / "sim.bag") as bag:
+        seen = [(String().deserialize(d).data, t) for _, t, d in bag.messages()]
+    assert seen == [("at 1000", 1000 * 10**9), ("at 1001", 1001 * 10**9)]
