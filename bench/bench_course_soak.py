@@ -127,35 +127,49 @@ class Parts:
     def rosx(self, *args: str) -> list[str]:
         return [sys.executable, "-m", "rosx_commands", *args]
 
-    def start(self, argv: list[str], **options: Any) -> subprocess.Popen[bytes]:
-        options.setdefault("stdout", subprocess.DEVNULL)
-        options.setdefault("stderr", subprocess.DEVNULL)
-        return subprocess.Popen(
-            argv, env=self.env, cwd=self.folder, start_new_session=True, **options
-        )
+    def start(self, name: str, argv: list[str]) -> subprocess.Popen[bytes]:
+        """Start a part; what it prints goes to ``NAME.log`` in the soak's folder."""
+        with (self.folder / f"{name}.log").open("ab") as log:
+            return subprocess.Popen(
+                argv,
+                env=self.env,
+                cwd=self.folder,
+                stdin=subprocess.DEVNULL,
+                stdout=log,
+                stderr=subprocess.STDOUT,
+                start_new_session=True,
+            )
 
-    def keep(self, name: str, argv: list[str], **options: Any) -> None:
-        self.long_lived[name] = self.start(argv, **options)
+    def last_words(self, name: str, lines: int = 5) -> str:
+        """The end of what a part printed."""
+        log = self.folder / f"{name}.log"
+        if not log.exists():
+            return "    (it ran in a terminal)"
+        text = log.read_text(errors="replace").splitlines()
+        return "\n".join(f"    {line}" for line in text[-lines:])
+
+    def keep(self, name: str, argv: list[str]) -> None:
+        self.long_lived[name] = self.start(name, argv)
 
     def restartable_part(self, name: str, argv: list[str]) -> None:
-        self.restartable[name] = (argv, self.start(argv))
+        self.restartable[name] = (argv, self.start(name, argv))
 
     def restart(self, name: str) -> None:
         argv, process = self.restartable[name]
         with contextlib.suppress(ProcessLookupError):
             os.killpg(process.pid, signal.SIGKILL)
         process.wait(10)
-        self.restartable[name] = (argv, self.start(argv))
+        self.restartable[name] = (argv, self.start(name, argv))
         self.restarts += 1
 
     def in_terminal(self, name: str, argv: list[str]) -> None:
         """Run a terminal app on a pseudo-terminal of 120x40, its output read and dropped."""
         leader, follower = pty.openpty()
         fcntl.ioctl(follower, termios.TIOCSWINSZ, struct.pack("HHHH", 40, 120, 0, 0))
-        self.env_tty = {**self.env, "TERM": "xterm-256color", "COLUMNS": "120", "LINES": "40"}
+        env = {**self.env, "TERM": "xterm-256color", "COLUMNS": "120", "LINES": "40"}
         self.long_lived[name] = subprocess.Popen(
             argv,
-            env=self.env_tty,
+            env=env,
             cwd=self.folder,
             stdin=follower,
             stdout=follower,
@@ -397,6 +411,8 @@ def main() -> None:  # noqa: PLR0915 - one scenario, read top to bottom
                 time.sleep(0.2)
             dead = [n for n in names if parts.long_lived[n].poll() is not None]
             print(f"\nprocesses that died: {', '.join(dead) or 'none'}")
+            for part in dead:
+                print(f"  {part}, last lines:\n{parts.last_words(part)}")
             print(
                 f"{parts.restarts} restarts; /soak/seq {sequence.received} received, "
                 f"{sequence.lost} lost; bridge {clients.sessions} sessions, {clients.messages} "
