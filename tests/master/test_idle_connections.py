@@ -65,6 +65,7 @@ def test_master_answers_beside_more_idle_connections_than_descriptors() -> None:
             # At least as many as the limit could not hold.
             wait_for(
                 lambda: closed_by_peer(idle) >= CONNECTIONS - 1024,
+                timeout=60,
                 what="idle connections to be closed",
             )
         log.seek(0)
