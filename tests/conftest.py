@@ -8,6 +8,7 @@ depend on them.
 from __future__ import annotations
 
 import os
+import sys
 import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -41,6 +42,36 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
         parts = item.path.relative_to(TESTS).parts
         kind = "tree" if len(parts) == 1 else KINDS.get(parts[0], "unit")
         item.add_marker(kind)
+
+
+def _import_state() -> tuple[str | None, list[str], list[str]]:
+    """What a program run in this process changes of its imports: ``PYTHONPATH``, which ROS 1's
+    Python started later inherits, rosx's folders on ``sys.path`` (the shim folders), and
+    rosx's import finders (``<package>.msg`` from the type store)."""
+    rosx = str(Path(sys.modules["rosx"].__file__ or "").parent)
+    return (
+        os.environ.get("PYTHONPATH"),
+        [entry for entry in sys.path if entry.startswith(rosx + os.sep)],
+        [type(f).__qualname__ for f in sys.meta_path if type(f).__module__.startswith("rosx.")],
+    )
+
+
+@pytest.fixture(autouse=True)
+def _imports_put_back() -> Iterator[None]:
+    """Fail the test that leaves its changes to the process's imports to the tests after it
+    (a program run in-process, as rosrun runs rosx's own): ROS 1's Python started by a later
+    test would import rosx's shims, and a later test's imports would go through rosx's finders."""
+    before = _import_state()
+    saved = os.environ.get("PYTHONPATH"), list(sys.path), list(sys.meta_path)
+    yield
+    after = _import_state()
+    if after != before:
+        environ, sys.path[:], sys.meta_path[:] = saved
+        if environ is None:
+            os.environ.pop("PYTHONPATH", None)
+        else:
+            os.environ["PYTHONPATH"] = environ
+        pytest.fail(f"the test left its imports changed: {before} -> {after}", pytrace=False)
 
 
 @pytest.fixture(scope="module")

@@ -6,6 +6,7 @@ Each script runs in a child process, as ``rosx rosrun`` runs it, so that the imp
 
 from __future__ import annotations
 
+import os
 import signal
 import subprocess
 import sys
@@ -16,7 +17,7 @@ import pytest
 from rosx.client.script import SHIM_DIR
 from rosx_commands.scripts import shim_dirs
 from tests.support.cli import clean_environ
-from tests.support.ros1 import needs_ros1, ros1_python_imports, ros1_python_with_path
+from tests.support.ros1 import needs_ros1, ros1_python, ros1_python_imports, ros1_python_with_path
 from tests.support.scripts import json_of, run_script
 
 NUM_PACKAGE = """\
@@ -232,6 +233,21 @@ def test_ros1s_python_gets_ros1s_module_with_every_shim_folder_on_its_path(
         return
     assert done.returncode == 0, done.stderr
     assert done.stdout == f"/usr/lib/python3/dist-packages/{name}/__init__.py\n"
+
+
+@needs_ros1
+def test_the_ros1_reference_keeps_its_modules_when_the_run_has_the_shim_folders(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # As in a shell that sourced a workspace: ROS 1's Python, started from the checkout (where
+    # it could import rosx), must still be ROS 1 alone.
+    monkeypatch.setenv("PYTHONPATH", os.pathsep.join(str(d) for d in shim_dirs()))
+    files = ros1_python(
+        "import json, genpy, rospy; print(json.dumps([genpy.__file__, rospy.__file__]))"
+    )
+    assert files == [
+        f"/usr/lib/python3/dist-packages/{name}/__init__.py" for name in ("genpy", "rospy")
+    ]
 
 
 @pytest.mark.parametrize("module", ["rospy.exceptions"])

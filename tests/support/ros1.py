@@ -48,11 +48,30 @@ ROS1 = ros1_available()
 needs_ros1 = pytest.mark.skipif(not ROS1, reason="the ROS 1 reference is not installed")
 
 
+#: rosx's package folder: the shim folders (``rospy``, ``tf2_ros``…) are in it.
+_ROSX = Path(__file__).resolve().parents[2] / "rosx"
+
+
 def ros1_environ(**extra: str) -> dict[str, str]:
-    """The environment ROS 1's tools need (as ../shared/tools/ros1-reference prints it)."""
-    env = {k: v for k, v in os.environ.items() if not k.startswith("ROS_")}
+    """The environment ROS 1's tools need (as ../shared/tools/ros1-reference prints it).
+
+    rosx's shim folders on the run's ``PYTHONPATH`` (a shell that sourced a workspace's
+    ``devel/setup.bash``) are left out: run from the checkout, where ROS 1's Python can import
+    rosx, they would give it rosx's ``rospy`` instead of its own.
+    """
+    env = _without_rosx({k: v for k, v in os.environ.items() if not k.startswith("ROS_")})
     env["ROS_PACKAGE_PATH"] = f"{OVERLAY}:/usr/share"
     env.update(extra)
+    return env
+
+
+def _without_rosx(environ: dict[str, str]) -> dict[str, str]:
+    """``environ`` without rosx's folders on its ``PYTHONPATH``."""
+    env = dict(environ)
+    entries = [entry for entry in env.pop("PYTHONPATH", "").split(os.pathsep) if entry]
+    kept = [entry for entry in entries if _ROSX not in (p := Path(entry).resolve(), *p.parents)]
+    if kept:
+        env["PYTHONPATH"] = os.pathsep.join(kept)
     return env
 
 
@@ -116,6 +135,8 @@ def roscore(kind: str) -> Iterator[str]:
     else:
         core = [sys.executable, "-m", "rosx_commands", "roscore", "-p", str(port)]
     environ = {k: v for k, v in os.environ.items() if not k.startswith("ROS_")}
+    if kind == "ros1-roscore":
+        environ = _without_rosx(environ)
     with running(core, {**environ, "ROS_MASTER_URI": uri}):
         wait_for(lambda: port_open(port), what=kind)
         yield uri

@@ -188,6 +188,7 @@ def test_a_package_bundled_is_provided_everywhere_with_no_list_to_edit(
     assert callable(started)
     # It runs in this process, as a script does: what it changes of the process is put back.
     monkeypatch.setattr(sys, "path", list(sys.path))
+    monkeypatch.setattr(sys, "meta_path", list(sys.meta_path))  # rosx's finders of msg modules
     monkeypatch.setattr(sys, "argv", list(sys.argv))
     monkeypatch.setitem(sys.modules, "__main__", sys.modules["__main__"])
     monkeypatch.setenv("PYTHONPATH", os.environ.get("PYTHONPATH", ""))
