@@ -8,7 +8,9 @@ computed, classes built), so a mistake is reported now, naming the file and the 
 than when a script imports the type. The package's ``CMakeLists.txt`` chooses the files
 (``add_message_files``, ``add_service_files``, ``add_action_files`` with ``FILES``); a command
 of it that rosx does not carry out gets a CMake warning naming its file and line
-(`rosx.workspace.cmake.unsupported`), never silence. ``devel/``
+(`rosx.workspace.cmake.unsupported`), never silence. ``catkin_python_setup()`` makes the
+Python packages and scripts of the package's ``setup.py`` importable and runnable from
+``devel/`` as catkin does (`rosx.workspace.python_setup`). ``devel/``
 receives ``setup.sh``, ``setup.bash`` and ``setup.zsh``, which export Noetic's environment
 with the source space in front of ``ROS_PACKAGE_PATH`` (where rosx finds packages and their
 types; ``devel/share/<pkg>/msg/`` holds the messages generated from ``.action`` files, as
@@ -36,9 +38,19 @@ from rosx.workspace.shell import setup_for_shell, setup_sh
 if TYPE_CHECKING:
     from collections.abc import Iterator, Mapping, Sequence
 
+    from rosx.workspace.cmake import Call
+    from rosx.workspace.python_setup import PackagePython
     from rosx.workspace.types import PackageTypes
 
 _RULE = "-- ~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~"
+
+
+class Declared(NamedTuple):
+    """What rosx follows of a package's ``CMakeLists.txt``: the type files it names, by kind
+    (None: every file of the kind), and its ``catkin_python_setup()`` call, if any."""
+
+    types: dict[str, list[str] | None]
+    python_setup: Call | None
 
 
 class Layout(NamedTuple):
@@ -168,6 +180,8 @@ class CatkinMake:
         self.only = only
         self.install = install
         self.warnings: list[str] = []
+        #: The packages' Python of ``catkin_python_setup()``, found by `run`.
+        self.pythons: list[PackagePython] = []
 
     def check_layout(self) -> None:
         """catkin_make's checks of where it was run.
@@ -214,6 +228,7 @@ class CatkinMake:
         """
         layout = self.layout
         manifests, self.warnings = discover(layout.source)
+        self.pythons = []
         if self.only:
             manifests = _with_dependencies(manifests, self.only)
             yield f"Whitelisted packages: {', '.join(sorted(m.name for m in manifests))}"
@@ -233,7 +248,10 @@ class CatkinMake:
         for manifest in ordered:
             yield f"-- +++ processing catkin package: '{manifest.name}'"
             yield f"-- ==> add_subdirectory({manifest.directory.relative_to(layout.source)})"
-            chosen = self._read_cmakelists(manifest)
+            declared = self._read_cmakelists(manifest)
+            if declared.python_setup is not None:
+                self._python_setup(manifest, declared.python_setup)
+            chosen = declared.types
             if not any((manifest.directory / kind).is_dir() for kind in ("msg", "srv", "action")):
                 continue
             # The message system loads only for packages that have types.
@@ -258,24 +276,34 @@ class CatkinMake:
             from rosx.workspace.install import install_space  # noqa: PLC0415 - workspace code loads only when used
 
             yield "Install the project..."
-            for path in install_space(layout, ordered, self._setup_files):
+            for path in install_space(layout, ordered, self._setup_files, self.pythons):
                 yield f"-- Installing: {path}"
 
-    def _read_cmakelists(self, manifest: Manifest) -> dict[str, list[str] | None]:
+    def _read_cmakelists(self, manifest: Manifest) -> Declared:
         """Check the package's ``CMakeLists.txt`` as far as rosx follows it: warnings for the
-        commands it does not carry out; the type files it names, by kind.
+        commands it does not carry out; the type files it names and its
+        ``catkin_python_setup()``.
 
         Raises:
-            BuildError: a folder or file it names does not exist (CMake's error).
+            BuildError: a folder or file it names does not exist, or ``generate_messages()``
+                comes before ``catkin_python_setup()`` (CMake's and catkin's errors).
         """
-        from rosx.workspace.cmake import TYPE_FOLDERS, type_files, unsupported  # noqa: PLC0415 - workspace code loads only when used
+        from rosx.workspace.cmake import TYPE_FOLDERS, calls, type_files, unsupported  # noqa: PLC0415 - workspace code loads only when used
 
         path = manifest.directory / "CMakeLists.txt"
         try:
             text = path.read_text(encoding="utf-8", errors="replace")
         except OSError:
-            return {}
+            return Declared({}, None)
         where = os.path.relpath(path, self.layout.source)
+        python_setup = next((c for c in calls(text) if c.name == "catkin_python_setup"), None)
+        generate = next((c for c in calls(text) if c.name == "generate_messages"), None)
+        if python_setup is not None and generate is not None and generate.line < python_setup.line:
+            raise BuildError(
+                f"CMake Error at {where}:{python_setup.line} (catkin_python_setup):\n"
+                "  generate_messages() must be called after catkin_python_setup() in project "
+                f"'{manifest.name}'"
+            )
         for call, reason in unsupported(text):
             self.warnings.append(f"CMake Warning at {where}:{call.line} ({call.name}):\n  {reason}")
         chosen: dict[str, list[str] | None] = {}
@@ -298,7 +326,58 @@ class CatkinMake:
                 if not (directory / name).is_file():
                     raise BuildError(f"{heading} file not found: {directory / name}")
             chosen[folder] = [*(chosen.get(folder) or []), *declared.files]
-        return chosen
+        return Declared(chosen, python_setup)
+
+    def _python_setup(self, manifest: Manifest, call: Call) -> None:
+        """Read the package's ``setup.py`` for ``catkin_python_setup()`` (`self.pythons`); a
+        warning where rosx cannot work it out without running it.
+
+        Raises:
+            BuildError: one of catkin's errors (no ``setup.py``, a script missing…).
+        """
+        from rosx.workspace.python_setup import find_packages, plan_package  # noqa: PLC0415 - workspace code loads only when used
+        from rosx.workspace.setup_py import NotUnderstood, read_setup_py  # noqa: PLC0415 - workspace code loads only when used
+
+        directory = manifest.directory
+        cmakelists = os.path.relpath(directory / "CMakeLists.txt", self.layout.source)
+        heading = f"CMake Error at {cmakelists}:{call.line} (catkin_python_setup):"
+        setup_py = directory / "setup.py"
+        try:
+            text = setup_py.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError):
+            raise BuildError(
+                f"{heading}\n  catkin_python_setup() called without 'setup.py' in project folder "
+                f"' {directory}'"
+            ) from None
+        where = os.path.relpath(setup_py, self.layout.source)
+        setup = read_setup_py(
+            text, manifest.name, manifest.version, lambda under: find_packages(directory / under)
+        )
+        if isinstance(setup, NotUnderstood):
+            self.warnings.append(
+                f"CMake Warning at {where}:{setup.line} (catkin_python_setup):\n  rosx reads "
+                f"setup.py without running it and cannot work out `{setup.text}`: the "
+                "package's Python modules and scripts are not set up"
+            )
+            return
+        if setup.version is not None and setup.version != manifest.version:
+            raise BuildError(
+                f"{heading}\n  catkin_python_setup() version in setup.py ({setup.version}) "
+                f"differs from version in package.xml ({manifest.version})"
+            )
+        if setup.unsupported:
+            self.warnings.append(
+                f"*** Arguments {setup.unsupported} to setup() not supported in catkin devel "
+                f"space in setup.py of {manifest.name}"
+            )
+        python = plan_package(directory, manifest.name, setup, heading)
+        if python.skipped:
+            self.warnings.append(
+                f"CMake Warning at {where}:{setup.line} (catkin_python_setup):\n  rosx makes "
+                "packages and top-level modules importable from the devel space, not "
+                f"{', '.join(python.skipped)}"
+            )
+        self.pythons.append(python)
 
     def _write(self, built: list[PackageTypes], actions: list[tuple[str, Path]]) -> None:
         layout = self.layout
@@ -322,6 +401,11 @@ class CatkinMake:
             text = path.read_text(encoding="utf-8")
             for suffix, message in action_texts(path.stem, text).items():
                 (folder / f"{path.stem}{suffix}.msg").write_text(message, encoding="utf-8")
+        if self.pythons:
+            from rosx.workspace.python_setup import write_devel  # noqa: PLC0415 - workspace code loads only when used
+
+            for python in self.pythons:
+                write_devel(devel, python, self.rosx)
 
     def _setup_files(self, source: Path, space: Path) -> dict[str, str]:
         """The setup files of a space (devel or install) whose packages are in ``source``;
@@ -395,6 +479,7 @@ def _progress(built: list[PackageTypes]) -> Iterator[str]:
 __all__ = [
     "BuildError",
     "CatkinMake",
+    "Declared",
     "Layout",
     "discover",
     "topological_order",

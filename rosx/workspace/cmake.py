@@ -4,8 +4,9 @@ rosx runs no CMake. ``catkin_make install`` still needs to know what a package i
 ``catkin_make`` what it would compile and generate, so this reads the few commands that say it:
 ``catkin_install_python(PROGRAMS … DESTINATION …)``, ``install(PROGRAMS|FILES|DIRECTORY …
 DESTINATION …)`` (with catkin's ``${CATKIN_PACKAGE_*_DESTINATION}`` variables),
-``add_executable``/``add_library`` (C++ targets), and ``add_message_files``,
-``add_service_files``, ``add_action_files`` (`type_files`). Comments and quoting are handled;
+``add_executable``/``add_library`` (C++ targets), ``add_message_files``,
+``add_service_files``, ``add_action_files`` (`type_files`), and ``catkin_python_setup``
+(`rosx.workspace.python_setup` carries it out). Comments and quoting are handled;
 other variables and generator expressions are not evaluated: a rule using them is skipped.
 
 Every other command is either one that cannot change what a Python workspace does (C++ build
@@ -178,6 +179,7 @@ READ = frozenset(
         "add_service_files",
         "add_action_files",
         "generate_messages",
+        "catkin_python_setup",
     }
 )
 
@@ -204,8 +206,6 @@ HARMLESS = frozenset(
 _REASONS = {
     "add_subdirectory": "rosx reads no CMakeLists.txt but the package's own: what {0}/ adds is "
     "not built",
-    "catkin_python_setup": "rosx does not install the package's Python modules (setup.py): "
-    "scripts of other packages cannot import them",
     "generate_dynamic_reconfigure_options": "rosx generates no dynamic_reconfigure config modules",
 }
 

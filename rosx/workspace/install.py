@@ -4,10 +4,11 @@
 ``package.xml`` and its ``msg/`` and ``srv/`` files (catkin installs those for every package that
 generates messages), ``lib/PKG/`` the programs its ``CMakeLists.txt`` installs with
 ``catkin_install_python(PROGRAMS …)`` or ``install(PROGRAMS …)``; ``install(FILES|DIRECTORY …)``
-rules copy the rest (launch files…). ``setup.sh``/``.bash``/``.zsh`` put ``install/share`` on
-``ROS_PACKAGE_PATH``, so ``rospack``, ``roscd``, ``rosrun`` (which looks in ``lib/PKG`` too) and
-the type store use the installed packages as they use ``devel``'s. An empty ``.catkin`` marks the
-prefix as catkin's does.
+rules copy the rest (launch files…); the Python modules and scripts of a package's ``setup.py``
+(``catkin_python_setup()``) go to ``lib/python3/dist-packages`` and ``bin``.
+``setup.sh``/``.bash``/``.zsh`` put ``install/share`` on ``ROS_PACKAGE_PATH``, so ``rospack``,
+``roscd``, ``rosrun`` (which looks in ``lib/PKG`` too) and the type store use the installed
+packages as they use ``devel``'s. An empty ``.catkin`` marks the prefix as catkin's does.
 """
 
 from __future__ import annotations
@@ -18,11 +19,12 @@ from typing import TYPE_CHECKING
 from rosx.workspace.cmake import install_rules
 
 if TYPE_CHECKING:
-    from collections.abc import Callable, Iterator
+    from collections.abc import Callable, Iterator, Sequence
     from pathlib import Path
 
     from rosx.packages.manifest import Manifest
     from rosx.workspace.build import Layout
+    from rosx.workspace.python_setup import PackagePython
 
 
 def _copy(source: Path, target: Path) -> Iterator[Path]:
@@ -61,6 +63,7 @@ def install_space(
     layout: Layout,
     manifests: list[Manifest],
     setup_files: Callable[[Path, Path], dict[str, str]],
+    pythons: Sequence[PackagePython] = (),
 ) -> Iterator[Path]:
     """Write ``install/`` for ``manifests``, yielding each file written.
 
@@ -68,6 +71,7 @@ def install_space(
         layout: the workspace's spaces.
         manifests: the packages, in build order.
         setup_files: the setup files' texts by name, given where the packages are and the space.
+        pythons: the packages' Python of ``catkin_python_setup()``.
     """
     install = layout.install
     install.mkdir(parents=True, exist_ok=True)
@@ -77,6 +81,11 @@ def install_space(
         yield install / name
     for manifest in manifests:
         yield from _package(manifest, install)
+    if pythons:
+        from rosx.workspace.python_setup import install_python  # noqa: PLC0415 - only for packages with a setup.py
+
+        for python in pythons:
+            yield from install_python(install, python)
 
 
 __all__ = ["install_space"]

@@ -179,7 +179,8 @@ def setup_sh(
         source: where the workspace's packages are (``src`` for devel, ``install/share``).
         devel: the space itself (``devel`` or ``install``).
         shims: the folders of rosx's ``rospy`` and message modules, first one first on
-            ``PYTHONPATH``.
+            ``PYTHONPATH``; the space's ``lib/python3/dist-packages`` (the packages' own
+            modules, ``catkin_python_setup()``) goes in front of them when it exists.
         rosx: how the shell runs rosx.
         commands: the command names whose programs are in the space's ``bin/``, put in front
             of ``PATH``.
@@ -190,10 +191,17 @@ def setup_sh(
         + prepend_path("ROS_PACKAGE_PATH", source)
         + prepend_path("CMAKE_PREFIX_PATH", devel)
         + "".join(prepend_path("PYTHONPATH", shim) for shim in reversed(shims))
+        + _python_folder(f"{devel}/lib/python3/dist-packages")
         + f"export ROSLISP_PACKAGE_DIRECTORIES={shlex.quote(devel + '/share/common-lisp')}\n"
         + navigation_functions(rosx)
         + (_command_programs(commands, f"{devel}/bin") if commands else "")
     )
+
+
+def _python_folder(folder: str) -> str:
+    """``folder`` in front of ``PYTHONPATH`` when it exists as the file is sourced (as catkin's
+    setup does: roswtf names a ``PYTHONPATH`` entry that is no folder)."""
+    return f"if [ -d {shlex.quote(folder)} ]; then\n{prepend_path('PYTHONPATH', folder)}fi\n"
 
 
 def setup_for_shell(
