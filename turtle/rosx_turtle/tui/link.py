@@ -19,7 +19,13 @@ if TYPE_CHECKING:
 
 
 class Details(Protocol):
-    """The details of a topic or node that Enter on a row of the graph panels shows."""
+    """The master, and the details of a topic or node that Enter on a row of the graph panels
+    shows."""
+
+    @property
+    def master_uri(self) -> str:
+        """The master other terminals attach to (their ``ROS_MASTER_URI``)."""
+        ...
 
     def describe_topic(self, topic: str) -> str:
         """What ``rostopic info TOPIC`` prints (may block: called from a worker thread)."""
@@ -38,11 +44,6 @@ class Details(Protocol):
 class SimLink(Details, Protocol):
     """The feeds the panes show, the way the teleop pane drives, and the details of a topic
     or node."""
-
-    @property
-    def master_uri(self) -> str:
-        """The master other terminals attach to (their ``ROS_MASTER_URI``)."""
-        ...
 
     @property
     def scenes(self) -> Feed[Scene]:

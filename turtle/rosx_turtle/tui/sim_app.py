@@ -25,17 +25,18 @@ if TYPE_CHECKING:
     from textual.app import ComposeResult
     from textual.widgets import DataTable
 
-    from rosx_turtle.tui.link import SimLink
+    from rosx_turtle.tui.link import Details, SimLink
 
 
 #: How long the start-up notice stays (long enough to read it and type the command).
 _NOTICE_SECONDS = 30
 
 
-class SimApp(App[None]):
-    """``rosx sim``'s terminal UI over a `SimLink`."""
+class GraphScreenApp(App[None]):
+    """What ``rosx sim``'s screens share: the keys (Tab between panes, ``q`` and Ctrl-C to
+    quit), the master's URI under the title, a notice for a while, and Enter on a topic or a
+    node for its details. Subclasses give the title and the body."""
 
-    TITLE = "rosx sim"
     AUTO_FOCUS = "#teleop"
     ENABLE_COMMAND_PALETTE = False
     BINDINGS: ClassVar[list[BindingType]] = [
@@ -45,20 +46,15 @@ class SimApp(App[None]):
         Binding("ctrl+c", "quit", "Quit", show=False, priority=True),
     ]
 
-    def __init__(self, link: SimLink, *, notice: str | None = None) -> None:
+    def __init__(self, link: Details, *, notice: str | None = None) -> None:
         super().__init__()
-        self.link = link
+        self.details = link
         self.notice = notice
         self.sub_title = f"ROS_MASTER_URI={link.master_uri}"
 
     def on_mount(self) -> None:
         if self.notice:
             self.notify(self.notice, timeout=_NOTICE_SECONDS)
-
-    def compose(self) -> ComposeResult:
-        yield Header(icon="≈")
-        yield SimBody(self.link, id="body")
-        yield QuitFooter()
 
     def on_data_table_row_selected(self, event: DataTable.RowSelected) -> None:
         """Enter on a topic or a node: its details."""
@@ -68,4 +64,19 @@ class SimApp(App[None]):
         name = event.row_key.value
         if kind is not None and name:
             event.stop()
-            self.push_screen(DetailsScreen(self.link, kind, name))
+            self.push_screen(DetailsScreen(self.details, kind, name))
+
+
+class SimApp(GraphScreenApp):
+    """``rosx sim``'s terminal UI over a `SimLink`."""
+
+    TITLE = "rosx sim"
+
+    def __init__(self, link: SimLink, *, notice: str | None = None) -> None:
+        super().__init__(link, notice=notice)
+        self.link = link
+
+    def compose(self) -> ComposeResult:
+        yield Header(icon="≈")
+        yield SimBody(self.link, id="body")
+        yield QuitFooter()

@@ -62,44 +62,50 @@ class GraphPanels(Vertical):
                 yield PosePanel(link.scenes, id="pose")
 
 
-class SimBody(Container):
-    """The world and side columns, sized by `sim_layout` at each resize."""
+class Columns(Container):
+    """A world column beside a side column, sized by `sim_layout` at each resize, and in a
+    terminal too small for them the size it needs. Subclasses give the columns' widgets
+    (`world_column`, `side_column`) and fold their panels into tabs where they must (`fold`)."""
 
     DEFAULT_CSS = """
-    SimBody { height: 1fr; layout: vertical; }
-    SimBody > #columns { height: 1fr; }
-    SimBody #side { width: 1fr; }
-    SimBody > #too-small {
+    Columns { height: 1fr; layout: vertical; }
+    Columns > #columns { height: 1fr; }
+    Columns #side { width: 1fr; }
+    Columns > #too-small {
         display: none;
         height: 1fr;
         width: 1fr;
         content-align: center middle;
         text-align: center;
     }
-    SimBody.-too-small > #columns { display: none; }
-    SimBody.-too-small > #too-small { display: block; }
+    Columns.-too-small > #columns { display: none; }
+    Columns.-too-small > #too-small { display: block; }
     """
 
-    def __init__(self, link: SimLink, *, id: str | None = None) -> None:
+    def __init__(self, *, id: str | None = None) -> None:
         super().__init__(id=id)
-        self.link = link
         #: The layout in force (None before the first resize).
         self.layout_now: SimLayout | None = None
 
     def compose(self) -> ComposeResult:
-        link = self.link
-        scale_linear, scale_angular = link.scales
         with Horizontal(id="columns"):
             with Vertical(id="world"):
-                yield PondView(link.scenes, id="pond")
-                yield PoseLine(link.scenes, id="poses")
-                yield LogLine(link.logs, id="log")
+                yield from self.world_column()
             with Vertical(id="side"):
-                yield TeleopPad(
-                    link.drive, scale_linear=scale_linear, scale_angular=scale_angular, id="teleop"
-                )
-                yield GraphPanels(link, id="panels")
+                yield from self.side_column()
         yield Static("", id="too-small", markup=False)
+
+    def world_column(self) -> ComposeResult:
+        """The world column's widgets, top to bottom."""
+        raise NotImplementedError
+
+    def side_column(self) -> ComposeResult:
+        """The side column's widgets, top to bottom."""
+        raise NotImplementedError
+
+    def fold(self, layout: SimLayout) -> None:
+        """Stack or fold the side column's panels for ``layout``."""
+        raise NotImplementedError
 
     def on_resize(self, event: events.Resize) -> None:
         self.lay_out(*self.app.size)
@@ -113,4 +119,29 @@ class SimBody(Container):
         self.set_class(layout.too_small, "-too-small")
         self.query_one("#too-small", Static).update(layout.message)
         self.query_one("#world", Vertical).styles.width = layout.world
+        self.fold(layout)
+
+
+class SimBody(Columns):
+    """The pond, its pose and log lines beside the teleop pane and the graph panels."""
+
+    def __init__(self, link: SimLink, *, id: str | None = None) -> None:
+        super().__init__(id=id)
+        self.link = link
+
+    def world_column(self) -> ComposeResult:
+        link = self.link
+        yield PondView(link.scenes, id="pond")
+        yield PoseLine(link.scenes, id="poses")
+        yield LogLine(link.logs, id="log")
+
+    def side_column(self) -> ComposeResult:
+        link = self.link
+        scale_linear, scale_angular = link.scales
+        yield TeleopPad(
+            link.drive, scale_linear=scale_linear, scale_angular=scale_angular, id="teleop"
+        )
+        yield GraphPanels(link, id="panels")
+
+    def fold(self, layout: SimLayout) -> None:
         self.query_one(GraphPanels).tabs = layout.tabs

@@ -36,7 +36,51 @@ _NOT_DRIVING = (
 )
 
 
-class TeleopPad(Static, can_focus=True):
+class KeyPad(Static, can_focus=True):
+    """A pane whose keys drive something while it has the focus: lit then, with ``focused``
+    as its subtitle, and its text (`describe`) told which; ``driving`` says whether it has it.
+    The teleop panes of ``rosx sim`` and of the robot lab are these."""
+
+    DEFAULT_CSS = """
+    KeyPad {
+        padding: 0 1;
+        border: round $panel-lighten-2;
+        border-title-color: $text-muted;
+        border-subtitle-color: $text-muted;
+        &:focus {
+            border: heavy $accent;
+            border-title-color: $accent;
+            border-subtitle-color: $accent;
+        }
+    }
+    """
+
+    def __init__(self, focused: str, *, id: str | None = None) -> None:
+        super().__init__("", id=id, markup=False)
+        self.focused = focused
+        #: Whether the keys drive now (the pane has the focus).
+        self.driving = False
+        self.border_subtitle = ""
+
+    def describe(self) -> None:
+        """Put the pane's text for `driving` and what was sent."""
+        raise NotImplementedError
+
+    def on_mount(self) -> None:
+        self.describe()
+
+    def on_focus(self) -> None:
+        self.driving = True
+        self.border_subtitle = self.focused
+        self.describe()
+
+    def on_blur(self) -> None:
+        self.driving = False
+        self.border_subtitle = ""
+        self.describe()
+
+
+class TeleopPad(KeyPad):
     """Arrow keys to commands for ``drive(linear, angular)``; see the module docstring."""
 
     # Each key stands for the byte turtle_teleop_key reads (the arrows' escape sequences end
@@ -50,18 +94,7 @@ class TeleopPad(Static, can_focus=True):
     ]
 
     DEFAULT_CSS = """
-    TeleopPad {
-        height: 5;
-        padding: 0 1;
-        border: round $panel-lighten-2;
-        border-title-color: $text-muted;
-        border-subtitle-color: $text-muted;
-        &:focus {
-            border: heavy $accent;
-            border-title-color: $accent;
-            border-subtitle-color: $accent;
-        }
-    }
+    TeleopPad { height: 5; }
     """
 
     class Sent(Message):
@@ -82,30 +115,14 @@ class TeleopPad(Static, can_focus=True):
         topic: str = "/turtle1/cmd_vel",
         id: str | None = None,
     ) -> None:
-        super().__init__("", id=id, markup=False)
+        super().__init__(_FOCUSED, id=id)
         self.drive = drive
         self.scale_linear = scale_linear
         self.scale_angular = scale_angular
         self.sent = 0
         self.last: tuple[float, float] | None = None
-        #: Whether the arrow keys drive the turtle now (the pane has the focus).
-        self.driving = False
         self.border_title = f"Teleop → {topic}"
         self.tooltip = f"{node} publishes one Twist on {topic} per arrow key"
-        self.border_subtitle = ""
-
-    def on_mount(self) -> None:
-        self._describe()
-
-    def on_focus(self) -> None:
-        self.driving = True
-        self.border_subtitle = _FOCUSED
-        self._describe()
-
-    def on_blur(self) -> None:
-        self.driving = False
-        self.border_subtitle = ""
-        self._describe()
 
     def action_drive(self, byte: str) -> None:
         """Send the command turtle_teleop_key sends for key byte ``byte``."""
@@ -114,10 +131,10 @@ class TeleopPad(Static, can_focus=True):
         self.drive(linear, angular)
         self.sent += 1
         self.last = (linear, angular)
-        self._describe()
+        self.describe()
         self.post_message(self.Sent(linear, angular))
 
-    def _describe(self) -> None:
+    def describe(self) -> None:
         # Each line fits the narrowest side column (`rosx_turtle.view.layout.SIDE_MIN`).
         if self.driving:
             lines = [

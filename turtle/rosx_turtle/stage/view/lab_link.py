@@ -24,11 +24,6 @@ class LabLink(Details, Protocol):
     teleop pane drives."""
 
     @property
-    def master_uri(self) -> str:
-        """The master other terminals attach to (their ``ROS_MASTER_URI``)."""
-        ...
-
-    @property
     def world(self) -> World | None:
         """The simulated world (None before it is loaded)."""
         ...

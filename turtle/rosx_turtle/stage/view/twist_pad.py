@@ -17,9 +17,9 @@ import time
 from typing import TYPE_CHECKING, ClassVar
 
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
-from textual.widgets import Static  # noqa: TID253 - TUI code
 
 from rosx_turtle.teleop_twist import MOVES, SPEEDS, TwistKeys
+from rosx_turtle.tui.teleop import KeyPad
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -55,24 +55,13 @@ def _key_bindings() -> list[BindingType]:
     return bindings
 
 
-class TwistPad(Static, can_focus=True):
+class TwistPad(KeyPad):
     """teleop_twist_keyboard's keys to ``drive(x, y, z, turn)``; see the module docstring."""
 
     BINDINGS: ClassVar[list[BindingType]] = _key_bindings()
 
     DEFAULT_CSS = """
-    TwistPad {
-        height: 8;
-        padding: 0 1;
-        border: round $panel-lighten-2;
-        border-title-color: $text-muted;
-        border-subtitle-color: $text-muted;
-        &:focus {
-            border: heavy $accent;
-            border-title-color: $accent;
-            border-subtitle-color: $accent;
-        }
-    }
+    TwistPad { height: 8; }
     """
 
     def __init__(
@@ -83,34 +72,24 @@ class TwistPad(Static, can_focus=True):
         clock: Callable[[], float] = time.monotonic,
         id: str | None = None,
     ) -> None:
-        super().__init__("", id=id, markup=False)
+        super().__init__(_FOCUSED, id=id)
         self.drive = drive
         self.keys = TwistKeys()
         self.sent = 0
         self.last: tuple[float, float, float, float] | None = None
-        #: Whether the keys drive the robot now (the pad has the focus).
-        self.driving = False
         self._clock = clock
         self._pressed = 0.0
         self._repeat: Timer | None = None
         self.border_title = f"Teleop → {topic}"
         self.tooltip = f"/teleop_twist_keyboard publishes geometry_msgs/Twist on {topic}"
 
+    # textual runs KeyPad's handlers of these messages as well (every class's, in turn).
     def on_mount(self) -> None:
         self._repeat = self.set_interval(REPEAT, self._tick)
-        self._describe()
-
-    def on_focus(self) -> None:
-        self.driving = True
-        self.border_subtitle = _FOCUSED
-        self._describe()
 
     def on_blur(self) -> None:
-        self.driving = False
-        self.border_subtitle = ""
         if self.keys.direction != (0, 0, 0, 0):
             self.action_press("k")
-        self._describe()
 
     def action_press(self, key: str) -> None:
         """What teleop_twist_keyboard does for ``key``: a new direction or speed, then a send."""
@@ -118,7 +97,7 @@ class TwistPad(Static, can_focus=True):
         self.keys, _lines, send = self.keys.press(key)
         if send:
             self._send()
-        self._describe()
+        self.describe()
 
     def _tick(self) -> None:
         if self.keys.direction == (0, 0, 0, 0):
@@ -126,7 +105,7 @@ class TwistPad(Static, can_focus=True):
         if self._clock() - self._pressed >= KEY_TIMEOUT:
             self.keys, _lines, _send = self.keys.press("")
             self._send()
-            self._describe()
+            self.describe()
         else:
             self._send()
 
@@ -136,7 +115,7 @@ class TwistPad(Static, can_focus=True):
         self.sent += 1
         self.last = command
 
-    def _describe(self) -> None:
+    def describe(self) -> None:
         lines = list(_HELP) if self.driving else list(_NOT_DRIVING)
         keys = self.keys
         lines.append(f"speed {keys.speed:.2f}  turn {keys.turn:.2f}")
