@@ -153,7 +153,7 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
     try:
         host.start()
     except PortInUseError as busy:
-        _error(env, _port_taken(busy, options.port))
+        _error(env, _port_taken(busy, options.port, robot=options.robot is not None))
         return 1
     except (MasterUnreachable, MasterError):
         _error(env, f"ERROR: Unable to communicate with master at {join}")
@@ -188,18 +188,20 @@ def _join_uri(port_option: int | None, env: Env) -> str:
     return master_uri(env.environ)
 
 
-def _port_taken(busy: PortInUseError, port_option: int | None) -> str:
+def _port_taken(busy: PortInUseError, port_option: int | None, *, robot: bool = False) -> str:
     """What to say when the master's port is taken: by a master (which nodes run there, and
     how to join it or use another port), or by something else (roscore's words, and the
-    option)."""
+    option); ``robot`` for the robot lab's command."""
     if not busy.another_master:
         return f"{busy.message}\nUse --port PORT for another port."
-    join = "rosx sim --join" + (f" --port {busy.port}" if port_option is not None else "")
+    command = "rosx sim --robot" if robot else "rosx sim"
+    join = f"{command} --join" + (f" --port {busy.port}" if port_option is not None else "")
+    what = "the robot lab" if robot else "turtlesim and teleop"
     return (
         f"A ROS master is already running at {busy.uri}\n"
         f"{_running_there(busy.uri)}\n"
-        f"Run `{join}` to start turtlesim and teleop against it,\n"
-        "or `rosx sim --port PORT` for a master of its own on another port."
+        f"Run `{join}` to start {what} against it,\n"
+        f"or `{command} --port PORT` for a master of its own on another port."
     )
 
 
