@@ -1,5 +1,6 @@
 """``map_server MAP.yaml``: the map latched on ``map`` and ``map_metadata``, and the
-``static_map`` service (nav_msgs/GetMap), as map_server serves them; ``~frame_id`` ("map")."""
+``static_map`` service (nav_msgs/GetMap), as map_server serves them; ``~frame_id`` ("map").
+The map is stamped with ROS time when it is loaded (simulated time under ``/use_sim_time``)."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import ERROR, INFO
-from rosx.node.clock import now
+from rosx.node.simtime import follow_sim_time
 from rosx_turtle import roscpp
 from rosx_turtle.console import Console, NodeLog
 from rosx_turtle.env import ProcessEnv
@@ -82,7 +83,9 @@ class MapServerNode:
         node.start()
         self.args.set_private_params(node)
         frame = node.params.get("~frame_id", "map")
-        stamp = now()
+        # ROS time, as roscpp's ros::Time::now(): /clock's under /use_sim_time (0 before it).
+        follow_sim_time(node)
+        stamp = node.clock.now()
         grid = self.grid
         grid.header.frame_id = frame if isinstance(frame, str) else "map"
         grid.header.stamp = stamp
