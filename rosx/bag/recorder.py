@@ -296,13 +296,9 @@ class Recorder:
     # -- the queue ---------------------------------------------------------------------------
 
     def _on_message(self, topic: str, msg: RawMessage) -> None:
-        clock = self.node.clock
-        if clock.is_wallclock:
-            stamp = time.time_ns()
-        else:
-            stamp = clock.now().to_nsec()
-            if stamp == 0:  # no /clock yet: ROS 1's rosbag record waits for a valid time
-                return
+        stamp = self._now_ns()
+        if not stamp:  # no /clock yet: ROS 1's rosbag record waits for a valid time
+            return
         if self._stopping.is_set() or topic in self._done_topics:
             return
         data = msg._buff
@@ -382,6 +378,8 @@ class Recorder:
         writer = self._writer
         if writer is None:
             return
+        if not self._file_start:  # simulated time read 0 when the bag opened
+            self._file_start = stamp
         if self.options.max_duration and stamp - self._file_start > self.options.max_duration * 1e9:
             if not self.options.split:
                 self.request_stop()
@@ -400,9 +398,23 @@ class Recorder:
                 self.request_stop()
 
     def _check_wall_duration(self) -> None:
+        """``--duration`` reached even without a message: on the wall clock since recording
+        began, or in simulated time since the bag began."""
         limit = self.options.max_duration
-        if limit and not self.options.split and time.time() - self._started > limit:
+        if not limit or self.options.split:
+            return
+        if self.node.clock.is_wallclock:
+            elapsed = time.time() - self._started
+        else:
+            now = self._now_ns()
+            elapsed = (now - self._file_start) / 1e9 if now and self._file_start else 0.0
+        if elapsed > limit:
             self.request_stop()
+
+    def _now_ns(self) -> int:
+        """ROS time in nanoseconds (0 in simulated time before the first /clock)."""
+        clock = self.node.clock
+        return time.time_ns() if clock.is_wallclock else clock.now().to_nsec()
 
     # -- files -------------------------------------------------------------------------------
 
@@ -417,7 +429,7 @@ class Recorder:
             opener=self._opener,
         )
         if not self._file_start:
-            self._file_start = time.time_ns()
+            self._file_start = self._now_ns()
         self.log("INFO", f"Recording to '{self._target}'.")
         if self._begin_write is not None:
             self._begin_write.publish(self._begin_write.data_class(data=self._target))
@@ -467,7 +479,7 @@ class Recorder:
             latched = list(self._latched.items())
         writer = self._writer
         assert writer is not None
-        now = time.time_ns()
+        now = self._now_ns()
         for (topic, _), (header, data) in latched:
             writer.write(self._connection(writer, topic, header), now, data)
 

@@ -139,13 +139,16 @@ def _wait_for_count(recorder: Recorder, count: int) -> None:
 def test_under_sim_time_messages_carry_the_clocks_time(
     make_node: Callable[..., Node], tmp_path: Path
 ) -> None:
-    """As ROS 1's rosbag record (roscpp's time): with /use_sim_time, the time on /clock."""
+    """As ROS 1's rosbag record (roscpp's time): with /use_sim_time, messages carry the time on
+    /clock, and --duration is simulated seconds."""
     talker = make_node("simulator")
     talker.params.set("/use_sim_time", True)
     try:
         clock = talker.advertise("/clock", get_message_class("rosgraph_msgs/Clock"), queue_size=10)
         pub = talker.advertise("/chatter", String, queue_size=None)
-        recorder = _record(make_node("record"), tmp_path / "sim", topics=["/chatter"])
+        recorder = _record(
+            make_node("record"), tmp_path / "sim", topics=["/chatter"], max_duration=1.5
+        )
         wait_for(lambda: pub.get_num_connections() == 1, what="the recorder")
         wait_for(lambda: clock.get_num_connections() == 1, what="the recorder on /clock")
         for count, seconds in enumerate((1000, 1001), 1):
@@ -153,6 +156,10 @@ def test_under_sim_time_messages_carry_the_clocks_time(
             _wait_for_time(recorder, seconds)
             pub.publish(String(data=f"at {seconds}"))
             _wait_for_count(recorder, count)  # recorded before the clock moves on
+        # --duration 1.5 in simulated time: at 1002 the recording ends, whatever the wall.
+        clock.publish(get_message_class("rosgraph_msgs/Clock")(clock=Time.from_sec(1002)))
+        _wait_for_time(recorder, 1002)
+        wait_for(lambda: recorder.stopping, what="the recorder to stop by itself")
         recorder.stop()
     finally:
         talker.params.delete("/use_sim_time")  # the master is the module's
