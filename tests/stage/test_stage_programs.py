@@ -93,3 +93,21 @@ def test_map_server_serves_and_map_saver_writes_the_same_files(
     status, out = interrupted(server)
     assert status == 0, out
     assert "Read a 112 X 98 map @ 0.050 m/cell" in out
+
+
+def test_map_saver_that_cannot_write_its_file_says_so_and_exits_1(
+    master: str, make_node: Callable[[str], Node], tmp_path: Path
+) -> None:
+    # ROS 1's logs the error and waits for another map, which a latched /map never sends.
+    grid_class = get_message_class("nav_msgs/OccupancyGrid")
+    grid = grid_class()
+    grid.info.width, grid.info.height, grid.info.resolution = 2, 1, 0.05
+    grid.data = [0, 100]
+    make_node("/map_source").advertise("/map", grid_class, latch=True).publish(grid)
+    saver = subprocess.run(
+        [*ROSRUN, "map_server", "map_saver", "-f", "maps/lab"], env=clean_environ(ROS_MASTER_URI=master),
+        cwd=tmp_path, capture_output=True, text=True, timeout=60, check=False,
+    )  # fmt: skip
+    assert saver.returncode == 1, saver.stdout + saver.stderr
+    assert saver.stderr.rstrip().endswith("]: Couldn't save map file to maps/lab.pgm")
+    assert "Traceback" not in saver.stderr

@@ -1,5 +1,9 @@
 """``map_saver [--occ N] [--free N] [-f NAME]``: the first map on ``map`` written as map_saver
-writes it (``NAME.pgm`` and ``NAME.yaml``), then exit."""
+writes it (``NAME.pgm`` and ``NAME.yaml``), then exit.
+
+A file it cannot write gets map_saver's error, then exit status 1: ROS 1's logs the error and
+waits for another map, which a latched ``/map`` never sends, so it hangs until Ctrl-C (a
+folder that does not exist yet, ``-f ~/maps/lab``, is the usual cause)."""
 
 from __future__ import annotations
 
@@ -82,9 +86,13 @@ def save_map(grid: Any, name: str, occupied: int, free: int, log: Any) -> bool:
     log(INFO, f"Writing map occupancy data to {yaml}")
     q = info.origin.orientation
     yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
-    Path(yaml).write_text(
-        saved_yaml(image, info.resolution, info.origin.position.x, info.origin.position.y, yaw)
-    )
+    try:
+        Path(yaml).write_text(
+            saved_yaml(image, info.resolution, info.origin.position.x, info.origin.position.y, yaw)
+        )
+    except OSError:
+        log(ERROR, f"Couldn't save map file to {yaml}")
+        return False
     log(INFO, "Done\n")
     return True
 
@@ -96,6 +104,7 @@ class _Saver:
         self.node = args.make_node(env.environ)
         self.log = NodeLog(self.node, console, logger="ros.map_server")
         self.done = threading.Event()
+        self.failed = False
         self.target = (name, occupied, free)
 
     def start(self) -> _Saver:
@@ -107,7 +116,8 @@ class _Saver:
         return self
 
     def _on_map(self, grid: Any) -> None:
-        if not self.done.is_set() and save_map(grid, *self.target, self.log):
+        if not self.done.is_set():
+            self.failed = not save_map(grid, *self.target, self.log)
             self.done.set()
 
     def shutdown(self, reason: str = "") -> None:
@@ -118,7 +128,7 @@ class _Saver:
 
 
 def run_map_saver(argv: Sequence[str], env: Env | None = None) -> int:
-    """Run map_saver: wait for one map, save it, exit 0 (or on a signal)."""
+    """Run map_saver: wait for one map, save it, exit 0 (or on a signal); 1 when it cannot."""
     env = env or ProcessEnv()
     args = NodeArgs.parse(argv, "map_saver")
     console = Console(env.stdout, env.stderr, env.environ)
@@ -138,4 +148,4 @@ def run_map_saver(argv: Sequence[str], env: Env | None = None) -> int:
                     break
         finally:
             saver.shutdown("map saved" if saver.done.is_set() else "signal")
-    return 0
+    return 1 if saver.failed else 0
