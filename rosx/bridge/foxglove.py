@@ -31,6 +31,7 @@ from rosx.msg.codec.classes import get_message_class, get_service_class
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
 
+    from rosx.bridge.ops import Pieces
     from rosx.msg.codec.message import Message
 
 SUBPROTOCOL = "foxglove.websocket.v1"
@@ -239,10 +240,11 @@ class FoxgloveSession:
             frames.append(json.dumps({"op": "advertiseServices", "services": added}))
         return frames
 
-    def deliver(self, topic: str, payload: bytes, stamp_ns: int) -> list[Frame]:
-        """The ``message data`` frames of one message of ``topic``, one per subscription."""
+    def deliver(self, topic: str, payload: bytes, stamp_ns: int) -> list[Frame | Pieces]:
+        """The ``message data`` frames of one message of ``topic``, one per subscription (the
+        payload beside its head, not copied)."""
         return [
-            _MESSAGE_DATA.pack(1, sub_id, stamp_ns) + payload
+            (_MESSAGE_DATA.pack(1, sub_id, stamp_ns), payload)
             for sub_id, subscribed in self.subscriptions.items()
             if subscribed == topic
         ]

@@ -1,8 +1,8 @@
-"""The Foxglove WebSocket server: the shell that moves `rosx.bridge.foxglove`'s frames.
+"""The Foxglove WebSocket server: `rosx.bridge.foxglove`'s sessions over `rosx.bridge.websocket`.
 
-It shares the bridge's node and the rosbridge server's connection queues (`Connection`): one
-raw subscription per topic whoever subscribes, one publisher per topic clients publish. Every
-`POLL_PERIOD` seconds it reads the graph (topic types, and each new service's type, probed
+It shares the bridge's node and the connections' bounded queues (`rosx.bridge.connection`):
+one raw subscription per topic whoever subscribes, one publisher per topic clients publish.
+Every `POLL_PERIOD` seconds it reads the graph (topic types, and each new service's type, probed
 once) and lets each session advertise what changed. Foxglove clients send no ``Origin``
 unless they are pages; pages are checked as rosbridge's are. A token, when set, must come as
 ``?token=`` in the URL (the protocol has no ``auth`` op); a wrong one gets HTTP 401.
@@ -18,27 +18,27 @@ from concurrent.futures import ThreadPoolExecutor
 from typing import TYPE_CHECKING, Any
 from urllib.parse import parse_qs, urlsplit
 
-from websockets.asyncio.server import ServerConnection, serve
-from websockets.exceptions import ConnectionClosed
-
 from rosx.bridge import foxglove as fx
 from rosx.bridge.protocol import DEFAULT_MAX_MESSAGE
 from rosx.bridge.safety import origin_allowed
-from rosx.bridge.server import WRITE_LIMIT, Connection
+from rosx.bridge.websocket import WebSocketServer
 from rosx.graph.state import registrations
 from rosx.msg.codec.classes import get_service_class
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Sequence
 
-    from websockets.asyncio.server import Server
-    from websockets.http11 import Request, Response
+    from websockets.http11 import Request
 
+    from rosx.bridge.connection import Connection
+    from rosx.bridge.ops import Pieces
     from rosx.node import Node, Publisher, Subscriber
     from rosx.node.subscription import RawMessage
 
 #: How often the graph is read for channels and services to advertise (seconds).
 POLL_PERIOD = 1.0
+#: Threads handling clients' requests (each client's in order).
+REQUEST_WORKERS = 8
 
 
 class FoxgloveServer:
@@ -62,10 +62,9 @@ class FoxgloveServer:
         self.token = token
         self.max_message = max_message
         self.log = log
-        self.connections: set[Connection[fx.FoxgloveSession]] = set()
-        self._server: Server | None = None
+        self._server: WebSocketServer[fx.FoxgloveSession] | None = None
         self._poller: asyncio.Task[None] | None = None
-        self._pool = ThreadPoolExecutor(8, thread_name_prefix="rosx-foxglove")
+        self._pool = ThreadPoolExecutor(2, thread_name_prefix="rosx-foxglove-graph")
         self._lock = threading.Lock()
         self._subscribed: dict[str, tuple[Subscriber, set[Connection[fx.FoxgloveSession]]]] = {}
         self._published: dict[str, tuple[Publisher, set[Connection[fx.FoxgloveSession]]]] = {}
@@ -74,23 +73,28 @@ class FoxgloveServer:
         self._sim_time = False
         self._clock: Subscriber | None = None
 
+    @property
+    def connections(self) -> set[Connection[fx.FoxgloveSession]]:
+        """The open connections."""
+        return set() if self._server is None else set(self._server.connections)
+
     async def start(self) -> None:
         """Bind, read the graph once, and start serving."""
         loop = asyncio.get_running_loop()
         self._graph = await loop.run_in_executor(self._pool, self._read_graph)
         await loop.run_in_executor(self._pool, self._follow_clock)
-        self._server = await serve(
-            self._serve,
-            self.host,
-            self.port,
-            subprotocols=[fx.SUBPROTOCOL],  # type: ignore[list-item]
-            process_request=self._check_request,
-            max_size=self.max_message,
-            compression=None,
-            ping_interval=None,
-            write_limit=WRITE_LIMIT,
+        self._server = WebSocketServer(
+            loop,
+            self,
+            host=self.host,
+            port=self.port,
+            max_message=self.max_message,
+            subprotocols=[fx.SUBPROTOCOL],
+            workers=REQUEST_WORKERS,
+            name="rosx-foxglove",
         )
-        self.port = next(iter(self._server.sockets)).getsockname()[1]
+        self._server.start()
+        self.port = self._server.port
         self._poller = asyncio.create_task(self._poll())
 
     async def close(self) -> None:
@@ -101,21 +105,65 @@ class FoxgloveServer:
             self._clock.unregister()
         if self._server is not None:
             self._server.close()
-            await self._server.wait_closed()
         self._pool.shutdown(wait=False, cancel_futures=True)
 
-    def _check_request(self, ws: ServerConnection, request: Request) -> Response | None:
+    # -- the `Handler` ---------------------------------------------------------------------------
+
+    def refuse(self, request: Request) -> tuple[int, str] | None:
         origin = request.headers.get("Origin")
         if not origin_allowed(origin, self.allow_origins):
             self.log(
                 f"Refused a Foxglove connection from a page of {origin}: not an allowed origin"
             )
-            return ws.respond(403, f"Origin {origin} is not allowed: see --allow-origin\n")
+            return 403, f"Origin {origin} is not allowed: see --allow-origin\n"
         if self.token is not None:
             tokens = parse_qs(urlsplit(request.path).query).get("token", [])
             if self.token not in tokens:
-                return ws.respond(401, "This bridge needs ?token=… in its URL\n")
+                return 401, "This bridge needs ?token=… in its URL\n"
         return None
+
+    def session(self, connection: Connection[fx.FoxgloveSession]) -> fx.FoxgloveSession:
+        return fx.FoxgloveSession(name=f"rosx {self.node.name}", sim_time=self._sim_time)
+
+    def opened(self, connection: Connection[fx.FoxgloveSession]) -> None:
+        self.log(f"Foxglove client connected.  {len(self.connections)} clients total.")
+        with connection.lock:
+            frames = connection.session.hello() + connection.session.update_graph(*self._graph)
+        connection.send(frames)
+
+    def receive(self, connection: Connection[fx.FoxgloveSession], data: str | bytes) -> None:
+        with connection.lock:
+            reaction = connection.session.receive(data)
+        if reaction.frames:
+            connection.send(reaction.frames)
+        for event in reaction.events:
+            try:
+                self._carry_out(connection, event)
+            except Exception as exc:  # a refusal of the graph reaches the client as a status
+                connection.send([connection.session.status(fx.ERROR, f"{exc}")])
+
+    def closed(self, connection: Connection[fx.FoxgloveSession]) -> None:
+        with connection.lock:
+            topics = set(connection.session.subscriptions.values())
+            published = set(connection.session.client_channels.values())
+        for topic in topics:
+            self._unsubscribe(connection, topic)
+        for topic in published:
+            self._unadvertise(connection, topic)
+        self.log(f"Foxglove client disconnected. {len(self.connections)} clients total.")
+
+    def render(
+        self, session: fx.FoxgloveSession, message: tuple[str, bytes, int]
+    ) -> list[fx.Frame | Pieces]:
+        return session.deliver(*message)
+
+    def oversized(self, session: fx.FoxgloveSession, reason: str) -> fx.Frame | None:
+        return session.status(
+            fx.ERROR, f"Message refused ({reason}): the limit is {self.max_message} bytes"
+        )
+
+    def idle(self, session: fx.FoxgloveSession) -> bool:
+        return not session.subscriptions and not session.client_channels
 
     def _follow_clock(self) -> None:
         """With ``/use_sim_time`` set, ``/clock`` becomes the clients' time (``time`` frames)."""
@@ -158,39 +206,6 @@ class FoxgloveServer:
                         frames = connection.session.update_graph(*self._graph)
                     if frames:
                         connection.send(frames)
-
-    # -- a connection ---------------------------------------------------------------------------
-
-    async def _serve(self, ws: ServerConnection) -> None:
-        loop = asyncio.get_running_loop()
-        session = fx.FoxgloveSession(name=f"rosx {self.node.name}", sim_time=self._sim_time)
-        connection: Connection[fx.FoxgloveSession] = Connection(ws, session, loop, _render)
-        self.connections.add(connection)
-        self.log(f"Foxglove client connected.  {len(self.connections)} clients total.")
-        with connection.lock:
-            connection.send(session.hello() + session.update_graph(*self._graph))
-        writer = asyncio.create_task(connection.write())
-        try:
-            async for data in ws:
-                await loop.run_in_executor(self._pool, self._receive, connection, data)
-        except ConnectionClosed:
-            pass
-        finally:
-            writer.cancel()
-            self.connections.discard(connection)
-            await loop.run_in_executor(self._pool, self._disconnect, connection)
-            self.log(f"Foxglove client disconnected. {len(self.connections)} clients total.")
-
-    def _receive(self, connection: Connection[fx.FoxgloveSession], data: str | bytes) -> None:
-        with connection.lock:
-            reaction = connection.session.receive(data)
-        if reaction.frames:
-            connection.send(reaction.frames)
-        for event in reaction.events:
-            try:
-                self._carry_out(connection, event)
-            except Exception as exc:  # a refusal of the graph reaches the client as a status
-                connection.send([connection.session.status(fx.ERROR, f"{exc}")])
 
     def _carry_out(self, connection: Connection[fx.FoxgloveSession], event: fx.Event) -> None:
         if isinstance(event, fx.Subscribe):
@@ -288,19 +303,6 @@ class FoxgloveServer:
             with contextlib.suppress(KeyError):
                 values[name] = params.get(name)
         return values
-
-    def _disconnect(self, connection: Connection[fx.FoxgloveSession]) -> None:
-        with connection.lock:
-            topics = set(connection.session.subscriptions.values())
-            published = set(connection.session.client_channels.values())
-        for topic in topics:
-            self._unsubscribe(connection, topic)
-        for topic in published:
-            self._unadvertise(connection, topic)
-
-
-def _render(session: fx.FoxgloveSession, message: tuple[str, bytes, int]) -> list[fx.Frame]:
-    return session.deliver(*message)
 
 
 __all__ = ["POLL_PERIOD", "FoxgloveServer"]

@@ -30,6 +30,8 @@ from rosx.node import ServiceError
 from rosx.node.clock import now
 
 if TYPE_CHECKING:
+    from collections.abc import Sequence
+
     from rosx.bridge.protocol import Session
     from rosx.msg.codec.message import Message
     from rosx.node import Node, Publisher, ServiceHandle, Subscriber
@@ -70,11 +72,13 @@ class _Advertised:
 
 
 class _Subscribed:
-    __slots__ = ("classes", "clients", "subscriber")
+    __slots__ = ("classes", "clients", "readers", "subscriber")
 
     def __init__(self) -> None:
         self.subscriber: Subscriber | None = None
         self.clients: set[Client] = set()
+        #: ``clients`` as the receiving thread reads them (replaced, never changed).
+        self.readers: tuple[Client, ...] = ()
         self.classes: dict[str, type[Message] | None] = {}
 
 
@@ -217,6 +221,7 @@ class GraphSide:
             if entry is None:
                 entry = self._subscribed[event.topic] = _Subscribed()
             entry.clients.add(client)
+            entry.readers = tuple(entry.clients)
         if new:
             topic = event.topic
             assert entry is not None
@@ -230,6 +235,7 @@ class GraphSide:
             if entry is None:
                 return
             entry.clients.discard(client)
+            entry.readers = tuple(entry.clients)
             if entry.clients:
                 return
             del self._subscribed[topic]
@@ -245,10 +251,10 @@ class GraphSide:
             except Exception:  # a type only the publisher knows: cbor-raw still serves
                 msg_class = None
             entry.classes[type_name] = msg_class
-        out = Outgoing(topic, raw._buff, msg_class, now())
-        self.fan_out(out, list(entry.clients))
+        out = Outgoing(topic, raw._buff, msg_class, time.time_ns())
+        self.fan_out(out, entry.readers)
 
-    def fan_out(self, out: Outgoing, clients: list[Client]) -> None:
+    def fan_out(self, out: Outgoing, clients: Sequence[Client]) -> None:
         """Hand ``out`` to each of ``clients`` subscribed to its topic.
 
         When a client's queue overflows, its writer (on the I/O loop) is behind the topic:

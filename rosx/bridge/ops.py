@@ -15,6 +15,9 @@ if TYPE_CHECKING:
 
 #: A frame to send: text (JSON) or bytes (CBOR).
 Frame = str | bytes
+#: A binary frame in pieces, sent one after the other (a large message's bytes go out as they
+#: came, never copied into one buffer).
+Pieces = tuple[bytes, ...]
 
 
 @dataclass(frozen=True, slots=True)
@@ -144,6 +147,7 @@ __all__ = [
     "Close",
     "Event",
     "Frame",
+    "Pieces",
     "Publish",
     "PublishUntyped",
     "Reaction",

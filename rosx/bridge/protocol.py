@@ -276,7 +276,7 @@ class Session:
         entry = self.topics.get(topic)
         return None if entry is None else entry.options
 
-    def deliver(self, message: Outgoing, now: float) -> list[ops.Frame]:
+    def deliver(self, message: Outgoing, now: float) -> list[ops.Frame | ops.Pieces]:
         """The frames that carry ``message`` to this client, at monotonic time ``now``
         (seconds); none when not subscribed or within the topic's ``throttle_rate``."""
         entry = self.topics.get(message.topic)
@@ -294,12 +294,12 @@ class Session:
                 return [message.publish_cbor()]
             text = message.publish_json()
         except Exception as exc:  # a message the codec cannot read must not end the session
-            return self.error(f"Cannot send a message of {message.topic}: {exc}").frames
+            return [*self.error(f"Cannot send a message of {message.topic}: {exc}").frames]
         if compression == "png":
             from rosx.bridge.png import png_frame  # noqa: PLC0415 - Pillow, when asked for
 
             text = png_frame(text)
-        return self._maybe_fragment(text, options.fragment_size)
+        return [*self._maybe_fragment(text, options.fragment_size)]
 
     def _maybe_fragment(self, text: str, size: int | None) -> list[ops.Frame]:
         if not size or len(text) <= size:

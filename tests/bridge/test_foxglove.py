@@ -53,7 +53,7 @@ def test_the_core_advertises_the_graph_and_maps_subscriptions() -> None:
         json.dumps({"op": "subscribe", "subscriptions": [{"id": 7, "channelId": cid}]})
     )
     assert reaction.events == [fx.Subscribe("/pose")]
-    assert session.deliver("/pose", b"abc", 5) == [struct.pack("<BIQ", 1, 7, 5) + b"abc"]
+    assert session.deliver("/pose", b"abc", 5) == [(struct.pack("<BIQ", 1, 7, 5), b"abc")]
     assert json.loads(session.update_graph({}, {})[0]) == {"op": "unadvertise", "channelIds": [cid]}
 
 

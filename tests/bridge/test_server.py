@@ -222,9 +222,7 @@ def _slow_and_fast(bridge: Bridge, lines: list[str]) -> None:
             assert seen == list(range(count))
             server = bridge.server
             assert server is not None
-            (slow_conn,) = [
-                c for c in server.connections if c.ws.remote_address == slow.local_address
-            ]
+            (slow_conn,) = [c for c in server.connections if c.remote_address == slow.local_address]
             assert slow_conn.dropped_total() > 0
             got: list[int] = []
             while not got or got[-1] != count - 1:
