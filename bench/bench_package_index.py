@@ -98,9 +98,10 @@ def medians(commands: list[tuple[list[str], dict[str, str]]], runs: int) -> list
 def row(what: str, ros1: float | None, rosx: float, target: str, met: bool) -> None:
     theirs = f"{ros1 * 1000:.1f}" if ros1 is not None else "-"
     ratio = f"{rosx / ros1:.2f}" if ros1 is not None else "-"
+    load = os.getloadavg()[0]  # the machine's other work, as the row was measured
     print(
         f"| `{what}` | {theirs} | {rosx * 1000:.1f} | {ratio} | {target} | "
-        f"{'yes' if met else 'no'} |",
+        f"{'yes' if met else 'no'} | {load:.1f} |",
         flush=True,
     )
 
@@ -128,8 +129,8 @@ def main() -> int:
         middle = f"pkg_{options.packages // 2:03d}"
         print(f"ROS_PACKAGE_PATH: {options.packages} packages, then /usr/share "
               f"({sum(1 for _ in Path('/usr/share').iterdir())} entries)")  # fmt: skip
-        print("| command | ROS 1 (ms) | rosx (ms) | ratio | target | met |")
-        print("|---|---|---|---|---|---|")
+        print("| command | ROS 1 (ms) | rosx (ms) | ratio | target | met | load |")
+        print("|---|---|---|---|---|---|---|")
         for argv, target in (
             (["rospack", "find", "roscpp"], 3.0),
             (["rospack", "find", middle], 3.0),
