@@ -119,3 +119,43 @@ def test_a_scan_and_tf_from_other_nodes_are_drawn(
             assert "  ⚠ No messages received" in panel()  # the map: nobody publishes it
 
     run(drive())
+
+
+def test_under_simulated_time_a_goal_is_stamped_with_the_clock(tmp_path: Path) -> None:
+    from rosx.core import Core
+    from rosx.msg.codec.classes import get_message_class
+
+    with Core(0, {"ROS_IP": "127.0.0.1"}) as core:
+        clock_node = Node("/simulator", master_uri=core.uri, environ={}).start()
+        try:
+            clock_node.params.set("/use_sim_time", True)
+            clock_class = get_message_class("rosgraph_msgs/Clock")
+            clock = clock_node.advertise("/clock", clock_class, queue_size=1, latch=True)
+            tick: Any = clock_class()
+            tick.clock.secs, tick.clock.nsecs = 4242, 500
+            clock.publish(tick)
+            environ = clean_environ(ROS_MASTER_URI=core.uri)
+            app = a_live_app(core.uri, tmp_path, "{Class: rviz/Grid, Name: Grid}")
+            heard: list[Result | None] = []
+
+            async def drive() -> None:
+                async with app.run_test(size=(100, 30)) as pilot:
+                    source: Any = app.pane.source
+                    await until(
+                        lambda: source.manager is not None and source.stamp().secs == 4242,
+                        "rviz's ROS time to be the simulator's",
+                    )
+                    echo = echo_in_thread("/move_base_simple/goal", environ)
+                    deadline = time.monotonic() + DEADLINE
+                    while echo() is None and time.monotonic() < deadline:
+                        await pilot.press("g", "enter")
+                        await until(lambda: not app.pane.workers, "the publishing worker")
+                        await asyncio.sleep(0.1)
+                    heard.append(echo())
+
+            run(drive())
+        finally:
+            clock_node.shutdown("test over")
+    goal = heard[0]
+    assert goal is not None and goal.status == 0
+    assert "  stamp: \n    secs: 4242\n    nsecs:       500\n" in goal.out

@@ -41,7 +41,6 @@ class LiveSource(ToolNode):
         self._subscribers: dict[int, tuple[str, Subscriber]] = {}
         self._publishers: dict[str, Publisher] = {}
         self._listener: Any = None
-        self._sim_time: Any = None
         self._lock = threading.Lock()
 
     @property
@@ -51,6 +50,7 @@ class LiveSource(ToolNode):
     def start(self, manager: Manager, changed: Callable[[], object]) -> None:
         """Start the node, listen to tf and subscribe the enabled displays (blocks on the
         master: call it from a worker)."""
+        from rosx.node.simtime import follow_sim_time  # noqa: PLC0415 - the node runtime loads with the first node
         from rosx.tf.listener import TransformListener  # noqa: PLC0415 - tf code loads only when used
 
         self.manager, self.changed = manager, changed
@@ -58,18 +58,8 @@ class LiveSource(ToolNode):
         core: Any = manager.frames.core
         core.add_listener(changed)
         self._listener = TransformListener(core, node=node)  # it stores with .set and .clear
-        if node.params.get("/use_sim_time", False) is True:
-            self._follow_clock()
+        follow_sim_time(node)
         self.sync()
-
-    def _follow_clock(self) -> None:
-        from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
-
-        def tick(msg: Any) -> None:
-            self._sim_time = msg.clock
-
-        clock_class = get_message_class("rosgraph_msgs/Clock", self._types())
-        self._started().subscribe("/clock", clock_class, tick)
 
     def sync(self) -> None:
         """Subscribe the displays that want their topic, unsubscribe the others; give the
@@ -154,9 +144,7 @@ class LiveSource(ToolNode):
 
     def stamp(self) -> Any:
         """Now, as ROS time (``/clock``'s under simulated time)."""
-        from rosx.node.clock import now  # noqa: PLC0415 - the node runtime loads with the first node
-
-        return self._sim_time if self._sim_time is not None else now()
+        return self._started().clock.now()
 
     def param(self, name: str) -> Any:
         """A parameter's value (None when unset)."""
