@@ -144,7 +144,8 @@ class Subscriber:
         self.subscription.detach()
 
     def caught_up(self) -> bool:
-        """Whether the callbacks have run for every message of the topic read so far."""
+        """Whether the callbacks have run for every message of the topic read so far (but
+        those the subscriber's queue dropped, which never will be)."""
         return self.subscription.caught_up()
 
     def unregister(self) -> None:

@@ -97,7 +97,10 @@ class Receiver:
         self._workers = workers
         self._name = name
         self._on_error = on_error
-        self._queue: deque[Item] = deque(maxlen=queue_size if queue_size else None)
+        self._queue: deque[Item] = deque()
+        #: The queue's bound (None: unbounded). Not the deque's ``maxlen``: a frame it drops
+        #: must be counted (`dropped`), and a deque drops silently.
+        self._limit = queue_size if queue_size else None
         self._dispatching = threading.Lock()
         self.entries: tuple[Entry, ...] = ()
         self._streams: set[IncomingStream] = set()
@@ -119,13 +122,15 @@ class Receiver:
         self.eager = False
         self._counting = threading.Lock()
         #: `received` (frames and messages taken in) against `handled` (those whose callbacks
-        #: have run) says how far the callbacks are behind. A connected stream's frames are
-        #: counted by its own thread alone (``frames_received``), so reading costs no lock;
-        #: the rest (queued by the loop or in this process, or from ended streams) under
-        #: `_counting`, which also guards the set of streams. `handled` grows only under the
-        #: dispatch lock.
+        #: have run) and `dropped` (those a bounded queue let go) says how far the callbacks
+        #: are behind (`caught_up`). A connected stream's frames are counted by its own thread
+        #: alone (``frames_received``), so reading costs no lock; the rest (queued by the loop
+        #: or in this process, or from ended streams) under `_counting`, which also guards the
+        #: set of streams, the drops, and every append to the queue (a bounded queue's drops
+        #: are counted exactly). `handled` grows only under the dispatch lock.
         self._received_before = 0
         self.handled = 0
+        self.dropped = 0
 
     # -- callbacks (any thread) --------------------------------------------------------------
 
@@ -154,8 +159,7 @@ class Receiver:
         """
         if self._stopped:
             return
-        self._count(1)
-        self._queue.append((frame, header, only))
+        self._enqueue([(frame, header, only)], 1)
         with contextlib.suppress(RuntimeError):  # the node has shut its workers down
             self._workers.submit(self._dispatch_all)
 
@@ -177,14 +181,28 @@ class Receiver:
         if self._stopped:
             return
         queue = self._queue
-        if queue.maxlen is None and publisher_queue != 0 and len(queue) >= LOCAL_HIGH_WATER:
+        limit = self._limit
+        if limit is None and publisher_queue != 0 and len(queue) >= LOCAL_HIGH_WATER:
             if publisher_queue is None:
                 self._wait_for_room()
             else:
-                with contextlib.suppress(IndexError):
-                    queue.popleft()
-        self._count(1)
-        queue.append((payload, header, None))
+                limit = LOCAL_HIGH_WATER  # the publisher's drop-oldest, past the high water
+        # `_enqueue` for one message, inlined (a burst's cold path): counted, and a bounded
+        # queue's oldest dropped and counted, under one lock.
+        lock = self._counting
+        lock.acquire()
+        try:
+            self._received_before += 1
+            if limit is not None:
+                while len(queue) >= limit:
+                    try:
+                        queue.popleft()
+                    except IndexError:
+                        break
+                    self.dropped += 1
+            queue.append((payload, header, None))
+        finally:
+            lock.release()
         # The local thread (started when the link connected, `start_local`) sets `_sleeping`
         # before its last look at the queue, so a message appended before that look is seen,
         # and one after it finds the flag set.
@@ -318,7 +336,9 @@ class Receiver:
     def stop(self) -> None:
         """Stop every reader thread and drop what is queued; a running callback finishes."""
         self._stopped = True
-        self._queue.clear()
+        with self._counting:
+            self.dropped += len(self._queue)
+            self._queue.clear()
         for stream in list(self._streams):
             self.detach(stream)
         with self._wake:
@@ -354,11 +374,11 @@ class Receiver:
                         finally:
                             lock.release()
                         if rest:
-                            queue.extend([(frame, header, None) for frame in rest])
+                            self._enqueue([(frame, header, None) for frame in rest])
                         if queue:
                             self._dispatch_all()
                     else:
-                        queue.extend([(frame, header, None) for frame in frames])
+                        self._enqueue([(frame, header, None) for frame in frames])
                         self._dispatch_all()
                 frames = ()  # handed over: a large frame's buffer may serve the next read
                 entries = self.entries
@@ -386,8 +406,9 @@ class Receiver:
         """Run the callbacks of ``frames`` in order (holding the dispatch lock), for as long as
         the callbacks stay the same and the receiver runs; returns the frames left. A bounded
         queue keeps only the newest of a read, as if the frames had been queued."""
-        size = self._queue.maxlen
+        size = self._limit
         if size is not None and len(frames) > size:
+            self._drop(len(frames) - size)
             frames = frames[-size:]
         entries = self.entries
         if len(entries) != 1 or getattr(entries[0][1], "fresh", None) is None:
@@ -474,13 +495,41 @@ class Receiver:
         with self._counting:
             return self._received_before + sum(s.frames_received for s in self._streams)
 
-    def _count(self, frames: int) -> None:
-        lock = self._counting
-        lock.acquire()
-        try:
-            self._received_before += frames
-        finally:
-            lock.release()
+    def caught_up(self) -> bool:
+        """Whether every frame and message taken in so far has had its callbacks run, or was
+        dropped by the bounded queue (drop-oldest): nothing taken in is still to be handled."""
+        with self._counting:
+            received = self._received_before + sum(s.frames_received for s in self._streams)
+            dropped = self.dropped
+        # Read after `received`: what grows meanwhile only makes the answer later, not wrong.
+        return received <= self.handled + dropped
+
+    def _enqueue(self, items: list[Item], counted: int = 0) -> None:
+        """Append ``items`` to the queue, ``counted`` of them taken in now (the rest are a
+        stream's frames, counted by its thread); a bounded queue drops the oldest to make room
+        (of the queue, then of ``items``), each drop counted."""
+        queue = self._queue
+        limit = self._limit
+        with self._counting:
+            self._received_before += counted
+            if self._stopped:
+                self.dropped += len(items)
+                return
+            if limit is not None:
+                if len(items) > limit:
+                    self.dropped += len(items) - limit
+                    items = items[-limit:]
+                while len(queue) + len(items) > limit:
+                    try:
+                        queue.popleft()
+                    except IndexError:  # the callbacks took it meanwhile
+                        break
+                    self.dropped += 1
+            queue.extend(items)
+
+    def _drop(self, frames: int) -> None:
+        with self._counting:
+            self.dropped += frames
 
     def _dispatch_all(self) -> None:
         # Another thread may queue frames just after this one found the queue empty, then

@@ -262,9 +262,9 @@ class Subscription:
                 self.receiver.detach(stream)
 
     def caught_up(self) -> bool:
-        """Whether the callbacks have run for every message read so far."""
-        receiver = self.receiver
-        return receiver.received <= receiver.handled
+        """Whether the callbacks have run for every message read so far (or a bounded queue
+        dropped it: dropped messages will never be handled)."""
+        return self.receiver.caught_up()
 
     def _callback_failed(self, exc: BaseException, callback: Callable[[Any], object]) -> None:
         if self._on_error is not None:

@@ -164,6 +164,39 @@ def test_subscriber_queue_drops_the_oldest(make_node: Callable[..., Node]) -> No
     assert got == [0.0, 8.0, 9.0]
 
 
+def test_a_subscriber_whose_queue_dropped_messages_still_catches_up(
+    make_node: Callable[..., Node],
+) -> None:
+    """Messages a bounded subscriber queue dropped are never handled: once the callbacks have
+    run for the rest, the subscriber has caught up and a drain of it is done (what ``rosbag
+    record`` waits for when it stops, and actionlib's client before each result)."""
+    a, b = make_node("fast"), make_node("slow")
+    release = threading.Event()
+    got: list[float] = []
+
+    def slow(msg: Any) -> None:
+        got.append(msg.linear.x)
+        release.wait(10)
+
+    sub = b.subscribe("/flood", Twist, slow, queue_size=2)
+    pub = a.advertise("/flood", Twist, queue_size=None)
+    wait_for(connected(pub, sub))
+    pub.publish(twist(0))
+    wait_for(lambda: got)
+    for i in range(1, 10):
+        pub.publish(twist(i))
+    wait_for(lambda: pub.delivered_to() == {"/slow"}, what="the messages sent")
+    drain = sub.drain()  # everything is with this host: read, or in the socket's buffer
+    assert not sub.caught_up()  # the first callback is held
+    release.set()
+    wait_for(drain.done, what="the drain")
+    assert sub.caught_up()
+    assert got == [0.0, 8.0, 9.0]
+    pub.publish(twist(10))  # and it goes on: the next message is handled, then caught up
+    wait_for(lambda: got[-1:] == [10.0])
+    wait_for(sub.caught_up, what="the callbacks")
+
+
 def test_a_stalled_subscriber_holds_up_nobody(make_node: Callable[..., Node]) -> None:
     # ROS 1's semantics: each subscriber has its own queue at the publisher (queue_size,
     # drop-oldest), so one whose callback never returns loses messages; nobody else does.
