@@ -47,6 +47,7 @@ GUARDED = {
     "turtle/rosx_turtle/keyboard.py": "turtle_teleop_key's raw keys (termios)",
     "rosx/launch/run/monitor.py": "roslaunch stops each node's process group (killpg, SIGKILL)",
     "rosx/launch/run/zygote.py": "roslaunch's fork server for Python nodes (fork, setsid, SIGCHLD)",
+    "rosx/node/unixros.py": "a publisher asks what its subscriber has not read (fcntl's ioctl)",
     "rosx/node/slices.py": "short time slices and hand-offs (uname, sched_getscheduler, sched_yield)",
     "rosx/transport/descriptors.py": "the descriptor limit its servers keep a reserve under (resource)",
 }

@@ -19,15 +19,29 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
   lock, whichever thread writes.
 * A peer that closes, resets or sends garbage ends the stream; `on_close` is then called once,
   on the loop. Bytes a subscriber sends after its header are read and ignored: reading is how
-  a closed peer is noticed before the next publish.
+  a closed peer is noticed before the next publish. `close` first writes what waits, as far
+  as the socket takes it.
+* Frames are held back only while the peer has frames still to read (a flood over a Unix
+  socket, whose sender can ask what its peer has not read: `rosx.node.unixros.unread_probe`),
+  and written together: one ``sendmsg`` for many small frames instead of one ``send`` each,
+  fewer system calls for the publisher and fewer, larger reads for the subscriber. A frame
+  published after a pause, or while the peer has read everything (a lone message, a
+  ping-pong, a burst the reader keeps up with), is written at once as above. What is held
+  goes out once the peer has read what it had (asked every `PROBE_EVERY` frames), once
+  `HOLD_FRAMES` frames or `HOLD_BYTES` bytes wait, before a frame of `HOLD_SIZE` bytes or
+  more, with the first frame after a pause, and at the latest `HOLD_TICK` seconds later
+  (the I/O loop writes it if the publisher has stopped): the same bytes in the same order,
+  and a bounded queue never holds more than its size (it drops nothing it would not have).
 
 What this module must not know: topics, message types, headers. It moves frames.
 """
 
 from __future__ import annotations
 
+import os
 import socket
 import threading
+import time
 from collections import deque
 from typing import TYPE_CHECKING
 
@@ -48,6 +62,27 @@ _MAX_IOV = 512
 #: While frames wait, a new frame tries to write them once every this many frames (the I/O
 #: loop writes them too, whenever the socket is writable).
 FLUSH_EVERY = 16
+
+#: Whether streams that can ask what their peer has not read hold frames back while it has
+#: some (``ROSX_BATCH=0`` says no).
+HOLD_ENABLED = os.environ.get("ROSX_BATCH", "1") != "0"
+#: Frames of a run (each sent less than `RUN_GAP_NS` after the one before) before the peer is
+#: asked whether it is behind: a burst the reader keeps up with never asks.
+HOLD_RUN = 16
+#: A pause between two frames that ends a run (as `rosx.node.slices.RUN_GAP_NS`).
+RUN_GAP_NS = 200_000
+#: Frames between two questions to the peer's socket (each is a system call).
+PROBE_EVERY = 8
+#: At most this many frames, and this many bytes, are held.
+HOLD_FRAMES = 64
+HOLD_BYTES = 64 * 1024
+#: A frame this large is never held (its copy costs more than its system call).
+HOLD_SIZE = 4096
+#: Held frames wait at most about this long (seconds): the I/O loop writes them.
+HOLD_TICK = 0.001
+_HOLD_TICK_NS = int(HOLD_TICK * 1e9)
+
+_clock = time.perf_counter_ns
 
 
 def frame_size(frame: Frame) -> int:
@@ -80,7 +115,11 @@ class OutgoingStream:
         io: LoopThread,
         queue_size: int | None,
         on_close: Callable[[OutgoingStream], None] | None = None,
+        *,
+        unread: Callable[[], int] | None = None,
     ) -> None:
+        """``unread`` says how many bytes sent the peer has not read yet: given, frames may
+        be held back while it has some (see the module's contract)."""
         sock.setblocking(False)
         self.sock = sock
         self.fileno = sock.fileno()
@@ -94,6 +133,16 @@ class OutgoingStream:
         self._pending_bytes = 0
         self._head_sent = 0  # bytes of _pending[0] already written
         self._queued_since = 0  # frames queued since a queued frame last tried to write
+        #: Holding frames back (see the contract): the question to the peer's socket, the
+        #: time of the last frame and the frames of its run, whether what `_pending` holds is
+        #: held (the socket is not full) and how many frames, whether the loop's timer runs.
+        self._unread = unread if HOLD_ENABLED else None
+        self._last_ns = 0
+        self._run = 0
+        self._holding = False
+        self._held = 0
+        self._hold_frames = min(HOLD_FRAMES, self._limit) if self._limit else HOLD_FRAMES
+        self._ticking = False
         self.closed = False
         self.bytes_sent = 0
         self.frames_sent = 0
@@ -110,6 +159,9 @@ class OutgoingStream:
         lock.acquire()
         try:
             if self.closed:
+                return
+            unread = self._unread
+            if unread is not None and self._hold_locked(frame, unread):
                 return
             if self._pending:
                 self._enqueue_locked(frame)
@@ -135,6 +187,56 @@ class OutgoingStream:
             self._io.call_soon(self._start_writing)
         finally:
             lock.release()
+
+    def _hold_locked(self, frame: Frame, unread: Callable[[], int]) -> bool:
+        """Hold ``frame`` back if the peer is behind (see the module's contract); whether it
+        was taken (held, or written with the frames held before it)."""
+        now = _clock()
+        gap = now - self._last_ns
+        self._last_ns = now
+        if gap >= RUN_GAP_NS:
+            # A pause: this frame is wanted now, and what was held goes first.
+            self._run = 0
+            if self._holding:
+                self._release_locked(keep=False)
+            return False
+        run = self._run = self._run + 1
+        pending = self._pending
+        if self._holding:
+            pending.append(frame)
+            size = len(frame) if frame.__class__ is bytes else frame_size(frame)
+            self._pending_bytes += size
+            held = self._held = self._held + 1
+            if size >= HOLD_SIZE or held >= self._hold_frames or self._pending_bytes >= HOLD_BYTES:
+                self._release_locked(keep=True)  # the peer is likely behind still
+            elif not held % PROBE_EVERY and not unread():
+                self._release_locked(keep=False)  # the peer has read all: it waits
+            return True
+        if run < HOLD_RUN or run % PROBE_EVERY or pending or self._hold_frames < 2:
+            return False
+        size = len(frame) if frame.__class__ is bytes else frame_size(frame)
+        if size >= HOLD_SIZE or not unread():
+            return False
+        pending.append(frame)
+        self._pending_bytes += size
+        self._holding = True
+        self._held = 1
+        if not self._ticking:
+            self._ticking = True
+            self._io.call_soon(self._tick_later)
+        return True
+
+    def _release_locked(self, *, keep: bool) -> None:
+        """Write the held frames; go on holding if ``keep`` (and the socket took them all)."""
+        self._flush_locked()
+        self._held = 0
+        if self._pending and not self.closed:
+            # The socket is full: the loop writes the rest when it can, as for any frames
+            # the socket did not take.
+            self._holding = False
+            self._io.call_soon(self._start_writing)
+        else:
+            self._holding = keep and not self.closed
 
     def _enqueue_locked(self, frame: Frame) -> None:
         # Frames already wait: this one joins them, then whatever the socket takes now goes.
@@ -174,11 +276,15 @@ class OutgoingStream:
         return len(self._pending)
 
     def close(self) -> None:
-        """End the stream (idempotent); `on_close` runs on the loop."""
+        """End the stream (idempotent), after writing what waits as far as the socket takes
+        it; `on_close` runs on the loop."""
         with self._lock:
             if self.closed:
                 return
-            self._fail_locked()
+            if self._pending:
+                self._flush_locked()
+            if not self.closed:
+                self._fail_locked()
 
     # -- the loop ----------------------------------------------------------------------------
 
@@ -213,6 +319,20 @@ class OutgoingStream:
             data = b""
         if not data:
             self.close()
+
+    def _tick_later(self) -> None:
+        self._io.loop.call_later(HOLD_TICK, self._tick)
+
+    def _tick(self) -> None:
+        # Held frames go out now; the timer goes on while frames come (a flood), and stops
+        # after a tick without any (the next frame held starts it again).
+        with self._lock:
+            active = _clock() - self._last_ns < _HOLD_TICK_NS
+            if self._holding and not self.closed:
+                self._release_locked(keep=active)
+            self._ticking = active and not self.closed
+        if self._ticking:
+            self._tick_later()
 
     def _start_writing(self) -> None:
         if not self.closed:

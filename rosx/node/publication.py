@@ -388,11 +388,13 @@ class Publication:
 
     def accept(self, sock: socket.socket, accepted: SubscriberAccepted) -> SubscriberLink:
         """Serve a subscriber whose header was accepted: reply, send the latch, then stream."""
+        unread = None
         if sock.family == socket.AF_UNIX:
             unixros.configure_publisher(sock)
+            unread = unixros.unread_probe(sock)
         else:
             configure_nodelay(sock, bool(accepted.tcp_nodelay))
-        stream = OutgoingStream(sock, self.io, self.queue_size, self._closed_stream)
+        stream = OutgoingStream(sock, self.io, self.queue_size, self._closed_stream, unread=unread)
         link = SubscriberLink.connected(stream, accepted.callerid, self.unix_address)
         with self._lock:
             stream.send(encode_header(accepted.reply))

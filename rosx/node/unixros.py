@@ -31,6 +31,10 @@ import socket
 import struct
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
 
 #: The protocol's name in ``requestTopic`` and ``getBusInfo``.
 PROTOCOL = "UNIXROS"
@@ -47,6 +51,8 @@ SEND_BUFFER = 4 * 1024 * 1024
 
 _BOOT_ID = "/proc/sys/kernel/random/boot_id"
 _CREDENTIALS = struct.Struct("3i")  # struct ucred: pid, uid, gid
+#: Linux's ``SIOCOUTQ`` (``TIOCOUTQ``): a socket's bytes sent and not yet taken by the peer.
+_SIOCOUTQ = 0x5411
 
 
 @functools.cache
@@ -114,6 +120,35 @@ def configure_publisher(sock: socket.socket) -> None:
     with contextlib.suppress(OSError):
         if sock.getsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF) < SEND_BUFFER:
             sock.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, SEND_BUFFER)
+
+
+def unread_probe(sock: socket.socket) -> Callable[[], int] | None:
+    """A function giving the bytes this end of a Unix stream socket has sent and the peer has
+    not read yet (``SIOCOUTQ``); None where that cannot be asked.
+
+    Over a Unix socket what is sent waits in the peer's receive queue, charged to the sender
+    until the peer reads it: a non-zero answer says the peer has frames still to read (over
+    TCP, the same question says what the peer's kernel has not acknowledged, not read).
+    """
+    if not sys.platform.startswith("linux") or sock.family != socket.AF_UNIX:
+        return None
+    try:
+        import fcntl  # noqa: PLC0415 - POSIX only: asked of Unix sockets on Linux alone
+    except ImportError:
+        return None
+    ioctl = fcntl.ioctl
+    fileno = sock.fileno()
+    answer = bytearray(4)
+    from_bytes = int.from_bytes
+
+    def unread() -> int:
+        try:
+            ioctl(fileno, _SIOCOUTQ, answer, True)
+        except OSError:
+            return 0
+        return from_bytes(answer, "little")
+
+    return unread
 
 
 def peer_pid(sock: socket.socket) -> int:

@@ -62,6 +62,34 @@ def test_twist_flows_between_two_nodes(make_node: Callable[..., Node]) -> None:
     assert got[0]._connection_header["type"] == "geometry_msgs/Twist"
 
 
+def test_a_flood_arrives_whole_and_in_order_and_its_last_message_is_the_latch(
+    make_node: Callable[..., Node],
+) -> None:
+    """A publisher writes a flood's frames together while its subscriber is behind
+    (`rosx.node.outgoing`): every message arrives, in order, as published, with a bounded
+    queue too, and the latch a late subscriber gets is the last one."""
+    talker, listener, late_node = make_node("talker"), make_node("listener"), make_node("late")
+    got: list[Any] = []
+    bounded: list[float] = []
+    sub = listener.subscribe("/flood", Twist, got.append, queue_size=None)
+    sub_bounded = late_node.subscribe("/flood", Twist, lambda m: bounded.append(m.linear.x))
+    pub = talker.advertise("/flood", Twist, queue_size=5000, latch=True)
+    wait_for(lambda: pub.get_num_connections() == 2 and sub.get_num_connections() == 1)
+    wait_for(lambda: sub_bounded.get_num_connections() == 1)
+    msg = Twist()
+    for i in range(3000):
+        msg.linear.x = float(i)
+        msg.angular.z = -float(i)
+        pub.publish(msg)
+    wait_for(lambda: len(got) == 3000 and len(bounded) == 3000, what="the flood")
+    assert [(m.linear.x, m.angular.z) for m in got] == [(float(i), -float(i)) for i in range(3000)]
+    assert bounded == [float(i) for i in range(3000)]
+    latched: list[float] = []
+    make_node("later").subscribe("/flood", Twist, lambda m: latched.append(m.linear.x))
+    wait_for(lambda: latched, what="the latch")
+    assert latched == [2999.0]
+
+
 def test_callbacks_run_on_a_thread_of_their_own(make_node: Callable[..., Node]) -> None:
     a, b = make_node("a"), make_node("b")
     threads: list[str] = []

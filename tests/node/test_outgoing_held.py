@@ -1,0 +1,223 @@
+"""A publisher's stream holding frames back while its Unix peer is behind (`rosx.node.outgoing`):
+the peer gets the same bytes in the same order, a frame after a pause or to a peer that has read
+everything goes at once, nothing held is lost (the loop writes it, `close` writes it), and a
+bounded queue drops nothing it would not have dropped.
+
+The stream's clock is replaced by one the test moves, so a run of frames and a pause are what the
+test says they are, however loaded the machine."""
+
+from __future__ import annotations
+
+import socket
+import struct
+import sys
+from collections.abc import Iterator
+
+import pytest
+
+from rosx.node import outgoing, unixros
+from rosx.node.outgoing import HOLD_RUN, OutgoingStream
+from rosx.transport.loop_thread import LoopThread
+from tests.support.procs import wait_for
+
+pytestmark = pytest.mark.skipif(
+    not sys.platform.startswith("linux"), reason="a Unix socket's unread bytes: Linux only"
+)
+
+
+class Clock:
+    """The stream's clock: each reading is a microsecond after the last, unless moved."""
+
+    def __init__(self) -> None:
+        self.now = 10**12
+
+    def __call__(self) -> int:
+        self.now += 1_000
+        return self.now
+
+    def pause(self, seconds: float) -> None:
+        self.now += int(seconds * 1e9)
+
+
+@pytest.fixture
+def clock(monkeypatch: pytest.MonkeyPatch) -> Clock:
+    fake = Clock()
+    monkeypatch.setattr(outgoing, "_clock", fake)
+    return fake
+
+
+@pytest.fixture
+def io() -> Iterator[LoopThread]:
+    loop = LoopThread("test-held").start()
+    yield loop
+    loop.stop()
+
+
+@pytest.fixture
+def pair() -> Iterator[tuple[socket.socket, socket.socket]]:
+    mine, peer = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
+    yield mine, peer
+    peer.close()
+
+
+def stream_of(mine: socket.socket, io: LoopThread, queue_size: int | None = 0) -> OutgoingStream:
+    unread = unixros.unread_probe(mine)
+    assert unread is not None
+    return OutgoingStream(mine, io, queue_size, unread=unread)
+
+
+def twist_frame(number: int, size: int = 48) -> bytes:
+    """A small frame (a Twist's size) naming ``number``."""
+    return struct.pack("<II", size, number) + bytes(size - 4)
+
+
+def read_frames(peer: socket.socket, count: int) -> list[bytes]:
+    """``count`` whole frames from the stream (length prefix included)."""
+    data = bytearray()
+    frames: list[bytes] = []
+    peer.settimeout(10)
+    while len(frames) < count:
+        while len(data) >= 4 and len(data) >= 4 + int.from_bytes(data[:4], "little"):
+            size = 4 + int.from_bytes(data[:4], "little")
+            frames.append(bytes(data[:size]))
+            del data[:size]
+        if len(frames) < count:
+            chunk = peer.recv(1 << 20)
+            assert chunk, "the stream ended"
+            data += chunk
+    assert not data
+    return frames
+
+
+def test_a_flood_to_a_peer_behind_is_held_then_arrives_whole_and_in_order(
+    io: LoopThread,
+    pair: tuple[socket.socket, socket.socket],
+    clock: Clock,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(outgoing, "HOLD_TICK", 0.3)
+    mine, peer = pair
+    stream = stream_of(mine, io)
+    sent = [twist_frame(n) for n in range(40)]
+    for item in sent:
+        stream.send(item)
+    # The peer has read nothing: after the first run of frames, the rest wait together,
+    # though the socket has room for them.
+    assert stream.queued == len(sent) - HOLD_RUN
+    # Nothing more is published: the loop writes what is held.
+    assert read_frames(peer, len(sent)) == sent
+    wait_for(lambda: stream.frames_sent == len(sent), what="every frame counted")
+    assert stream.bytes_sent == sum(len(item) for item in sent)
+    stream.close()
+
+
+def test_frames_to_a_peer_that_has_read_everything_go_at_once(
+    io: LoopThread, pair: tuple[socket.socket, socket.socket], clock: Clock
+) -> None:
+    """A ping-pong, or a reader that keeps up with a flood: never held."""
+    mine, peer = pair
+    stream = stream_of(mine, io)
+    for number in range(100):
+        item = twist_frame(number)
+        stream.send(item)
+        assert stream.queued == 0
+        assert read_frames(peer, 1) == [item]
+    stream.close()
+
+
+def test_a_frame_after_a_pause_goes_at_once_with_what_was_held(
+    io: LoopThread,
+    pair: tuple[socket.socket, socket.socket],
+    clock: Clock,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)  # only the pause writes them
+    mine, peer = pair
+    stream = stream_of(mine, io)
+    sent = [twist_frame(n) for n in range(30)]
+    for item in sent:
+        stream.send(item)
+    assert stream.queued
+    clock.pause(0.001)
+    sent.append(twist_frame(30))
+    stream.send(sent[-1])
+    assert stream.queued == 0
+    assert read_frames(peer, len(sent)) == sent
+    stream.close()
+
+
+def test_a_large_frame_is_never_held_and_takes_the_held_ones_along(
+    io: LoopThread,
+    pair: tuple[socket.socket, socket.socket],
+    clock: Clock,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)
+    mine, peer = pair
+    stream = stream_of(mine, io)
+    sent: list[bytes | tuple[bytes, ...]] = [twist_frame(n) for n in range(30)]
+    for item in sent:
+        stream.send(item)
+    assert stream.queued
+    large = (struct.pack("<II", 8000, 30), bytes(7996))  # in parts, as an image's
+    sent.append(large)
+    stream.send(large)
+    assert stream.queued == 0
+    expected = [item if isinstance(item, bytes) else b"".join(item) for item in sent]
+    assert read_frames(peer, len(sent)) == expected
+    stream.close()
+
+
+def test_closing_writes_what_is_held(
+    io: LoopThread,
+    pair: tuple[socket.socket, socket.socket],
+    clock: Clock,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)
+    mine, peer = pair
+    stream = stream_of(mine, io)
+    sent = [twist_frame(n) for n in range(50)]
+    for item in sent:
+        stream.send(item)
+    assert stream.queued
+    stream.close()
+    assert read_frames(peer, len(sent)) == sent
+    assert peer.recv(10) == b""  # then the end of the stream
+
+
+def test_a_bounded_queue_holds_no_more_than_its_size_and_drops_nothing_for_it(
+    io: LoopThread,
+    pair: tuple[socket.socket, socket.socket],
+    clock: Clock,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)
+    mine, peer = pair
+    stream = stream_of(mine, io, queue_size=5)
+    sent = [twist_frame(n) for n in range(60)]
+    for item in sent:
+        stream.send(item)
+        assert stream.queued <= 5
+    assert stream.dropped == 0  # the socket had room for every frame
+    clock.pause(0.001)
+    sent.append(twist_frame(60))
+    stream.send(sent[-1])
+    assert read_frames(peer, len(sent)) == sent
+    stream.close()
+
+
+def test_a_full_socket_behind_held_frames_loses_nothing(
+    io: LoopThread, pair: tuple[socket.socket, socket.socket], clock: Clock
+) -> None:
+    """Held frames that the socket cannot take wait as any frames it cannot take: the loop
+    writes them once the peer reads."""
+    mine, peer = pair
+    mine.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, 16 * 1024)  # fills at once
+    stream = stream_of(mine, io, queue_size=0)
+    sent = [twist_frame(n, 1000 + n) for n in range(300)]
+    for item in sent:
+        stream.send(item)
+    assert read_frames(peer, len(sent)) == sent
+    wait_for(lambda: stream.queued == 0, what="the queue to empty")
+    stream.close()
