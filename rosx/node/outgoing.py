@@ -21,17 +21,18 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
   on the loop. Bytes a subscriber sends after its header are read and ignored: reading is how
   a closed peer is noticed before the next publish. `close` first writes what waits, as far
   as the socket takes it.
-* Frames are held back only while the peer has frames still to read (a flood over a Unix
-  socket, whose sender can ask what its peer has not read: `rosx.node.unixros.unread_probe`),
-  and written together: one ``sendmsg`` for many small frames instead of one ``send`` each,
-  fewer system calls for the publisher and fewer, larger reads for the subscriber. A frame
-  published after a pause, or while the peer has read everything (a lone message, a
-  ping-pong, a burst the reader keeps up with), is written at once as above. What is held
-  goes out once the peer has read what it had (asked every `PROBE_EVERY` frames), once
-  `HOLD_FRAMES` frames or `HOLD_BYTES` bytes wait, before a frame of `HOLD_SIZE` bytes or
-  more, with the first frame after a pause, and at the latest `HOLD_TICK` seconds later
-  (the I/O loop writes it if the publisher has stopped): the same bytes in the same order,
-  and a bounded queue never holds more than its size (it drops nothing it would not have).
+* In a flood over a Unix socket, whose sender can ask what its peer has not read yet
+  (`rosx.node.unixros.unread_probe`), small frames are held back and written together, one
+  ``sendmsg`` for many instead of one ``send`` each: fewer system calls for the publisher,
+  fewer and larger reads for the subscriber. Holding starts only once frames have come less
+  than `FLOOD_GAP_NS` apart for `HOLD_RUN` frames and the peer has frames still to read (it
+  is asked every `PROBE_EVERY` frames), so a lone message, a ping-pong and a burst the reader
+  keeps up with are written at once, as above. What is held goes out every `PROBE_EVERY`
+  frames if the peer has read what it had, once `HOLD_FRAMES` frames or `HOLD_BYTES` bytes
+  wait, with a frame of `HOLD_SIZE` bytes or more, with the first frame after a pause (that
+  frame goes at once, and holding stops), by `close`, and at the latest `HOLD_TICK` seconds
+  later (the I/O loop writes it if the publisher has stopped): the same bytes in the same
+  order. A bounded queue holds no more than its size, so holding drops nothing.
 
 What this module must not know: topics, message types, headers. It moves frames.
 """
@@ -66,16 +67,21 @@ FLUSH_EVERY = 16
 #: Whether streams that can ask what their peer has not read hold frames back while it has
 #: some (``ROSX_BATCH=0`` says no).
 HOLD_ENABLED = os.environ.get("ROSX_BATCH", "1") != "0"
-#: Frames of a run (each sent less than `RUN_GAP_NS` after the one before) before the peer is
-#: asked whether it is behind: a burst the reader keeps up with never asks.
+#: Frames of a flood's run (each sent less than `FLOOD_GAP_NS` after the one before) before the
+#: peer is asked whether it is behind: a burst the reader keeps up with never asks.
 HOLD_RUN = 16
-#: A pause between two frames that ends a run (as `rosx.node.slices.RUN_GAP_NS`).
-RUN_GAP_NS = 200_000
-#: Frames between two questions to the peer's socket (each is a system call).
+#: A pause between two frames that ends a run, and writes what is held (a Python publisher in
+#: a loop publishes every 1-3 µs; a ping-pong may make runs too, but its peer has read all).
+FLOOD_GAP_NS = 20_000
+#: Frames between two questions to the peer's socket (each is a system call) before holding,
+#: and while holding: the held frames go when the peer has read what it had, waking it once
+#: for that many frames (a reader woken on an idle CPU of a virtual machine costs its waker
+#: several microseconds).
 PROBE_EVERY = 8
+HOLD_PROBE_EVERY = 32
 #: At most this many frames, and this many bytes, are held.
-HOLD_FRAMES = 64
-HOLD_BYTES = 64 * 1024
+HOLD_FRAMES = 256
+HOLD_BYTES = 256 * 1024
 #: A frame this large is never held (its copy costs more than its system call).
 HOLD_SIZE = 4096
 #: Held frames wait at most about this long (seconds): the I/O loop writes them.
@@ -83,6 +89,10 @@ HOLD_TICK = 0.001
 _HOLD_TICK_NS = int(HOLD_TICK * 1e9)
 
 _clock = time.perf_counter_ns
+
+
+def _nothing_unread() -> int:
+    return 0
 
 
 def frame_size(frame: Frame) -> int:
@@ -136,7 +146,8 @@ class OutgoingStream:
         #: Holding frames back (see the contract): the question to the peer's socket, the
         #: time of the last frame and the frames of its run, whether what `_pending` holds is
         #: held (the socket is not full) and how many frames, whether the loop's timer runs.
-        self._unread = unread if HOLD_ENABLED else None
+        self._can_hold = unread is not None and HOLD_ENABLED
+        self._unread = unread or _nothing_unread
         self._last_ns = 0
         self._run = 0
         self._holding = False
@@ -160,8 +171,25 @@ class OutgoingStream:
         try:
             if self.closed:
                 return
-            unread = self._unread
-            if unread is not None and self._hold_locked(frame, unread):
+            if self._holding:
+                # A flood's usual frame, held with those before it (`_hold_locked`, inlined).
+                now = _clock()
+                gap = now - self._last_ns
+                self._last_ns = now
+                if gap < FLOOD_GAP_NS:
+                    self._pending.append(frame)
+                    size = len(frame) if frame.__class__ is bytes else frame_size(frame)
+                    held_bytes = self._pending_bytes = self._pending_bytes + size
+                    held = self._held = self._held + 1
+                    if held >= self._hold_frames or held_bytes >= HOLD_BYTES or size >= HOLD_SIZE:
+                        self._release_locked(keep=True)
+                    elif not held % HOLD_PROBE_EVERY and not self._unread():
+                        self._release_locked(keep=True)  # the peer has read all it had
+                    return
+                # A pause: what was held goes, then this frame at once.
+                self._run = 0
+                self._release_locked(keep=False)
+            elif self._can_hold and self._hold_locked(frame):
                 return
             if self._pending:
                 self._enqueue_locked(frame)
@@ -188,36 +216,22 @@ class OutgoingStream:
         finally:
             lock.release()
 
-    def _hold_locked(self, frame: Frame, unread: Callable[[], int]) -> bool:
-        """Hold ``frame`` back if the peer is behind (see the module's contract); whether it
-        was taken (held, or written with the frames held before it)."""
+    def _hold_locked(self, frame: Frame) -> bool:
+        """Whether to start holding frames back with ``frame`` (see the module's contract):
+        a flood's run is long enough, and the peer has not read what it was sent."""
         now = _clock()
         gap = now - self._last_ns
         self._last_ns = now
-        if gap >= RUN_GAP_NS:
-            # A pause: this frame is wanted now, and what was held goes first.
+        if gap >= FLOOD_GAP_NS:
             self._run = 0
-            if self._holding:
-                self._release_locked(keep=False)
             return False
         run = self._run = self._run + 1
-        pending = self._pending
-        if self._holding:
-            pending.append(frame)
-            size = len(frame) if frame.__class__ is bytes else frame_size(frame)
-            self._pending_bytes += size
-            held = self._held = self._held + 1
-            if size >= HOLD_SIZE or held >= self._hold_frames or self._pending_bytes >= HOLD_BYTES:
-                self._release_locked(keep=True)  # the peer is likely behind still
-            elif not held % PROBE_EVERY and not unread():
-                self._release_locked(keep=False)  # the peer has read all: it waits
-            return True
-        if run < HOLD_RUN or run % PROBE_EVERY or pending or self._hold_frames < 2:
+        if run < HOLD_RUN or run % PROBE_EVERY or self._pending or self._hold_frames < 2:
             return False
         size = len(frame) if frame.__class__ is bytes else frame_size(frame)
-        if size >= HOLD_SIZE or not unread():
+        if size >= HOLD_SIZE or not self._unread():
             return False
-        pending.append(frame)
+        self._pending.append(frame)
         self._pending_bytes += size
         self._holding = True
         self._held = 1
