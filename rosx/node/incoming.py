@@ -11,9 +11,13 @@ a topic whose subscriber keeps up), handed over as it is. A frame of 64 KiB or m
 it beyond the length is copied there once), and handed over as a ``memoryview`` of it: the
 kernel's copy is then the only one before the decoder's (``bytes`` fields copy once; ``numpy``
 arrays read the buffer in place). The next large frame reuses that buffer when nothing views
-it any more (`IncomingStream._buffer`). ``on_close`` is called once, on
-the loop, when the stream ends. The byte and frame counts (``getBusStats``) are written by that
-one thread only (and by the handshake, before it starts).
+it any more (`IncomingStream._buffer`). A reader given a locator (`rosx.msg.codec.parts.
+array_locator`: every callback takes messages of a type whose large byte array is a field of
+its own) takes a large frame in three parts instead (`IncomingStream._read_in_parts`): the
+bytes before the array, the array read by the kernel straight into the ``bytes`` the message
+will hold (``MSG_WAITALL``), the rest; the kernel's copy is then the only one. ``on_close`` is
+called once, on the loop, when the stream ends. The byte and frame counts (``getBusStats``)
+are written by that one thread only (and by the handshake, before it starts).
 
 Retries follow rospy: a publisher whose XML-RPC server refuses the connection, or that refuses
 the topic, is given up at once; other failures to reach it (timeouts, unreachable hosts, a
@@ -32,6 +36,7 @@ import struct
 from typing import TYPE_CHECKING, Any, Protocol
 
 from rosx.master.client import MasterError
+from rosx.msg.codec.parts import LARGE, FrameInParts
 from rosx.node import unixros
 from rosx.transport.errors import ConnectError, TransportError
 from rosx.wire.errors import ProtocolError
@@ -42,7 +47,11 @@ from rosx.wire.tcpros import check_publisher_reply
 if TYPE_CHECKING:
     from collections.abc import Awaitable, Callable, Sequence
 
+    from rosx.msg.codec.parts import Locator
     from rosx.transport.loop_thread import LoopThread
+
+    #: A frame as a reader hands it over: its payload, whole or in parts.
+    Received = bytes | memoryview | FrameInParts
 
     class Detacher(Protocol):
         """The receiver thread that owns a connected stream's socket."""
@@ -61,6 +70,11 @@ _READ_BOUND = 8 * 1024 * 1024
 # A frame at least this large is read straight into a buffer of its own (`_read_large`).
 _DIRECT = 64 * 1024
 _DONTWAIT = getattr(socket, "MSG_DONTWAIT", 0)
+_PEEK = getattr(socket, "MSG_PEEK", 0)
+_WAITALL = getattr(socket, "MSG_WAITALL", 0)
+#: Bytes a reader given a locator looks at before it reads a frame: enough for the small
+#: fields before an image's or a point cloud's data.
+_HEAD = 4096
 #: A frame's length prefix.
 U32 = struct.Struct("<I")
 
@@ -123,7 +137,7 @@ class IncomingStream:
         self._on_error = on_error
         self.header: dict[str, str] = {}
         self.latching = False
-        self.latched: bytes | memoryview | None = None
+        self.latched: Received | None = None
         self.sock: socket.socket | None = None
         #: ``TCPROS`` or ``UNIXROS`` (`rosx.node.unixros`), the publisher's address (a Unix
         #: socket's with port 0), and the connection's description, once connected.
@@ -144,6 +158,9 @@ class IncomingStream:
         self.view = memoryview(self.scratch)
         #: The buffer of the last large frame, kept to read the next one into (`_buffer`).
         self._spare: bytearray | None = None
+        #: Whether a reader given a locator looks at the next frame before reading it (after
+        #: a large frame, and at first): a topic of small frames is read as any other.
+        self._look = True
         self._task: asyncio.Task[None] | None = None
         #: The receiver thread reading this stream once connected (see `Receiver`).
         self.receiver: Detacher | None = None
@@ -294,19 +311,24 @@ class IncomingStream:
 
     # -- the data path (on the receiver's thread) --------------------------------------------
 
-    def read(self) -> Sequence[bytes | memoryview] | None:
+    def read(self, locate: Locator | None = None) -> Sequence[Received] | None:
         """Wait for data, read what the socket holds (up to a bound), return complete frames.
 
         The socket is blocking: the first read waits; later ones (after a full buffer) take
         only what is already there. ``None`` means the stream has ended (closed, failed, or out
-        of sync); the caller then closes the socket and tells the loop.
+        of sync); the caller then closes the socket and tells the loop. With ``locate``, a
+        large frame whose array it finds is read in parts (`_read_in_parts`).
         """
         sock = self.sock
         if sock is None or self.closed:
             return None
         scratch = self.scratch
         whole = not self._reader.buffered  # a read may then hold exactly one frame
-        if not whole:
+        if whole and locate is not None and self._look and _PEEK and _WAITALL:
+            frames = self._read_in_parts(sock, locate)
+            if frames != ():
+                return frames
+        elif not whole:
             pending = self._reader.pending()
             if pending >= _DIRECT:
                 return self._read_large(sock, pending)
@@ -330,7 +352,7 @@ class IncomingStream:
             self.latched = frame
         return frame
 
-    def read_on(self, sock: socket.socket, size: int) -> Sequence[bytes | memoryview] | None:
+    def read_on(self, sock: socket.socket, size: int) -> Sequence[Received] | None:
         """The complete frames after a read of ``size`` bytes into `scratch` that was not one
         whole frame alone, with what more the socket holds already (up to a bound); ``None``:
         the stream has ended (``size`` 0) or is out of sync."""
@@ -369,7 +391,7 @@ class IncomingStream:
 
     def _read_large(
         self, sock: socket.socket, size: int, read: int = 0
-    ) -> Sequence[bytes | memoryview] | None:
+    ) -> Sequence[Received] | None:
         """Read the rest of a frame of ``size`` bytes into a buffer of its own (`_buffer`).
         Its first bytes are in `scratch` after the length prefix, ``read`` bytes read in all
         (a read that began the frame), or else held by the frame reader."""
@@ -392,10 +414,77 @@ class IncomingStream:
                 got += count
         self.bytes_received += 4 + size if read else size - head
         self.frames_received += 1
+        self._look = True  # the next may be large too: look at it before reading it
         frame = memoryview(buff) if len(buff) == size else memoryview(buff)[:size]
         if self.latching:
             self.latched = frame
         return [frame]
+
+    def _read_in_parts(self, sock: socket.socket, locate: Locator) -> Sequence[Received] | None:
+        """Read the next frame in three parts (`rosx.msg.codec.parts.FrameInParts`) if it is a
+        large one whose array ``locate`` finds in its first bytes; ``()``: nothing was read,
+        read it as any frame. ``None``: the stream has ended."""
+        scratch = self.scratch
+        view = self.view
+        try:
+            seen = sock.recv_into(scratch, _HEAD, _PEEK)
+        except (BlockingIOError, InterruptedError):
+            return ()
+        except OSError:
+            return None
+        if seen < 4:
+            return None if seen == 0 else ()
+        (length,) = U32.unpack_from(scratch)
+        if not _DIRECT <= length <= self._reader.max_frame_size:
+            self._look = length >= _DIRECT  # small frames: read as any other from now on
+            return ()
+        at = locate(view[4:seen])
+        if at is None and seen < _HEAD:
+            # The frame's first bytes are still coming: wait for them (it has 64 KiB or more).
+            try:
+                seen = sock.recv_into(scratch, _HEAD, _PEEK | _WAITALL)
+            except OSError:
+                return ()
+            at = locate(view[4:seen])
+        if at is None:
+            return ()
+        (count,) = U32.unpack_from(scratch, 4 + at)
+        rest = length - at - 4 - count
+        if count < LARGE or rest < 0:
+            return ()  # a small array, or a frame that does not hold it: decoded as usual
+        try:
+            took = sock.recv_into(scratch, 8 + at, _WAITALL)  # what was looked at: there
+            if took != 8 + at:
+                return None
+            head = bytes(view[4 : 8 + at])
+            array = self._read_exactly(sock, count)
+            tail = self._read_exactly(sock, rest) if rest else b""
+        except OSError:
+            return None
+        if array is None or tail is None:
+            return None
+        self.bytes_received += 4 + length
+        self.frames_received += 1
+        frame = FrameInParts(head, array, tail)
+        if self.latching:
+            self.latched = frame
+        return (frame,)
+
+    @staticmethod
+    def _read_exactly(sock: socket.socket, count: int) -> bytes | None:
+        """``count`` bytes read into a ``bytes`` of their own (None: the stream ended)."""
+        data = sock.recv(count, _WAITALL)
+        if len(data) == count:
+            return data
+        parts = [data]  # a signal cut the wait short: the rest, then one copy
+        got = len(data)
+        while got < count:
+            if not data:
+                return None
+            data = sock.recv(count - got, _WAITALL)
+            parts.append(data)
+            got += len(data)
+        return b"".join(parts)
 
     def _buffer(self, size: int) -> bytearray:
         """A buffer for a large frame of ``size`` bytes: the last one when nothing views it any
@@ -418,7 +507,7 @@ class IncomingStream:
         spare = self._spare = bytearray(size)
         return spare
 
-    def take_frames(self) -> Sequence[bytes | memoryview] | None:
+    def take_frames(self) -> Sequence[Received] | None:
         """The complete frames buffered so far (``None``: the stream is out of sync)."""
         try:
             frames = self._reader.frames()

@@ -55,16 +55,17 @@ if TYPE_CHECKING:
     from collections.abc import Callable, Sequence
     from concurrent.futures import Executor
 
-    from rosx.node.incoming import IncomingStream
+    from rosx.msg.codec.parts import Locator
+    from rosx.node.incoming import IncomingStream, Received
     from rosx.node.local import LocalLink
     from rosx.transport.loop_thread import LoopThread
 
-    Decode = Callable[[bytes | memoryview, dict[str, str]], Any]
+    Decode = Callable[[Received, dict[str, str]], Any]
     #: A callback and the decoder of what it receives.
     Entry = tuple[Callable[[Any], object], Decode]
     #: A frame (or a message from this process), the header of its connection, and the only
     #: entry to run it for (or None: all).
-    Item = tuple["bytes | memoryview | LocalMessage", dict[str, str], Entry | None]
+    Item = tuple["Received | LocalMessage", dict[str, str], Entry | None]
 
 #: With an unbounded queue, a synchronous in-process publisher waits while more wait than this.
 LOCAL_HIGH_WATER = 10_000
@@ -131,6 +132,8 @@ class Receiver:
         self._received_before = 0
         self.handled = 0
         self.dropped = 0
+        #: The callbacks whose locator `_locator` found last, and that locator.
+        self._located: tuple[tuple[Entry, ...] | None, Locator | None] = (None, None)
 
     # -- callbacks (any thread) --------------------------------------------------------------
 
@@ -149,7 +152,7 @@ class Receiver:
 
     def put(
         self,
-        frame: bytes | memoryview | LocalMessage,
+        frame: Received | LocalMessage,
         header: dict[str, str],
         only: Entry | None = None,
     ) -> None:
@@ -382,14 +385,16 @@ class Receiver:
                         self._dispatch_all()
                 frames = ()  # handed over: a large frame's buffer may serve the next read
                 entries = self.entries
+                locate = self._locator(entries)
                 if (
-                    len(entries) == 1
+                    locate is None
+                    and len(entries) == 1
                     and not stream.buffered
                     and getattr(entries[0][1], "fresh", None) is not None
                 ):
                     frames = self._read_direct(stream, entries)
                 else:
-                    frames = stream.read()
+                    frames = stream.read(locate)
         finally:
             with self._counting:
                 self._streams.discard(stream)
@@ -400,9 +405,24 @@ class Receiver:
                 sock.close()
             self._io.call_soon(stream.close)
 
-    def _run_frames(
-        self, frames: Sequence[bytes | memoryview], header: dict[str, str]
-    ) -> Sequence[bytes | memoryview]:
+    def _locator(self, entries: tuple[Entry, ...]) -> Locator | None:
+        """How the readers find the large byte array of frames for ``entries``: when every
+        callback takes messages of one type that has one (`rosx.node.subscription.
+        message_decoder`), they read large frames in parts (`rosx.node.incoming`)."""
+        located = self._located
+        if located[0] is entries:
+            return located[1]
+        decoders = [decode for _, decode in entries]
+        locate = getattr(decoders[0], "locate", None) if decoders else None
+        cls = getattr(decoders[0], "msg_class", None) if decoders else None
+        if any(getattr(d, "msg_class", None) is not cls for d in decoders[1:]):
+            locate = None
+        if any(getattr(d, "locate", None) is None for d in decoders):
+            locate = None
+        self._located = (entries, locate)
+        return locate
+
+    def _run_frames(self, frames: Sequence[Received], header: dict[str, str]) -> Sequence[Received]:
         """Run the callbacks of ``frames`` in order (holding the dispatch lock), for as long as
         the callbacks stay the same and the receiver runs; returns the frames left. A bounded
         queue keeps only the newest of a read, as if the frames had been queued."""
@@ -437,7 +457,7 @@ class Receiver:
 
     def _read_direct(
         self, stream: IncomingStream, entries: tuple[Entry, ...]
-    ) -> Sequence[bytes | memoryview] | None:
+    ) -> Sequence[Received] | None:
         """Read ``stream`` and run the one callback of ``entries`` for each read that is one
         whole frame, for as long as nothing waits, no callback runs and the callbacks stay
         ``entries``; then return what `IncomingStream.read` would return (``()``: nothing).
@@ -553,9 +573,7 @@ class Receiver:
         else:
             self._run(frame, header, entries)
 
-    def _run(
-        self, frame: bytes | memoryview, header: dict[str, str], entries: tuple[Entry, ...]
-    ) -> None:
+    def _run(self, frame: Received, header: dict[str, str], entries: tuple[Entry, ...]) -> None:
         if len(entries) == 1:  # the usual subscription: one callback, one decoded message
             callback, decode = entries[0]
             try:

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from rosx.msg.codec.parts import FrameInParts, array_locator, decode_in_parts
 from rosx.node import local
 from rosx.node.incoming import IncomingStream
 from rosx.node.receiver import Receiver
@@ -47,6 +48,7 @@ if TYPE_CHECKING:
     from concurrent.futures import Executor
 
     from rosx.msg.codec.message import Message
+    from rosx.node.incoming import Received
     from rosx.node.receiver import Decode, Entry
     from rosx.transport.loop_thread import LoopThread
 
@@ -90,29 +92,41 @@ class RawMessage:
         return len(self._buff)
 
 
-def _raw(frame: bytes | memoryview, header: dict[str, str]) -> RawMessage:
+def _raw(frame: Received, header: dict[str, str]) -> RawMessage:
+    if isinstance(frame, FrameInParts):
+        return RawMessage(frame.whole(), header)
     return RawMessage(frame if isinstance(frame, bytes) else bytes(frame), header)
 
 
-def message_decoder(
-    cls: type[Message],
-) -> Callable[[bytes | memoryview, dict[str, str]], Message]:
+def message_decoder(cls: type[Message]) -> Callable[[Received, dict[str, str]], Message]:
     """Decode frames of ``cls``: a fresh instance per frame, ``_connection_header`` set."""
     from rosx.msg.codec.codegen import variant  # noqa: PLC0415 - generated on first use
 
     fresh = variant(cls, "deserialize_fresh")
     new = object.__new__
+    locate = array_locator(cls)
 
-    def decode(frame: bytes | memoryview, header: dict[str, str]) -> Message:
+    def decode(frame: Received, header: dict[str, str]) -> Message:
         msg: Message = fresh(new(cls), frame)
         msg._connection_header = header
         return msg
 
+    def decode_parts(frame: Received, header: dict[str, str]) -> Message:
+        if isinstance(frame, FrameInParts):
+            msg = decode_in_parts(fresh, cls, frame)
+        else:
+            msg = fresh(new(cls), frame)
+        msg._connection_header = header
+        return msg
+
+    decoder = decode if locate is None else decode_parts
     # What it makes: an in-process message of this class is handed over as a copy instead.
-    setattr(decode, "msg_class", cls)  # noqa: B010 - an attribute on a function
-    # How: a reader may run the two lines above itself (`rosx.node.receiver`).
-    setattr(decode, "fresh", fresh)  # noqa: B010 - an attribute on a function
-    return decode
+    setattr(decoder, "msg_class", cls)  # noqa: B010 - an attribute on a function
+    # How: a reader may run the two lines of `decode` itself (`rosx.node.receiver`), and read
+    # large frames in parts for it (`rosx.node.incoming`).
+    setattr(decoder, "fresh", fresh)  # noqa: B010 - an attribute on a function
+    setattr(decoder, "locate", locate)  # noqa: B010 - an attribute on a function
+    return decoder
 
 
 def _pending_bytes(sock: socket.socket | None) -> int:
@@ -203,7 +217,7 @@ class Subscription:
     @staticmethod
     def decoder(
         msg_class: type[Message] | None,
-    ) -> Callable[[bytes | memoryview, dict[str, str]], Any]:
+    ) -> Callable[[Received, dict[str, str]], Any]:
         """How frames become what a callback receives: ``msg_class`` messages, or (``None``)
         `RawMessage` objects."""
         return _raw if msg_class is None else message_decoder(msg_class)

@@ -27,6 +27,8 @@ Twist = get_message_class("geometry_msgs/Twist")
 Vector3 = get_message_class("geometry_msgs/Vector3")
 String = get_message_class("std_msgs/String")
 Image = get_message_class("sensor_msgs/Image")
+PointCloud2 = get_message_class("sensor_msgs/PointCloud2")
+PointField = get_message_class("sensor_msgs/PointField")
 
 # rosnode's pattern for the connection text of getBusInfo (tools/rosnode).
 CONNECTION_PATTERN = re.compile(r"\w+ connection on port (\d+) to \[(.*) on socket (\d+)\]")
@@ -541,6 +543,56 @@ def test_images_arrive_as_published_though_the_message_changes_after(
         _, _, (publications, _, _) = call(a.uri, "getBusStats", "/test")
         sent = sum(len(frame) for frame in published)
         assert [p[:2] for p in publications if p[0] == "/camera"] == [["/camera", sent]]
+
+
+def test_clouds_read_in_parts_are_the_clouds_published(
+    make_node: Callable[..., Node], transport: str
+) -> None:
+    """A subscriber whose callbacks all take point clouds reads a large one in parts, its data
+    straight into the message's ``bytes`` (`rosx.node.incoming`): every cloud arrives as it was
+    published, in order, whatever its size or the size of what precedes its data; a late
+    callback and a late raw subscriber get the latched one whole."""
+    a, b = make_node("lidar"), make_node("mapper")
+    got: list[Any] = []
+    sub = b.subscribe("/points", PointCloud2, got.append, queue_size=None)
+    pub = a.advertise("/points", PointCloud2, queue_size=None, latch=True)
+    wait_for(connected(pub, sub))
+    fields = [PointField(name=n, offset=4 * i, datatype=7, count=1) for i, n in enumerate("xyz")]
+    published = []
+    # Large, small, large; one whose fields before the data outgrow what a reader looks at
+    # first (read whole), then large ones again, the last with data under 64 KiB.
+    for n, (size, frame_id) in enumerate(
+        [
+            (1 << 20, "a"),
+            (10, "b"),
+            (2 << 20, "c"),
+            (300_000, "d" * 5000),
+            (3 << 20, "e"),
+            (70_000, "f"),
+        ]
+    ):
+        cloud = PointCloud2(
+            height=1, width=size // 12, fields=fields, point_step=12, is_dense=n % 2 == 0
+        )
+        cloud.header.frame_id = frame_id
+        cloud.data = bytes([n + 1]) * size
+        pub.publish(cloud)
+        published.append(cloud._frame())
+    wait_for(lambda: len(got) == len(published), what="every cloud")
+    assert [m._frame() for m in got] == published
+    assert all(type(m.data) is bytes for m in got)
+    if transport != "INTRAPROCESS":
+        _, _, (_, subscriptions, _) = call(b.uri, "getBusStats", "/test")
+        stats = next(row for row in subscriptions if row[0] == "/points")[1]
+        assert [row[1:3] for row in stats] == [[sum(len(f) for f in published), len(published)]]
+    late: list[Any] = []
+    b.subscribe("/points", PointCloud2, late.append)
+    wait_for(lambda: late, what="the latch")
+    assert late[0]._frame() == published[-1]
+    raw: list[RawMessage] = []
+    b.subscribe("/points", None, raw.append)
+    wait_for(lambda: raw, what="the raw latch")
+    assert bytes(raw[0]._buff) == published[-1][4:]
 
 
 def test_large_frames_waiting_for_a_busy_callback_stay_whole(
