@@ -102,10 +102,12 @@ class Canvas:
         cells[bottom] |= UP
 
     def write(self, x: int, y: int, text: str) -> None:
+        """Place ``text`` at column ``x`` of row ``y``, over any box-drawing cells there."""
         self._text.setdefault(y, []).append((x, text))
         self._reach(x + len(text) - 1, y)
 
     def lines(self) -> list[str]:
+        """The drawing as text rows, labels written over the lines, trailing spaces stripped."""
         width, stride = self.width, self._stride
         cells = self._cells[: stride * self.height]
         utf16 = bytearray(2 * len(cells))

@@ -25,6 +25,7 @@ class Mode(str, Enum):
 
     @property
     def caption(self) -> str:
+        """The graph-mode combo box's label, as rqt_graph words it."""
         return {
             Mode.NODES: "Nodes only",
             Mode.ACTIVE: "Nodes/Topics (active)",
@@ -87,6 +88,7 @@ class NameFilter:
         return NameFilter(tuple(includes), tuple(excludes))
 
     def accepts(self, name: str) -> bool:
+        """Whether ``name`` matches an include pattern and no exclude pattern."""
         return _matches_any(name, self.includes) and not _matches_any(name, self.excludes)
 
 

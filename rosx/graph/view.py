@@ -49,6 +49,7 @@ class ViewGraph:
     edges: tuple[Edge, ...] = ()
 
     def vertex(self, vertex_id: str) -> Vertex | None:
+        """The vertex with id ``vertex_id``, or None if the view does not hold it."""
         return next((v for v in self.vertices if v.id == vertex_id), None)
 
 

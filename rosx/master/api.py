@@ -162,19 +162,24 @@ class MasterApi:
     # Each method below implements the XML-RPC method of the same name in camelCase.
 
     def shutdown(self, caller_id: str, msg: Any) -> Reply:
+        """``shutdown``: pass the request on to the master's owner, which stops the master."""
         if self._on_shutdown is not None:
             self._on_shutdown(caller_id, msg if isinstance(msg, str) else str(msg))
         return 1, "shutdown", 0
 
     def get_uri(self, caller_id: str) -> Reply:
+        """``getUri``: the master's own XML-RPC URI."""
         return 1, "", self.uri
 
     def get_pid(self, caller_id: str) -> Reply:
+        """``getPid``: the master process's id (``rosnode info``/``roswtf`` print it)."""
         return 1, "", self.pid
 
     # -- parameters ---------------------------------------------------------------------------
 
     def delete_param(self, caller_id: str, key: str) -> Reply:
+        """``deleteParam``: remove ``key`` (resolved in the caller's namespace) and tell its
+        subscribers. An unset key is rosmaster's error ``-1``, not an exception."""
         key = resolve_for_caller(key, caller_id)
         try:
             self.params.delete(key)
@@ -184,12 +189,15 @@ class MasterApi:
         return 1, f"parameter {key} deleted", 0
 
     def set_param(self, caller_id: str, key: str, value: Any) -> Reply:
+        """``setParam``: store ``value`` at ``key`` (a dict sets a whole subtree) and notify
+        subscribers."""
         key = resolve_for_caller(key, caller_id)
         self.params.set(key, value)
         self.notify(param_updates(self.registry.param_subscribers, key, value, caller_id))
         return 1, f"parameter {key} set", 0
 
     def get_param(self, caller_id: str, key: str) -> Reply:
+        """``getParam``: the value at ``key``; a namespace answers as a dict of its subtree."""
         key = resolve_for_caller(key, caller_id)
         try:
             return 1, f"Parameter [{key}]", self.params.get(key)
@@ -197,12 +205,16 @@ class MasterApi:
             return -1, f"Parameter [{key}] is not set", 0
 
     def search_param(self, caller_id: str, key: str) -> Reply:
+        """``searchParam``: the nearest ``key`` upwards from the caller's namespace, as rospy's
+        ``search_param`` finds it; the full name found, or ``-1``."""
         found = self.params.search(caller_id, key)
         if found:
             return 1, f"Found [{found}]", found
         return -1, f"Cannot find parameter [{key}] in an upwards search", ""
 
     def subscribe_param(self, caller_id: str, caller_api: str, key: str) -> Reply:
+        """``subscribeParam``: register ``caller_api`` for ``paramUpdate`` calls on ``key``.
+        Returns the current value, or ``{}`` while the key is unset."""
         key = resolve_for_caller(key, caller_id)
         subscribed = namespace_key(key)
         try:
@@ -214,16 +226,19 @@ class MasterApi:
         return 1, f"Subscribed to parameter [{key}]", value
 
     def unsubscribe_param(self, caller_id: str, caller_api: str, key: str) -> Reply:
+        """``unsubscribeParam``: stop ``paramUpdate`` calls on ``key`` to ``caller_api``."""
         key = resolve_for_caller(key, caller_id)
         self.registry.unregister_param_subscriber(namespace_key(key), caller_id, caller_api)
         # rosmaster reports 1 whether or not the caller was subscribed.
         return 1, f"Unsubscribe to parameter [{key}]", 1
 
     def has_param(self, caller_id: str, key: str) -> Reply:
+        """``hasParam``: whether ``key`` is set, as a value or as a namespace."""
         key = resolve_for_caller(key, caller_id)
         return 1, key, self.params.has(key)
 
     def get_param_names(self, caller_id: str) -> Reply:
+        """``getParamNames``: every leaf parameter's full name."""
         return 1, "Parameter names", self.params.names()
 
     # -- services -----------------------------------------------------------------------------
@@ -231,17 +246,22 @@ class MasterApi:
     def register_service(
         self, caller_id: str, service: str, service_api: str, caller_api: str
     ) -> Reply:
+        """``registerService``: record ``service_api`` (rosrpc) as the provider of ``service``. A
+        second provider replaces the first, as rosmaster does."""
         outcome = self.registry.register_service(service, service_api, caller_id, caller_api)
         self.notify(outcome.actions)
         return 1, outcome.status, outcome.value
 
     def lookup_service(self, caller_id: str, service: str) -> Reply:
+        """``lookupService``: the ``rosrpc://`` URI of the node providing ``service``."""
         api = self.registry.service_api(service)
         if api:
             return 1, f"rosrpc URI: [{api}]", api
         return -1, "no provider", ""
 
     def unregister_service(self, caller_id: str, service: str, service_api: str) -> Reply:
+        """``unregisterService``: forget ``service`` if ``service_api`` is still its provider.
+        The value is the number of registrations removed (0 or 1)."""
         outcome = self.registry.unregister_service(service, caller_id, service_api)
         return 1, outcome.status, outcome.value
 
@@ -250,22 +270,30 @@ class MasterApi:
     def register_subscriber(
         self, caller_id: str, topic: str, topic_type: str, caller_api: str
     ) -> Reply:
+        """``registerSubscriber``: add a subscriber to ``topic``; returns the current publishers'
+        XML-RPC URIs, and later publishers reach it by ``publisherUpdate``."""
         outcome = self.registry.register_subscriber(topic, topic_type, caller_id, caller_api)
         self.notify(outcome.actions)
         return 1, outcome.status, outcome.value
 
     def unregister_subscriber(self, caller_id: str, topic: str, caller_api: str) -> Reply:
+        """``unregisterSubscriber``: remove the caller's subscription to ``topic``. The value is
+        the number of registrations removed (0 or 1)."""
         outcome = self.registry.unregister_subscriber(topic, caller_id, caller_api)
         return 1, outcome.status, outcome.value
 
     def register_publisher(
         self, caller_id: str, topic: str, topic_type: str, caller_api: str
     ) -> Reply:
+        """``registerPublisher``: add a publisher of ``topic`` and send ``publisherUpdate`` to
+        its subscribers; returns their XML-RPC URIs."""
         outcome = self.registry.register_publisher(topic, topic_type, caller_id, caller_api)
         self.notify(outcome.actions)
         return 1, outcome.status, outcome.value
 
     def unregister_publisher(self, caller_id: str, topic: str, caller_api: str) -> Reply:
+        """``unregisterPublisher``: remove the caller as publisher of ``topic`` and tell
+        subscribers. The value is the number of registrations removed (0 or 1)."""
         outcome = self.registry.unregister_publisher(topic, caller_id, caller_api)
         self.notify(outcome.actions)
         return 1, outcome.status, outcome.value
@@ -273,20 +301,27 @@ class MasterApi:
     # -- graph state --------------------------------------------------------------------------
 
     def lookup_node(self, caller_id: str, node_name: str) -> Reply:
+        """``lookupNode``: the XML-RPC URI of node ``node_name``."""
         api = self.registry.node_api(node_name)
         if api is not None:
             return 1, "node api", api
         return -1, f"unknown node [{node_name}]", ""
 
     def get_published_topics(self, caller_id: str, subgraph: str) -> Reply:
+        """``getPublishedTopics``: ``[topic, type]`` pairs with at least one publisher, under
+        ``subgraph`` (a namespace; empty for all)."""
         return 1, "current topics", self.registry.published_topics(subgraph)
 
     def get_topic_types(self, caller_id: str) -> EncodedResponse:
+        """``getTopicTypes``: ``[topic, type]`` for every known topic, published or only
+        subscribed. The encoded reply is cached until the registry changes."""
         return self._cached(
             "getTopicTypes", lambda: (1, "current system state", self.registry.topic_type_list())
         )
 
     def get_system_state(self, caller_id: str) -> EncodedResponse:
+        """``getSystemState``: publishers, subscribers and services, each as ``[name, [nodes]]``.
+        The encoded reply is cached until the registry changes."""
         return self._cached(
             "getSystemState", lambda: (1, "current system state", self.registry.system_state())
         )

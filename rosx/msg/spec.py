@@ -68,6 +68,8 @@ class Field(Record):
 
     @property
     def is_builtin(self) -> bool:
+        """Whether the field's base type is a primitive (``int32``, ``string``, ``time``...), not
+        a message."""
         return self.base_type in PRIMITIVE_TYPES
 
 
@@ -106,10 +108,12 @@ class MsgSpec(Record):
 
     @property
     def package(self) -> str:
+        """The package part of ``pkg/Name``."""
         return self.full_name.partition("/")[0]
 
     @property
     def short_name(self) -> str:
+        """The name without its package (``Pose`` of ``turtlesim/Pose``)."""
         return self.full_name.partition("/")[2]
 
     @property
@@ -138,10 +142,12 @@ class SrvSpec(Record):
 
     @property
     def package(self) -> str:
+        """The package part of ``pkg/Name``."""
         return self.full_name.partition("/")[0]
 
     @property
     def short_name(self) -> str:
+        """The name without its package (``AddTwoInts`` of ``rospy_tutorials/AddTwoInts``)."""
         return self.full_name.partition("/")[2]
 
 
@@ -172,10 +178,12 @@ class ActionSpec(Record):
 
     @property
     def package(self) -> str:
+        """The package part of ``pkg/Name``."""
         return self.full_name.partition("/")[0]
 
     @property
     def short_name(self) -> str:
+        """The name without its package (``Fibonacci`` of ``actionlib_tutorials/Fibonacci``)."""
         return self.full_name.partition("/")[2]
 
     def message(self, suffix: str) -> MsgSpec:

@@ -95,6 +95,7 @@ class TypeStore:
 
     @property
     def package_path(self) -> list[Path]:
+        """The package path the store searches for ``.msg``/``.srv``/``.action`` files (a copy)."""
         return list(self._index.package_path)
 
     def has_package(self, package: str) -> bool:
@@ -121,6 +122,11 @@ class TypeStore:
         return spec
 
     def srv(self, full_name: str) -> SrvSpec:
+        """The parsed ``.srv`` definition of ``full_name``, read on first use and then cached.
+
+        Raises:
+            UnknownTypeError: no such service type; it says whether the package exists.
+        """
         spec = self._srvs.get(full_name)
         if spec is None:
             text = self._file_text(full_name, "srv") if is_valid_type_name(full_name) else None
@@ -142,6 +148,7 @@ class TypeStore:
         return spec
 
     def has_action(self, full_name: str) -> bool:
+        """Whether ``full_name`` names an action type this store can find."""
         try:
             self.action(full_name)
         except UnknownTypeError:
@@ -149,6 +156,7 @@ class TypeStore:
         return True
 
     def has_msg(self, full_name: str) -> bool:
+        """Whether ``full_name`` names a message type this store can find."""
         try:
             self.msg(full_name)
         except UnknownTypeError:
@@ -156,6 +164,7 @@ class TypeStore:
         return True
 
     def has_srv(self, full_name: str) -> bool:
+        """Whether ``full_name`` names a service type this store can find."""
         try:
             self.srv(full_name)
         except UnknownTypeError:
@@ -233,6 +242,8 @@ class TypeStore:
         return cached
 
     def srv_md5(self, full_name: str) -> str:
+        """The service's md5sum as ROS 1 computes it (request and response text together),
+        cached."""
         key = "srv:" + full_name
         cached = self._md5.get(key)
         if cached is None:

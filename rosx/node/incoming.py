@@ -56,7 +56,9 @@ if TYPE_CHECKING:
     class Detacher(Protocol):
         """The receiver thread that owns a connected stream's socket."""
 
-        def detach(self, stream: IncomingStream) -> None: ...
+        def detach(self, stream: IncomingStream) -> None:
+            """Stop reading ``stream``: the receiver's thread for it wakes, closes the socket and
+            exits."""
 
 
 #: Connection ids, unique in the process (rospy numbers its transports the same way).

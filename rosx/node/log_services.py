@@ -28,6 +28,7 @@ class RosoutPublisher:
         self.publisher = node.advertise("/rosout", self.log_class, queue_size=100, latch=True)
 
     def __call__(self, level: int, message: str, file: str, function: str, line: int) -> None:
+        """Publish one log record on ``/rosout``; dropped once the node is shutting down."""
         node = self.node
         if node.is_shutdown():
             return

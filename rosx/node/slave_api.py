@@ -112,17 +112,23 @@ class SlaveApi:
     # -- the methods (caller_id checked) ---------------------------------------------------------
 
     def get_uri(self, caller_id: str) -> list[Any]:
+        """``getUri``: the node's XML-RPC URI."""
         return [1, "", self.node.uri]
 
     def get_name(self, caller_id: str) -> list[Any]:
+        """``getName``: the node's resolved name."""
         return [1, "", self.node.name]
 
     def get_bus_stats(self, caller_id: str) -> list[Any]:
+        """``getBusStats``: per-connection byte and message counts for publications and
+        subscriptions (the service list is empty, as in rospy)."""
         pubs = [p.bus_stats() for p in list(self.node.publications.values())]
         subs = [s.bus_stats() for s in list(self.node.subscriptions.values())]
         return [1, "", [pubs, subs, []]]
 
     def get_bus_info(self, caller_id: str) -> list[Any]:
+        """``getBusInfo``: one row per connection (id, peer, direction, transport, topic,
+        connected), which ``rosnode info`` prints."""
         rows: list[list[object]] = []
         for pub in list(self.node.publications.values()):
             rows.extend(pub.bus_info())
@@ -131,25 +137,33 @@ class SlaveApi:
         return [1, "bus info", rows]
 
     def get_master_uri(self, caller_id: str) -> list[Any]:
+        """``getMasterUri``: the master this node registered with, or code 0 if it has none."""
         uri = self.node.master_uri
         return [1, uri, uri] if uri else [0, "master URI not set", ""]
 
     def shutdown(self, caller_id: str, msg: str = "") -> list[Any]:
+        """``shutdown``: ask the node to shut down; returns at once, the node stops on its own
+        thread."""
         self.node.request_shutdown(f"external shutdown request from [{caller_id}]: [{msg}]")
         return [1, "shutdown", 0]
 
     def get_pid(self, caller_id: str) -> list[Any]:
+        """``getPid``: this process's id."""
         return [1, "", os.getpid()]
 
     def get_subscriptions(self, caller_id: str) -> list[Any]:
+        """``getSubscriptions``: ``[topic, type]`` for each topic the node subscribes to."""
         subs = [[s.topic, s.type] for s in list(self.node.subscriptions.values())]
         return [1, "subscriptions", subs]
 
     def get_publications(self, caller_id: str) -> list[Any]:
+        """``getPublications``: ``[topic, type]`` for each topic the node publishes."""
         pubs = [[p.topic, p.info.type] for p in list(self.node.publications.values())]
         return [1, "publications", pubs]
 
     def param_update(self, caller_id: str, key: object, value: object) -> list[Any]:
+        """``paramUpdate``: the master's news that subscribed parameter ``key`` changed; ``-1``
+        if the node no longer subscribes."""
         if not key or not isinstance(key, str):
             raise _Invalid("ERROR: parameter [parameter_key] must be a non-empty string")
         if not is_global(key):
@@ -161,12 +175,17 @@ class SlaveApi:
         return [1, "", 0]
 
     def publisher_update(self, caller_id: str, topic: object, publishers: object) -> list[Any]:
+        """``publisherUpdate``: the master's current publishers of ``topic``; the node connects
+        to new ones and drops the gone."""
         name = _topic(caller_id, "topic", topic)
         uris = _publishers("publishers", publishers)
         self.node.publisher_update(name, uris)
         return [1, "", 0]
 
     def request_topic(self, caller_id: str, topic: object, protocols: Any) -> list[Any]:
+        """``requestTopic``: the address to connect to for ``topic`` in the first protocol both
+        sides speak (TCPROS, or UNIXROS on the same host); ``-1`` if the node does not publish
+        it."""
         name = _topic(caller_id, "topic", topic)
         if not protocols:
             raise _Invalid("ERROR: parameter [protocols] must be specified and non-empty")

@@ -32,7 +32,8 @@ _PREFIX = b"\0\0\0\0"
 class Writable(Protocol):
     """Where `Message.serialize` writes: anything with ``write(bytes)``, e.g. ``io.BytesIO``."""
 
-    def write(self, data: bytes, /) -> object: ...
+    def write(self, data: bytes, /) -> object:
+        """Write ``data``; the return value is ignored."""
 
 
 class MessageException(Exception):  # noqa: N818 - genpy's name, which rospy code catches

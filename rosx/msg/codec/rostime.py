@@ -65,12 +65,16 @@ class TVal:
         self.secs, self.nsecs = _canon(self.secs, self.nsecs)
 
     def is_zero(self) -> bool:
+        """Whether both ``secs`` and ``nsecs`` are zero (rospy's "time not set")."""
         return self.secs == 0 and self.nsecs == 0
 
     def to_sec(self) -> float:
+        """The value in seconds, as a float (digits below about a microsecond are lost for wall
+        times)."""
         return float(self.secs) + float(self.nsecs) / 1e9
 
     def to_nsec(self) -> int:
+        """The value in nanoseconds, as an exact integer."""
         return self.secs * _NSEC_PER_SEC + self.nsecs
 
     def __bool__(self) -> bool:

@@ -60,6 +60,8 @@ class Source:
         self._count = 0
 
     def local(self, stem: str) -> str:
+        """A fresh module-global name starting with ``stem`` (``_S3``), unique within this
+        source."""
         self._count += 1
         return f"_{stem}{self._count}"
 
@@ -80,6 +82,7 @@ class Source:
         return name
 
     def add(self, depth: int, line: str) -> None:
+        """Append ``line`` to the function, indented ``depth`` levels."""
         self.lines.append("    " * depth + line)
 
     def compile(self) -> dict[str, Any]:

@@ -202,10 +202,12 @@ class Writer:
         self.open_ended = False
 
     def write(self, data: str) -> None:
+        """Append ``data`` and advance the column (``data`` holds no line break)."""
         self.out.append(data)
         self.column += len(data)
 
     def line_break(self, data: str = "\n") -> None:
+        """End the line; the next write starts at column 0 and counts as indentation."""
         self.out.append(data)
         self.whitespace = self.indention = True
         self.column = 0
@@ -213,12 +215,15 @@ class Writer:
     def indicator(
         self, text: str, *, need_space: bool, whitespace: bool = False, indention: bool = False
     ) -> None:
+        """Write an indicator such as ``-``, ``:`` or a quote, with a space before it where YAML
+        needs one."""
         self.write(text if self.whitespace or not need_space else " " + text)
         self.whitespace = whitespace
         self.indention = self.indention and indention
         self.open_ended = False
 
     def write_indent(self) -> None:
+        """Break the line if needed and pad to the current indent, as PyYAML's ``write_indent``."""
         if (
             not self.indention
             or self.column > self.indent
@@ -231,6 +236,8 @@ class Writer:
             self.column = self.indent
 
     def double_quoted(self, text: str, split: bool = True) -> None:
+        """Write ``text`` as a double-quoted scalar with PyYAML's escapes, folding long lines
+        with a backslash unless ``split`` is false."""
         self.indicator('"', need_space=True)
         start = end = 0
         while end <= len(text):
@@ -255,6 +262,8 @@ class Writer:
         self.indicator('"', need_space=False)
 
     def single_quoted(self, text: str, split: bool = True) -> None:
+        """Write ``text`` as a single-quoted scalar (``'`` doubled), folding at spaces as PyYAML
+        does unless ``split`` is false."""
         self.indicator("'", need_space=True)
         spaces = breaks = False
         start = end = 0
@@ -285,6 +294,9 @@ class Writer:
         self.indicator("'", need_space=False)
 
     def plain(self, text: str, split: bool = True, *, root: bool = False) -> None:
+        """Write ``text`` as a plain scalar, folding at spaces past PyYAML's width unless
+        ``split`` is false; ``root`` marks a document-level scalar, which PyYAML ends with
+        ``...``."""
         if root:
             self.open_ended = True
         if not text:
