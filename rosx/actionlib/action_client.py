@@ -76,6 +76,7 @@ class TerminalState:
 
     @classmethod
     def to_string(cls, n: int) -> str:
+        """The constant's name for ``n`` (``"SUCCEEDED"``), as actionlib prints terminal states."""
         return get_name_of_constant(cls, n)
 
 
@@ -191,6 +192,7 @@ class CommStateMachine:
         return hash(self.action_goal.goal_id.id)
 
     def set_state(self, state: CommState) -> None:
+        """Move to ``state`` unconditionally; the transition rules live in the callers."""
         self.state = state
 
     def update_status(self, status_array: Any) -> None:
@@ -294,9 +296,11 @@ class GoalManager:
         return msgs().GoalID(id=f"{names.get_caller_id()}-{number}-{now.to_sec():.3f}", stamp=now)
 
     def register_send_goal_fn(self, fn: Callable[[Any], object]) -> None:
+        """Set how a goal is sent (the client's ``goal`` publisher); `init_goal` calls it."""
         self.send_goal_fn = fn
 
     def register_cancel_fn(self, fn: Callable[[Any], object]) -> None:
+        """Set how a cancel request is sent (the client's ``cancel`` publisher)."""
         self.cancel_fn = fn
 
     def init_goal(
@@ -348,11 +352,14 @@ class GoalManager:
             machine.update_from(listed.get(machine.action_goal.goal_id.id))
 
     def update_results(self, action_result: Any) -> None:
+        """Pass a ``result`` message to the state machine of its goal; others' goals are ignored."""
         machine = self.machine_of(action_result.status.goal_id.id)
         if machine is not None:
             machine.update_result(action_result)
 
     def update_feedbacks(self, action_feedback: Any) -> None:
+        """Pass a ``feedback`` message to the state machine of its goal; others' goals are
+        ignored."""
         machine = self.machine_of(action_feedback.status.goal_id.id)
         if machine is not None:
             machine.update_feedback(action_feedback)

@@ -104,9 +104,12 @@ class SimpleActionServer:
             return self.current_goal.get_goal()
 
     def is_new_goal_available(self) -> bool:
+        """Whether a goal arrived that `accept_new_goal` has not taken yet."""
         return self.new_goal
 
     def is_preempt_requested(self) -> bool:
+        """Whether the active goal was asked to stop (canceled, or a newer goal is waiting); an
+        execute callback polls this and calls `set_preempted`."""
         return self.preempt_request
 
     def is_active(self) -> bool:
@@ -139,6 +142,7 @@ class SimpleActionServer:
         self.current_goal.publish_feedback(feedback)
 
     def get_default_result(self) -> Any:
+        """A fresh, zero-valued result message of the action's type."""
         return self.action_server.ActionResultType()
 
     # -- callbacks -----------------------------------------------------------------------------

@@ -48,6 +48,7 @@ class HandleTrackerDeleter:
         self.status_tracker = status_tracker
 
     def __call__(self, ptr: object = None) -> None:
+        """Record now as when the goal's last handle went, starting its ``status_list_timeout``."""
         if self.action_server:
             with self.action_server.lock:
                 self.status_tracker.handle_destruction_time = timing.Time.now()

@@ -44,7 +44,8 @@ DEFAULT_CHUNK_THRESHOLD = 768 * 1024
 class Opener(Protocol):
     """How a writer opens its file: ``opener(path, mode)`` (``'wb'`` or ``'r+b'``), unbuffered."""
 
-    def __call__(self, path: str, mode: str, /) -> BinaryIO: ...
+    def __call__(self, path: str, mode: str, /) -> BinaryIO:
+        """Open ``path`` in ``mode`` (``'wb'`` or ``'r+b'``) without buffering."""
 
 
 def open_unbuffered(path: str, mode: str) -> BinaryIO:

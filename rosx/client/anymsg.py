@@ -51,6 +51,11 @@ class AnyMsg(Message):
         return self._buff
 
     def serialize(self, buff: Writable) -> None:
+        """Write the bytes this message was received with, unchanged (the relay's pass-through).
+
+        Raises:
+            ROSException: the message holds no bytes yet.
+        """
         buff.write(self.buffer())
 
     def deserialize(self, data: Any) -> AnyMsg:

@@ -39,6 +39,7 @@ class LogFile:
                 self._stream.flush()
 
     def close(self) -> None:
+        """Close the log file; later lines are dropped, not raised on."""
         with self._lock:
             self._stream.close()
 

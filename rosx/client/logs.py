@@ -74,6 +74,8 @@ class ConsoleHandler(RosStreamHandler):
     a `RosStreamHandler` as rospy's is."""
 
     def emit(self, record: logging.LogRecord) -> None:
+        """Show ``record`` on the node's console through its log sink; before `init_node`, only
+        WARN and worse reach stderr, as rospy prints them."""
         level = ros_level(record.levelno)
         node = state.CLIENT.node
         if node is None:
@@ -95,6 +97,8 @@ class RosoutHandler(logging.Handler):
     """Writes ``rosout`` records to the node's log file and publishes them on ``/rosout``."""
 
     def emit(self, record: logging.LogRecord) -> None:
+        """Publish ``record`` on ``/rosout`` through the node's log sink; dropped before
+        `init_node`."""
         node = state.CLIENT.node
         if node is None:
             return

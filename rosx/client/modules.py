@@ -134,6 +134,8 @@ class TypeModuleFinder(importlib.abc.MetaPathFinder):
         path: Sequence[str] | None,
         target: types.ModuleType | None = None,
     ) -> importlib.machinery.ModuleSpec | None:
+        """A spec for ``<pkg>.msg``/``<pkg>.srv`` or one of their ``_<Type>`` modules when the
+        type store knows such types, else None so the next finder is asked."""
         parts = fullname.split(".")
         if len(parts) not in (2, 3) or parts[1] not in _KINDS or parts[0] == "rosx":
             return None
@@ -166,6 +168,8 @@ class PackageFinder(importlib.abc.MetaPathFinder):
         path: Sequence[str] | None,
         target: types.ModuleType | None = None,
     ) -> importlib.machinery.ModuleSpec | None:
+        """A spec for a message package's top-level module (``std_msgs``) when the store has its
+        types and no other finder served it; else None."""
         if "." in fullname or getattr(_busy, "active", False):
             return None
         _busy.active = True
@@ -205,6 +209,7 @@ class HelperFinder(importlib.abc.MetaPathFinder):
         path: Sequence[str] | None,
         target: types.ModuleType | None = None,
     ) -> importlib.machinery.ModuleSpec | None:
+        """A spec for one of `HELPERS` (ROS 1's helper modules rosx serves itself), else None."""
         source = HELPERS.get(fullname)
         if source is None:
             return None

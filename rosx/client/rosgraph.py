@@ -118,68 +118,95 @@ class Master:
     # -- Parameter API -------------------------------------------------------------------------
 
     def deleteParam(self, key: str) -> Any:  # noqa: N802 - the API's names
+        """``deleteParam``: remove ``key``; returns 0. Raises `MasterError` if it is unset."""
         return self._call("deleteParam", key)
 
     def setParam(self, key: str, value: Any) -> Any:  # noqa: N802
+        """``setParam``: set ``key`` (a dict sets a subtree); returns 0."""
         return self._call("setParam", key, value)
 
     def getParam(self, key: str) -> Any:  # noqa: N802
+        """``getParam``: the value at ``key``. Raises `MasterError` if it is unset."""
         return self._call("getParam", key)
 
     def searchParam(self, key: str) -> Any:  # noqa: N802
+        """``searchParam``: the nearest ``key`` upwards from this caller's namespace. Raises
+        `MasterError` if none is found."""
         return self._call("searchParam", key)
 
     def subscribeParam(self, caller_api: str, key: str) -> Any:  # noqa: N802
+        """``subscribeParam``: have the master call ``caller_api``'s ``paramUpdate`` on changes
+        to ``key``; returns the current value (``{}`` while unset)."""
         return self._call("subscribeParam", caller_api, key)
 
     def unsubscribeParam(self, caller_api: str, key: str) -> Any:  # noqa: N802
+        """``unsubscribeParam``: stop ``paramUpdate`` calls for ``key``; returns 1."""
         return self._call("unsubscribeParam", caller_api, key)
 
     def hasParam(self, key: str) -> Any:  # noqa: N802
+        """``hasParam``: whether ``key`` is set, as a value or a namespace."""
         return self._call("hasParam", key)
 
     def getParamNames(self) -> Any:  # noqa: N802
+        """``getParamNames``: every parameter's full name."""
         return self._call("getParamNames")
 
     # -- Master API ----------------------------------------------------------------------------
 
     def getPid(self) -> Any:  # noqa: N802
+        """``getPid``: the master's process id; `is_online` calls it as a ping."""
         return self._call("getPid")
 
     def getUri(self) -> Any:  # noqa: N802
+        """``getUri``: the master's own XML-RPC URI."""
         return self._call("getUri")
 
     def registerService(self, service: str, service_api: str, caller_api: str) -> Any:  # noqa: N802
+        """``registerService``: register this caller as ``service``'s provider at
+        ``service_api``."""
         return self._call("registerService", service, service_api, caller_api)
 
     def lookupService(self, service: str) -> Any:  # noqa: N802
+        """``lookupService``: the ``rosrpc://`` URI of ``service``'s provider. Raises
+        `MasterError` when none is registered."""
         return self._call("lookupService", service)
 
     def unregisterService(self, service: str, service_api: str) -> Any:  # noqa: N802
+        """``unregisterService``: returns how many registrations were removed (0 or 1)."""
         return self._call("unregisterService", service, service_api)
 
     def registerSubscriber(self, topic: str, topic_type: str, caller_api: str) -> Any:  # noqa: N802
+        """``registerSubscriber``: register a subscription; returns the publishers' XML-RPC URIs."""
         return self._call("registerSubscriber", topic, topic_type, caller_api)
 
     def unregisterSubscriber(self, topic: str, caller_api: str) -> Any:  # noqa: N802
+        """``unregisterSubscriber``: returns how many registrations were removed (0 or 1)."""
         return self._call("unregisterSubscriber", topic, caller_api)
 
     def registerPublisher(self, topic: str, topic_type: str, caller_api: str) -> Any:  # noqa: N802
+        """``registerPublisher``: register a publication; returns the subscribers' XML-RPC URIs."""
         return self._call("registerPublisher", topic, topic_type, caller_api)
 
     def unregisterPublisher(self, topic: str, caller_api: str) -> Any:  # noqa: N802
+        """``unregisterPublisher``: returns how many registrations were removed (0 or 1)."""
         return self._call("unregisterPublisher", topic, caller_api)
 
     def lookupNode(self, node_name: str) -> Any:  # noqa: N802
+        """``lookupNode``: the XML-RPC URI of ``node_name``. Raises `MasterError` if it is
+        unknown."""
         return self._call("lookupNode", node_name)
 
     def getPublishedTopics(self, subgraph: str) -> Any:  # noqa: N802
+        """``getPublishedTopics``: ``[topic, type]`` pairs with a publisher, under ``subgraph``."""
         return self._call("getPublishedTopics", subgraph)
 
     def getTopicTypes(self) -> Any:  # noqa: N802
+        """``getTopicTypes``: ``[topic, type]`` for every topic the master knows."""
         return self._call("getTopicTypes")
 
     def getSystemState(self) -> Any:  # noqa: N802
+        """``getSystemState``: ``[publishers, subscribers, services]``, each ``[[name, [nodes]],
+        ...]``."""
         return self._call("getSystemState")
 
 

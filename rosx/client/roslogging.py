@@ -37,6 +37,8 @@ class RosStreamHandler(logging.Handler):
         self._stderr = stderr
 
     def emit(self, record: logging.LogRecord) -> None:
+        """Write ``record`` as a rospy console line: below WARN to stdout, else stderr; coloured
+        as rospy colours it unless ``colorize`` is false."""
         level = ros_level(record.levelno)
         line = console_line(
             level,

@@ -196,6 +196,7 @@ class Client:
         return self.node is not None
 
     def is_shutdown(self) -> bool:
+        """Whether the node is shutting down or down (rospy's ``is_shutdown``); never blocks."""
         return self.shutdown_event.is_set()
 
     def add_client_hook(self, hook: Callable[[], object]) -> None:

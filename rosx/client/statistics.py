@@ -82,6 +82,7 @@ class SubscriptionStatistics:
         self.windows: dict[str, StatisticsWindow] = {}
 
     def __call__(self, msg: Any) -> None:
+        """Measure one received message; a failure is logged, never passed to the subscription."""
         try:
             self._measure(msg)
         except Exception as exc:  # statistics never disturb the subscription

@@ -192,6 +192,10 @@ class Timer(threading.Thread):
         self._halt.set()
 
     def run(self) -> None:
+        """The timer's thread: sleep to each expected time on ROS time, then call the callback
+        with a `TimerEvent`, until `shutdown`, the node's shutdown, or the first call of a
+        one-shot timer. A jump back in simulated time ends the timer with
+        `ROSInterruptException`, as in rospy."""
         rate = Rate(1.0 / self._period.to_sec(), reset=self._reset)
         current_expected = get_rostime() + self._period
         last_expected: Time | None = None

@@ -65,16 +65,19 @@ class Reader:
     # -- errors ---------------------------------------------------------------------------
 
     def fail(self, context: LoadContext, element: Element | None, message: str) -> AbortError:
+        """``list_children``: always empty; rosx starts no remote roslaunch children."""
         if element is None:
             return AbortError(LaunchError(context.filename, 0, "", message))
         return AbortError(LaunchError(context.filename, element.line, element.tag, message))
 
     def warn(self, context: LoadContext, element: Element, message: str) -> None:
+        """Add a roslaunch-style warning about ``element`` to the plan; reading goes on."""
         self.plan.warnings.append(
             str(LaunchError(context.filename, element.line, element.tag, message))
         )
 
     def source(self, context: LoadContext, element: Element) -> Source:
+        """Where ``element`` was read, for messages that point back at the file."""
         return Source(context.filename, element.line)
 
     # -- attributes -----------------------------------------------------------------------
@@ -98,10 +101,13 @@ class Reader:
             raise self.fail(context, element, str(error)) from None
 
     def optional(self, context: LoadContext, element: Element, name: str) -> str | None:
+        """The attribute ``name`` with substitutions resolved, or None if it is absent."""
         text = element.attrs.get(name)
         return None if text is None else self.resolve(context, element, text)
 
     def required(self, context: LoadContext, element: Element, name: str) -> str:
+        """The attribute ``name`` with substitutions resolved; roslaunch's "missing required
+        attribute" error if it is absent."""
         text = element.attrs.get(name)
         if text is None:
             raise self.fail(
@@ -112,6 +118,8 @@ class Reader:
     def boolean(
         self, context: LoadContext, element: Element, value: str | None, label: str
     ) -> bool:
+        """A ``true``/``false`` attribute (any case; absent is False); roslaunch's error
+        otherwise."""
         if value is None:
             return False
         if value.lower() in ("true", "false"):
@@ -121,6 +129,8 @@ class Reader:
         raise self.fail(context, element, f"invalid bool value for {label}: {value}")
 
     def check_attrs(self, context: LoadContext, element: Element) -> None:
+        """Warn about attributes ``element``'s tag does not take, as roslaunch does; they are
+        ignored."""
         allowed = ATTRS[element.tag]
         for name in element.attrs:
             if name not in allowed and name not in ("if", "unless"):
@@ -144,12 +154,15 @@ class Reader:
     # -- files ----------------------------------------------------------------------------
 
     def add_core(self, params: Mapping[str, Any]) -> None:
+        """Add what roscore's own launch provides: its parameters and the ``/rosout`` node."""
         source = Source(CORE_SOURCE)
         for name, value in params.items():
             self.plan.params[name] = Param(name, value, source)
         self.node_names.append("/rosout")
 
     def parse(self, context: LoadContext, element: Element | None, filename: str) -> Element:
+        """``filename`` parsed into elements; an unreadable file or bad XML aborts with
+        roslaunch's "Invalid roslaunch XML syntax" text."""
         try:
             data = Path(filename).read_bytes()
         except OSError as error:
@@ -161,6 +174,8 @@ class Reader:
             raise AbortError(LaunchError(filename, error.line, "", str(error))) from None
 
     def load_file(self, filename: str, namespace: str, cli_args: dict[str, str]) -> None:
+        """Read ``filename`` and everything it includes into the plan, in ``namespace``, with the
+        command line's ``name:=value`` args."""
         context = LoadContext(namespace, filename)
         context.subst.args = cli_args
         self.including = [os.path.normpath(Path(filename).absolute())]
@@ -173,6 +188,7 @@ class Reader:
         self.plan.arg_docs = dict(context.subst.arg_doc)
 
     def launch_tag(self, context: LoadContext, launch: Element) -> None:
+        """Apply the ``<launch>`` tag itself: its ``deprecated`` message becomes a warning."""
         deprecated = launch.attrs.get("deprecated")
         if deprecated:
             self.warn(context, launch, f"DEPRECATED: {deprecated}")
@@ -268,6 +284,8 @@ class Reader:
         value: Any,
         source: Source | None = None,
     ) -> None:
+        """Add parameter ``name`` to the plan; a later value wins, and a name under or over an
+        existing parameter is warned about as roslaunch warns."""
         key = canonicalize(name)
         for parent in _namespaces_of(key):
             if parent in self.plan.params:
@@ -286,6 +304,8 @@ class Reader:
         attr: str,
         text: str,
     ) -> _Number:
+        """``text`` converted by ``convert``; "must be a number" naming ``attr`` if it is not
+        one."""
         try:
             return convert(text)
         except ValueError:
@@ -294,6 +314,8 @@ class Reader:
     def seconds(
         self, context: LoadContext, element: Element, value: str | None, label: str
     ) -> float:
+        """A seconds attribute as a float (absent is 0.0); roslaunch's error if it is empty or
+        not a number."""
         if value is None:
             return 0.0
         if not value:

@@ -75,12 +75,14 @@ class World:
     anonymous: Callable[[str], str]
 
     def env(self, name: str) -> str:
+        """``$(env name)``: the variable's value; a `SubstitutionError` if it is unset."""
         try:
             return self.environ[name]
         except KeyError:
             raise SubstitutionError(f"environment variable '{name}' is not set") from None
 
     def optenv(self, name: str, default: str = "") -> str:
+        """``$(optenv name default)``: the variable's value, or ``default`` if it is unset."""
         return self.environ.get(name, default)
 
     def find(self, package: str, path: str = "") -> str:
@@ -117,6 +119,8 @@ class Scope:
     filename: str = ""
 
     def copy(self) -> Scope:
+        """A copy whose dictionaries can change without touching this scope (for an include or
+        group)."""
         return Scope(dict(self.args), dict(self.anon), dict(self.arg_doc), self.filename)
 
 

@@ -122,6 +122,7 @@ class Manifest(Record):
 
     @property
     def directory(self) -> Path:
+        """The package's folder (where its ``package.xml`` is)."""
         return self.path.parent
 
     def run_depends(self) -> list[str]:

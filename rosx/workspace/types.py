@@ -44,6 +44,7 @@ class PackageTypes(NamedTuple):
         return [("msg", n) for n in self.messages] + [("srv", n) for n in self.services]
 
     def all_names(self) -> list[str]:
+        """The package's message and service type names, messages first."""
         return self.messages + self.services
 
 

@@ -47,24 +47,30 @@ class LaunchHandlers:
         self._monitor = monitor
 
     def get_pid(self) -> list[Any]:
+        """``get_pid``: roslaunch's own process id."""
         pid = os.getpid()
         return [1, str(pid), pid]
 
     def get_node_names(self) -> list[Any]:
+        """``get_node_names``: the names of the nodes still running."""
         return [1, "node names", [p.name for p in list(self._monitor.procs)]]
 
     def list_processes(self) -> list[Any]:
+        """``list_processes``: ``[[name, spawn count], ...]`` for running and for dead processes."""
         active = [[p.name, p.spawn_count] for p in list(self._monitor.procs)]
         dead = [[p.name, p.spawn_count] for p in list(self._monitor.dead)]
         return [1, "processes on parent machine", [active, dead]]
 
     def process_info(self, name: str) -> list[Any]:
+        """``process_info``: what roslaunch knows of process ``name`` (``-1`` if none runs by
+        that name)."""
         for process in list(self._monitor.procs):
             if process.name == name:
                 return [1, "process info", _info(process, True)]
         return [-1, "no process by that name", {}]
 
     def list_children(self) -> list[Any]:
+        """``list_children``: always empty; rosx starts no remote roslaunch children."""
         return [1, "roslaunch children", []]
 
 

@@ -374,6 +374,8 @@ class ForkedProcess(LocalProcess):
         self.forked = False
 
     def start(self) -> None:
+        """Fork the node from the helper, which has the Python modules loaded already; started as
+        any process when the helper cannot take its environment or refuses."""
         argv = self.argv
         if not self.zygote.accepts(self.environ):
             self.forked = False
@@ -413,6 +415,7 @@ class ForkedProcess(LocalProcess):
         return False, None
 
     def poll(self) -> bool:
+        """Whether the node still runs; records its exit code when it has ended."""
         if not self.forked:
             return super().poll()
         ended, code = self._ended()
@@ -422,11 +425,13 @@ class ForkedProcess(LocalProcess):
         return False
 
     def running(self) -> bool:
+        """Whether the node still runs, without recording its death."""
         if not self.forked:
             return super().running()
         return not self._ended()[0]
 
     def signal(self, sig: signal.Signals) -> None:
+        """Send ``sig`` to the node's process group (to the node alone before it leads one)."""
         if not self.forked:
             super().signal(sig)
             return
@@ -439,6 +444,7 @@ class ForkedProcess(LocalProcess):
                 os.kill(self.pid, sig)
 
     def reap(self) -> None:
+        """Kill what the node left running in its process group once it has ended."""
         if not self.forked:
             super().reap()
             return
