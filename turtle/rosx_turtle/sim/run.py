@@ -164,10 +164,10 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
         return 1
     except KeyboardInterrupt:  # Ctrl-C while starting: what started has been stopped
         return 0
-    from rosx.workspace.path_commands import hint_once  # noqa: PLC0415 - once it runs
+    try:  # from here on Ctrl-C (or ``kill -INT``) stops what started, whenever it comes
+        from rosx.workspace.path_commands import hint_once  # noqa: PLC0415 - once it runs
 
-    notice = hint_once(env.environ)
-    try:
+        notice = hint_once(env.environ)
         if headless:
             if notice:
                 env.stderr.write(notice + "\n")
