@@ -1,7 +1,13 @@
-"""Where the ROS 1 reference is, and how to run it; tests that need it skip cleanly without it."""
+"""Where the ROS 1 reference is, and how to run it; tests that need it skip cleanly without it.
+
+ROS 1 runs here see nothing that other runs on the machine change under them: the package
+overlay is this test run's own copy (`OVERLAY`), ``ROS_HOME`` is a folder of the run's own, and
+each `ros1_environ` gives a log folder of its own (`private_ros_home`).
+"""
 
 from __future__ import annotations
 
+import atexit
 import contextlib
 import functools
 import json
@@ -9,14 +15,21 @@ import os
 import shutil
 import subprocess
 import sys
+import tempfile
+import time
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
+from xml.etree import ElementTree
 
 import pytest
 
 ROS1_PYTHON = os.environ.get("ROS1_PYTHON", "/usr/bin/python3")
-OVERLAY = Path(os.environ.get("ROS1_OVERLAY", "/tmp/ros1-overlay"))
+#: The overlay the reference's script keeps (package.xml files for Debian's message packages,
+#: turtlesim's definitions). Every ``eval "$(ros1-reference)"`` on the machine rewrites its files
+#: in place (emptied, then written), so a ROS 1 crawl of it at that moment reads an empty
+#: ``package.xml`` and fails with a ParseError: tests use `OVERLAY`, a copy of it.
+SHARED_OVERLAY = Path(os.environ.get("ROS1_OVERLAY", "/tmp/ros1-overlay"))
 
 
 @functools.cache
@@ -36,7 +49,10 @@ def ros1_python_imports(*modules: str) -> bool:
 
 def ros1_available() -> bool:
     """True when ROS 1's tools and rospy (Debian's Python) are installed with the overlay."""
-    if shutil.which("roscore", path="/usr/bin") is None or not (OVERLAY / "turtlesim").is_dir():
+    if (
+        shutil.which("roscore", path="/usr/bin") is None
+        or not (SHARED_OVERLAY / "turtlesim").is_dir()
+    ):
         return False
     probe = subprocess.run(
         [ROS1_PYTHON, "-c", "import rospy, rosmsg, genpy"], capture_output=True, check=False
@@ -48,6 +64,77 @@ ROS1 = ros1_available()
 needs_ros1 = pytest.mark.skipif(not ROS1, reason="the ROS 1 reference is not installed")
 
 
+def _private_folder() -> Path:
+    """A folder of this process's own under the temporary folder, removed when it exits (by
+    this process only: a fork of it that exits leaves it)."""
+    folder = Path(tempfile.mkdtemp(prefix="rosx-tests-ros1-"))
+    owner = os.getpid()
+
+    def remove() -> None:
+        if os.getpid() == owner:
+            shutil.rmtree(folder, ignore_errors=True)
+
+    atexit.register(remove)
+    return folder
+
+
+_PRIVATE = _private_folder() if ROS1 else None
+
+
+def _whole(path: Path) -> bytes:
+    """The bytes of a file of the shared overlay once it is whole: not the empty file a rewrite
+    leaves for a moment, and for a ``package.xml`` one that parses."""
+    deadline = time.monotonic() + 30.0
+    while True:
+        data = path.read_bytes()
+        if data and (path.name != "package.xml" or _parses(data)):
+            return data
+        if time.monotonic() > deadline:
+            raise TimeoutError(f"{path} stayed incomplete for 30 s")
+        time.sleep(0.02)
+
+
+def _parses(xml: bytes) -> bool:
+    try:
+        ElementTree.fromstring(xml)
+    except ElementTree.ParseError:
+        return False
+    return True
+
+
+def _copy_overlay(shared: Path, into: Path) -> Path:
+    """A copy of the overlay ``shared`` in ``into``: its files whole, its links (to Debian's
+    ``/usr/share/<pkg>/msg``) as links."""
+    for folder, subfolders, files in os.walk(shared):
+        target = into / Path(folder).relative_to(shared)
+        target.mkdir(exist_ok=True)
+        for name in [*subfolders, *files]:
+            source = Path(folder, name)
+            if source.is_symlink():
+                (target / name).symlink_to(source.readlink())
+            elif name in files:
+                (target / name).write_bytes(_whole(source))
+    return into
+
+
+#: The overlay ROS 1 runs in tests see: this test run's copy of `SHARED_OVERLAY`.
+OVERLAY = (
+    SHARED_OVERLAY if _PRIVATE is None else _copy_overlay(SHARED_OVERLAY, _PRIVATE / "overlay")
+)
+
+
+def private_ros_home() -> dict[str, str]:
+    """``ROS_HOME`` (rospack's cache, roscore's pid file) in a folder of this test run's own,
+    not the user's ``~/.ros`` that every run on the machine shares, and ``ROS_LOG_DIR`` a new
+    folder: two ROS 1 programs started at once renew ``log/latest`` at once, and the one that
+    loses says so on stderr."""
+    root = _PRIVATE or Path(tempfile.gettempdir())
+    home = root / "ros_home"
+    home.mkdir(exist_ok=True)
+    logs = tempfile.mkdtemp(prefix="log-", dir=home)
+    return {"ROS_HOME": str(home), "ROS_LOG_DIR": logs}
+
+
 #: rosx's package folder: the shim folders (``rospy``, ``tf2_ros``…) are in it.
 _ROSX = Path(__file__).resolve().parents[2] / "rosx"
 
@@ -57,10 +144,13 @@ def ros1_environ(**extra: str) -> dict[str, str]:
 
     rosx's shim folders on the run's ``PYTHONPATH`` (a shell that sourced a workspace's
     ``devel/setup.bash``) are left out: run from the checkout, where ROS 1's Python can import
-    rosx, they would give it rosx's ``rospy`` instead of its own.
+    rosx, they would give it rosx's ``rospy`` instead of its own. ``ROS_HOME`` and
+    ``ROS_LOG_DIR`` are `private_ros_home`'s unless ``extra`` gives either.
     """
     env = _without_rosx({k: v for k, v in os.environ.items() if not k.startswith("ROS_")})
     env["ROS_PACKAGE_PATH"] = f"{OVERLAY}:/usr/share"
+    if "ROS_HOME" not in extra and "ROS_LOG_DIR" not in extra:
+        env.update(private_ros_home())
     env.update(extra)
     return env
 
@@ -137,6 +227,6 @@ def roscore(kind: str) -> Iterator[str]:
     environ = {k: v for k, v in os.environ.items() if not k.startswith("ROS_")}
     if kind == "ros1-roscore":
         environ = _without_rosx(environ)
-    with running(core, {**environ, "ROS_MASTER_URI": uri}):
+    with running(core, {**environ, **private_ros_home(), "ROS_MASTER_URI": uri}):
         wait_for(lambda: port_open(port), what=kind)
         yield uri
