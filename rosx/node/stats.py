@@ -38,6 +38,8 @@ MAX_WINDOW = 50000
 #: bw's window when ``-w`` is not given.
 DEFAULT_BW_WINDOW = 100
 NO_NEW_MESSAGES = "no new messages"
+#: What hz and delay print when ROS time reads 0 again after messages were measured.
+TIME_RESET = "time has reset, resetting counters"
 
 Summary = tuple[float, float, float, float, int]
 
@@ -61,6 +63,13 @@ class _Gaps:
         self.t0 = -1.0
         self.tn = 0.0
         self.last_printed = 0.0
+
+
+def _dropped(gaps: _Gaps) -> bool:
+    """Drop the values of ``gaps``, keeping its start (as ROS 1 does); whether it had any."""
+    had = bool(gaps.values)
+    gaps.values.clear()
+    return had
 
 
 class HzTracker:
@@ -87,6 +96,13 @@ class HzTracker:
             else:
                 gaps.values.append(now - gaps.tn)
                 gaps.tn = now
+
+    def time_reset(self, topic: str) -> bool:
+        """ROS time read 0 when a message of ``topic`` came (simulated time restarted): the
+        gaps so far are dropped. True when there were any (ROS 1 then prints
+        `TIME_RESET`)."""
+        with self._lock:
+            return _dropped(self._gaps(topic))
 
     def rate(self, topic: str) -> Summary | None:
         """``(rate, min gap, max gap, std dev, window)``, or None with nothing new to report."""
@@ -210,6 +226,12 @@ class DelayTracker:
             else:
                 gaps.values.append(now - stamp)
                 gaps.tn = now
+
+    def time_reset(self) -> bool:
+        """ROS time read 0 when a message came: the delays so far are dropped. True when
+        there were any (ROS 1 then prints `TIME_RESET`)."""
+        with self._lock:
+            return _dropped(self._gaps)
 
     def report(self) -> str | None:
         """What ``rostopic delay`` prints each second, or None before the first delay."""

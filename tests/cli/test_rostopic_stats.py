@@ -65,3 +65,25 @@ def test_delay() -> None:
         "average delay: 0.125\n\tmin: 0.050s max: 0.200s std dev: 0.07500s window: 3"
     )
     assert tracker.report() == "no new messages"
+
+
+def test_time_reset_drops_what_was_measured_as_ros1_does() -> None:
+    """ROS time reading 0 again (a simulator or a bag restarted): the gaps so far go, once."""
+    hz = HzTracker()
+    assert hz.time_reset("/t") is False  # nothing measured: ROS 1 prints nothing
+    for when in (10.0, 10.5, 11.0):
+        hz.arrived("/t", when)
+    assert hz.time_reset("/t") is True
+    assert hz.time_reset("/t") is False
+    assert hz.report(["/t"]) == "no new messages"
+    for when in (0.5, 1.0, 1.25):  # time starts again from 0: a new start, then gaps
+        hz.arrived("/t", when)
+    assert hz.report(["/t"]) == (
+        "average rate: 2.667\n\tmin: 0.250s max: 0.500s std dev: 0.12500s window: 3"
+    )
+    delay = DelayTracker()
+    assert delay.time_reset() is False
+    for now in (5.0, 5.1):
+        delay.arrived(now, 4.9)
+    assert delay.time_reset() is True
+    assert delay.report() is None

@@ -478,6 +478,48 @@ def test_hz_measures_in_simulated_time_unless_told_the_wall(
     assert rates[True] > 6.0  # the wall clock's 20 a second, give or take a busy machine
 
 
+def test_hz_says_when_simulated_time_restarts(
+    env: dict[str, str], master: str, make_node: Callable[[str], Node]
+) -> None:
+    """ROS time back at 0 after rates were measured (a simulator restarted): ROS 1's rostopic
+    hz prints that the counters were reset, once, and leaves such messages out."""
+    node = make_node("/restarting_simulator")
+    node.params.set("/use_sim_time", True)
+    clock_type = get_message_class("rosgraph_msgs/Clock")
+    clock = node.advertise("/clock", clock_type, queue_size=10)
+    data = node.advertise("/r/restart", Int32, queue_size=10)
+    stop, restarted = threading.Event(), threading.Event()
+
+    def run() -> None:
+        seconds = 100.0
+        while not stop.wait(0.05):
+            seconds = 0.0 if restarted.is_set() else seconds + 0.5
+            clock.publish(clock_type(clock=Time.from_sec(seconds)))
+            data.publish(Int32(1))
+
+    def measured_then_reset(out: str, err: str) -> bool:
+        if "average rate" in out:
+            restarted.set()
+        # One report after it: what hz says of messages that come while time reads 0.
+        return "\n" in out.partition("time has reset, resetting counters\n")[2]
+
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    try:
+        result = run_for(
+            master, 1.5, "rostopic", "hz", "/r/restart", environ=env, until=measured_then_reset
+        )
+    finally:
+        stop.set()
+        thread.join()
+        node.params.delete("/use_sim_time")  # the master is the module's
+    assert result.status == 0, result.err
+    lines = result.out.splitlines()
+    assert lines.count("time has reset, resetting counters") == 1, result.out
+    after = lines[lines.index("time has reset, resetting counters") + 1 :]
+    assert after and set(after) == {"no new messages"}, result.out
+
+
 def test_hz_of_several_topics_prints_a_table(
     stream: Callable[..., None], env: dict[str, str], master: str
 ) -> None:

@@ -2,7 +2,8 @@
 print a report every second until interrupted.
 
 As ROS 1's, hz and delay measure in ROS time (the node's clock: ``/clock`` when
-``/use_sim_time`` is set, where a message that comes while it reads 0 is not counted), hz with
+``/use_sim_time`` is set, where a message that comes while it reads 0 is not counted, and
+drops what was measured, saying so once: simulated time restarted), hz with
 ``--wall-time`` and bw in wall-clock time; the reports come every wall-clock second.
 
 hz and bw subscribe raw (rospy's ``AnyMsg``): messages are never decoded, so any type works and
@@ -15,7 +16,7 @@ from __future__ import annotations
 import time
 from typing import TYPE_CHECKING, Any
 
-from rosx.node.stats import BandwidthTracker, DelayTracker, HzTracker
+from rosx.node.stats import TIME_RESET, BandwidthTracker, DelayTracker, HzTracker
 from rosx_commands.cli import ToolParser
 from rosx_commands.context import Environment, ExitStatus
 from rosx_commands.rostopic.listing import resolve
@@ -116,7 +117,7 @@ def hz(argv: list[str], env: Environment) -> int:
             node.subscribe(
                 real_topic,
                 msg_class,
-                _hz_callback(tracker, topic, real_topic, message_filter, clock),
+                _hz_callback(env, tracker, topic, real_topic, message_filter, clock),
                 tcp_nodelay=bool(options.tcp_nodelay),
             )
             _subscribed(env, real_topic)
@@ -137,7 +138,13 @@ def _ros_seconds(node: Node) -> Callable[[], float | None]:
     return seconds
 
 
+def _time_reset(env: Environment) -> None:
+    env.stdout.write(TIME_RESET + "\n")
+    env.stdout.flush()
+
+
 def _hz_callback(
+    env: Environment,
     tracker: HzTracker,
     key: str,
     topic: str,
@@ -152,6 +159,8 @@ def _hz_callback(
         now = clock()
         if now is not None:
             arrived(key, now)
+        elif tracker.time_reset(key):
+            _time_reset(env)
 
     return counted
 
@@ -253,5 +262,7 @@ def _delay_callback(
         now = clock()
         if now is not None:
             tracker.arrived(now, msg.header.stamp.to_sec())
+        elif tracker.time_reset():
+            _time_reset(env)
 
     return callback
