@@ -5,7 +5,8 @@
   WARN 4, ERROR 8, FATAL 16), ``name`` (the node's name), ``msg``, ``file``, ``function``,
   ``line``, ``topics`` (the node's published and subscribed topics) and ``header.stamp``.
 * `console_line` formats a record as rospy's console handler does: ``ROSCONSOLE_FORMAT``,
-  default ``[${severity}] [${time}]: ${message}``, time as ``%f`` seconds. Whether a node prints
+  default ``[${severity}] [${time}]: ${message}``, time as ``%f`` seconds, followed by the
+  node's ROS time (``, %f``) when that is a simulator's, not the wall clock. Whether a node prints
   is its creator's choice (`NodeLog.console`); `print_console` writes as rospy does (stdout
   below WARN, stderr from WARN on, coloured on a terminal).
 * The levels behind the ``~get_loggers`` and ``~set_logger_level`` services
@@ -51,12 +52,18 @@ def console_line(
     function: str = "",
     line: int = 0,
     stamp: float | None = None,
+    ros_time: float | None = None,
     environ: Mapping[str, str] | None = None,
 ) -> str:
-    """One console line (without the newline) for a record, as rospy's handler writes it."""
+    """One console line (without the newline) for a record, as rospy's handler writes it.
+
+    ``ros_time`` is the node's simulated time, if it has one: rospy's ``${time}`` is then the
+    wall clock's and the simulator's, ``1764339000.123456, 42.100000``.
+    """
     env = os.environ if environ is None else environ
     text = env.get("ROSCONSOLE_FORMAT", _DEFAULT_FORMAT)
     wall = f"{time.time() if stamp is None else stamp:f}"
+    simulated = "" if ros_time is None else f", {ros_time:f}"
     replacements = {
         "${severity}": LEVEL_NAMES.get(level, "INFO"),
         "${message}": message,
@@ -67,7 +74,7 @@ def console_line(
         "${line}": str(line),
         "${function}": function,
         "${node}": node,
-        "${time}": wall,
+        "${time}": wall + simulated,
     }
     for tag, value in replacements.items():
         if tag in text:
@@ -77,7 +84,8 @@ def console_line(
             start = text.index(tag) + len(tag)
             end = text.index("}", start)
             pattern = text[start:end]
-            text = text.replace(tag + pattern + "}", time.strftime(pattern))
+            shown = time.strftime(pattern) + (simulated if tag == "${time:" else "")
+            text = text.replace(tag + pattern + "}", shown)
     return text
 
 
@@ -119,6 +127,9 @@ class NodeLog:
         self.console = console
         #: Receives each emitted record's logger name, level and text (a log file), if set.
         self.record: Callable[[str, int, str], None] | None = None
+        #: The node's ROS time in seconds when it follows a simulator (console lines show it
+        #: after the wall clock's, as rospy's do); None on the wall clock.
+        self.ros_time: Callable[[], float] | None = None
         self._environ = environ
         self._busy = threading.local()
 
@@ -162,6 +173,7 @@ class NodeLog:
                     file=file,
                     function=function,
                     line=line,
+                    ros_time=None if self.ros_time is None else self.ros_time(),
                     environ=self._environ,
                 ),
             )

@@ -3,7 +3,8 @@
 As rospy's ``init_node`` does (``rospy.impl.simtime``): when the master's ``/use_sim_time``
 parameter is true, the node's `Clock` reads 0 until the first ``rosgraph_msgs/Clock`` message on
 ``/clock`` and each message's time after it (subscribed with a queue of 1); otherwise it keeps
-the wall clock. rospy scripts get this from `rosx.client` (`init_node`); other rosx programs call
+the wall clock. The node's console lines then show its ROS time after the wall clock's, as
+rospy's do. rospy scripts get this from `rosx.client` (`init_node`); other rosx programs call
 `follow_sim_time` when they want ROS time to be a simulator's.
 """
 
@@ -26,6 +27,7 @@ def follow_sim_time(node: Node) -> bool:
         return False
     clock = node.clock
     clock.use_sim_time()
+    node.log_sink.ros_time = lambda: clock.now().to_sec()
 
     def tick(message: Any) -> None:
         clock.set(message.clock)

@@ -5,6 +5,7 @@ ends a sleep with ``ROSTimeMovedBackwardsException``; ``/rosout`` records carry 
 
 from __future__ import annotations
 
+import re
 import sys
 import threading
 from collections.abc import Callable, Iterator
@@ -72,9 +73,20 @@ class Sleeper:
                 self.raised = error
             self.done.set()
 
-        thread = threading.Thread(target=run, daemon=True)
-        thread.start()
-        wait_for(lambda: self.done.is_set() or _waiting(thread), what="the sleep to begin")
+        self.thread = threading.Thread(target=run, daemon=True)
+        self.thread.start()
+        wait_for(lambda: self.done.is_set() or _waiting(self.thread), what="the sleep to begin")
+
+    def started_from(self) -> Any:
+        """The ROS time the sleep counts from (the clock's ``sleep``'s ``start``), once it
+        has seen one that is not 0; None before."""
+        frame = sys._current_frames().get(self.thread.ident or 0)
+        while frame is not None:
+            start = frame.f_locals.get("start") if frame.f_code.co_name == "sleep" else None
+            if start is not None and not start.is_zero():
+                return start
+            frame = frame.f_back
+        return None
 
 
 def _waiting(thread: threading.Thread) -> bool:
@@ -122,6 +134,9 @@ def test_a_sleep_waits_for_the_first_clock(
     sleeper = Sleeper(lambda: rospy.sleep(1.0))
     clock = simulator()
     clock.at(3.0, rospy)  # the sleep counts from the first time it sees, not from 0
+    # On a loaded machine the sleeper's thread may be scheduled late: once it has seen 3.0.
+    wait_for(lambda: sleeper.started_from() is not None, what="the sleep to see 3.0")
+    assert sleeper.started_from().to_sec() == 3.0
     clock.at(3.5, rospy)
     assert not sleeper.done.is_set()
     clock.at(5.0, rospy)
@@ -180,6 +195,22 @@ def test_rosout_records_carry_simulated_time(
     wait_for(logged, what="the record on /rosout")
     record = next(record for record in records if record.msg == "at 42.5")
     assert record.header.stamp.to_sec() == pytest.approx(42.5)
+
+
+def test_console_lines_show_the_wall_clock_then_simulated_time(
+    rospy: ModuleType, simulator: Callable[[], Simulator], capsys: pytest.CaptureFixture[str]
+) -> None:
+    """rospy's ``${time}`` under ``/use_sim_time``: ``[INFO] [<wall>, <simulated>]: ...``."""
+    rospy.init_node("talker_on_sim_time", disable_signals=True)
+    clock = simulator()
+    clock.at(42.5, rospy)
+    capsys.readouterr()
+    rospy.loginfo("at 42.5")
+    line = capsys.readouterr().out
+    found = re.fullmatch(r"\[INFO\] \[(\d+\.\d{6}), (\d+\.\d{6})\]: at 42\.5\n", line)
+    assert found, line
+    assert float(found[1]) > 1e9  # the wall clock's
+    assert found[2] == "42.500000"
 
 
 def test_disable_rostime_keeps_the_wall_clock(
