@@ -105,6 +105,8 @@ class NodeLog:
         return level >= self.node.log_sink.levels.get(self.logger, INFO)
 
     def __call__(self, level: int, message: str) -> None:
+        """Log ``message`` at ``level``: to the console as roscpp prints it and to ``/rosout``
+        while the node runs; dropped below the logger's level."""
         if not self.enabled(level):
             return
         if self.console is not None:
@@ -123,6 +125,7 @@ class RosconsoleHandler(logging.Handler):
         self.console = console
 
     def emit(self, record: logging.LogRecord) -> None:
+        """Print ``record`` as roscpp's console line, under the name of the program's rospy node."""
         from rosx.client import lifecycle  # noqa: PLC0415 - the program's rospy node
         from rosx.client.roslogging import ros_level  # noqa: PLC0415 - as lifecycle
 

@@ -80,6 +80,8 @@ class ShapeServer:
         self.server.start()
 
     def on_goal(self) -> None:
+        """Goal callback: accept the new goal and plan its polygon (interior angle, side length);
+        the turtle starts on the next pose."""
         goal = self.server.accept_new_goal()
         self.edges = goal.edges
         self.interior, apothem, self.side = polygon(goal.edges, goal.radius)
@@ -88,10 +90,14 @@ class ShapeServer:
         self.start = None
 
     def on_preempt(self) -> None:
+        """Preempt callback: log ``Preempted`` and stop the goal, as turtle_actionlib's
+        shape_server."""
         self.rospy.loginfo("%s: Preempted", self.name)
         self.server.set_preempted()
 
     def on_pose(self, pose: Any) -> None:
+        """Pose callback, one control step: publish the twist toward the next corner, and succeed
+        once every edge is drawn."""
         if not self.server.is_active():
             return
         if self.progress >= self.edges:

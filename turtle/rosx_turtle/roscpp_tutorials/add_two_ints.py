@@ -50,6 +50,8 @@ class AddTwoIntsServer:
         self.log = NodeLog(self.node, console, LOGGER)
 
     def start(self) -> AddTwoIntsServer:
+        """Start the node, read its private parameters and advertise ``add_two_ints``; returns
+        self."""
         node = self.node.start()
         self.args.set_private_params(node)
         service = get_service_class("roscpp_tutorials/TwoInts")
@@ -63,9 +65,11 @@ class AddTwoIntsServer:
         return {"sum": total}
 
     def shutdown(self, reason: str = "") -> None:
+        """Shut the node down with ``reason``; the service goes with it."""
         self.node.shutdown(reason)
 
     def wait_for_shutdown(self, timeout: float | None = None) -> bool:
+        """Block until the node shuts down; False if ``timeout`` passed first."""
         return self.node.wait_for_shutdown(timeout)
 
 

@@ -42,6 +42,8 @@ class Talker:
         self._publisher: Any = None
 
     def start(self) -> Talker:
+        """Start the node, advertise ``chatter`` and publish ``hello world 0`` at once, then ten
+        a second; returns self."""
         node = self.node.start()
         self.args.set_private_params(node)
         self._publisher = node.advertise("chatter", self._string, queue_size=QUEUE_SIZE)
@@ -55,10 +57,12 @@ class Talker:
         self._publisher.publish(self._string(data=text))
 
     def shutdown(self, reason: str = "") -> None:
+        """Stop talking and shut the node down with ``reason``."""
         self._ticker.stop()
         self.node.shutdown(reason)
 
     def wait_for_shutdown(self, timeout: float | None = None) -> bool:
+        """Block until the node shuts down; False if ``timeout`` passed first."""
         return self.node.wait_for_shutdown(timeout)
 
 
@@ -71,6 +75,8 @@ class Listener:
         self.log = NodeLog(self.node, console, LOGGER)
 
     def start(self) -> Listener:
+        """Start the node and subscribe to ``chatter``, logging ``I heard: [...]`` for each
+        message; returns self."""
         node = self.node.start()
         self.args.set_private_params(node)
         string = get_message_class("std_msgs/String")
@@ -81,9 +87,11 @@ class Listener:
         self.log(INFO, f"I heard: [{message.data}]")
 
     def shutdown(self, reason: str = "") -> None:
+        """Shut the node down with ``reason``."""
         self.node.shutdown(reason)
 
     def wait_for_shutdown(self, timeout: float | None = None) -> bool:
+        """Block until the node shuts down; False if ``timeout`` passed first."""
         return self.node.wait_for_shutdown(timeout)
 
 

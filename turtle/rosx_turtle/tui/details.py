@@ -8,6 +8,7 @@ threads, so a slow node never freezes the screen.
 
 from __future__ import annotations
 
+import sys
 import threading
 from collections import deque
 from typing import TYPE_CHECKING, ClassVar
@@ -16,6 +17,11 @@ from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.containers import VerticalScroll  # noqa: TID253 - TUI code
 from textual.screen import ModalScreen  # noqa: TID253 - TUI code
 from textual.widgets import Static  # noqa: TID253 - TUI code
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -65,6 +71,7 @@ class DetailsScreen(ModalScreen[None]):
         #: The echoed messages shown now (``rostopic echo``'s text).
         self.echoed = ""
 
+    @override
     def compose(self) -> ComposeResult:
         command = "rostopic" if self.kind == "topic" else "rosnode"
         with VerticalScroll() as box:
@@ -76,6 +83,8 @@ class DetailsScreen(ModalScreen[None]):
                 yield Static("waiting for a message…", id="echo", markup=False)
 
     def on_mount(self) -> None:
+        """Ask for the topic's or node's info in a worker thread; for a topic, also start echoing
+        it and refresh the echo every `ECHO_PERIOD` seconds."""
         self.run_worker(self._describe, thread=True, exit_on_error=False)
         if self.kind == "topic":
             self.run_worker(self._start_echo, thread=True, exit_on_error=False)
@@ -120,6 +129,8 @@ class DetailsScreen(ModalScreen[None]):
         self.dismiss()
 
     def on_unmount(self) -> None:
+        """Stop the echo's subscription on a thread of its own, so closing the screen never waits
+        on the network."""
         with self._lock:
             self._closed = True
             stop, self._stop = self._stop, None

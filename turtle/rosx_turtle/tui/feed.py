@@ -85,14 +85,17 @@ class Follows(Generic[T]):
         raise NotImplementedError
 
     def on_mount(self) -> None:
+        """Start listening to the feed (textual runs this besides a subclass's own ``on_mount``)."""
         if self.feed is not None:
             self.feed.listen(cast("MessagePump", self))
 
     def on_unmount(self) -> None:
+        """Stop listening to the feed, so an unmounted widget is not sent its values."""
         if self.feed is not None:
             self.feed.forget(cast("MessagePump", self))
 
     def on_feed_ready(self, message: FeedReady) -> None:
+        """Show the feed's newest value if this widget has not seen it yet."""
         if self.feed is not None and message.feed is self.feed:
             value = self.feed.take(cast("MessagePump", self))
             if value is not None:

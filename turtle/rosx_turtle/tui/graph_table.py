@@ -39,6 +39,7 @@ class GraphTable(Follows["Graph"], DataTable[str]):
         self.graph: Graph | None = None
 
     def on_mount(self) -> None:
+        """Add the columns (`Follows.on_mount` runs too and starts the feed)."""
         self.add_columns(*self.COLUMNS)
 
     def rows_of(self, graph: Graph) -> Iterable[tuple[str, ...]]:

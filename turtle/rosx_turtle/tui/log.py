@@ -7,10 +7,16 @@ While the pond is drawn, printing would scribble over it; the node's records sti
 from __future__ import annotations
 
 import io
+import sys
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from rosx_turtle.console import SEVERITIES, Console
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
@@ -37,5 +43,6 @@ class ScreenConsole(Console):
         super().__init__(io.StringIO(), io.StringIO(), environ or {})
         self.offer = offer
 
+    @override
     def print(self, level: int, message: str, *, node: str = "") -> None:
         self.offer(LogRecord(level, SEVERITIES.get(level, " INFO"), message))

@@ -7,6 +7,7 @@ a strip until it changes again. A scene that changes nothing visible costs no re
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 from textual.geometry import Region  # noqa: TID253 - TUI code
@@ -15,6 +16,11 @@ from textual.widget import Widget  # noqa: TID253 - TUI code
 
 from rosx_turtle.tui.feed import Follows
 from rosx_turtle.view.renderer import PondRenderer
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual import events
@@ -50,6 +56,7 @@ class PondView(Follows["Scene"], Widget):
         self._strips: dict[int, Strip] = {}
 
     def on_resize(self, event: events.Resize) -> None:
+        """Fit the pond to the new size and drop the cached lines."""
         width, height = self.size
         self.renderer.resize(width, height, self.rich_style)
         self._strips.clear()
@@ -74,6 +81,7 @@ class PondView(Follows["Scene"], Widget):
             last = y
         self.refresh(Region(0, first, width, last - first + 1))
 
+    @override
     def render_line(self, y: int) -> Strip:
         strip = self._strips.get(y)
         if strip is None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, ClassVar
 
 from textual.app import App  # noqa: TID253 - TUI code
@@ -11,6 +12,11 @@ from rosx_turtle.tui.log_line import LogLine
 from rosx_turtle.tui.pond import PondView
 from rosx_turtle.tui.quit import QuitFooter
 from rosx_turtle.tui.status import PoseLine
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -35,6 +41,7 @@ class PondApp(App[None]):
         self.scenes = scenes
         self.logs = logs
 
+    @override
     def compose(self) -> ComposeResult:
         yield PondView(self.scenes, id="pond")
         yield PoseLine(self.scenes, id="poses")

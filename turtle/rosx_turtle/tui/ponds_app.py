@@ -7,6 +7,7 @@ added and removed while the app runs, from the watcher's thread through `call_fr
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, ClassVar
 
 from textual.app import App  # noqa: TID253 - TUI code
@@ -16,6 +17,11 @@ from textual.widgets import Footer, Static  # noqa: TID253 - TUI code
 
 from rosx_turtle.tui.pond import PondView
 from rosx_turtle.tui.status import PoseLine
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -49,12 +55,14 @@ class PondsApp(App[None]):
         self.started = started
         self.ponds: dict[str, Vertical] = {}
 
+    @override
     def compose(self) -> ComposeResult:
         with Horizontal(id="ponds"):
             yield Static(WAITING, id="waiting")
         yield Footer()
 
     def on_mount(self) -> None:
+        """Tell whoever started the app that it is up (`started`), e.g. to connect the nodes."""
         if self.started is not None:
             self.started()
 

@@ -7,11 +7,17 @@ on an 80-column terminal the quit key is the one cut off; `QuitFooter` lists it 
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 from textual.widgets import Footer  # noqa: TID253 - TUI code
 from textual.widgets._footer import FooterKey  # noqa: TID253 - TUI code
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -30,6 +36,7 @@ def _is_quit(widget: object) -> bool:
 class QuitFooter(Footer):
     """textual's footer with the quit key first."""
 
+    @override
     def compose(self) -> ComposeResult:
         keys = list(super().compose())
         yield from sorted(keys, key=lambda widget: not _is_quit(widget))

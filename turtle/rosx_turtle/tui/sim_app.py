@@ -9,6 +9,7 @@ pane and move the cursor in the tables). Enter on a topic or a node opens its de
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, ClassVar
 
 from textual.app import App  # noqa: TID253 - TUI code
@@ -20,6 +21,11 @@ from rosx_turtle.tui.nodes import NodesPanel
 from rosx_turtle.tui.quit import QuitFooter
 from rosx_turtle.tui.sim_body import SimBody
 from rosx_turtle.tui.topics import TopicsPanel
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -53,6 +59,7 @@ class GraphScreenApp(App[None]):
         self.sub_title = f"ROS_MASTER_URI={link.master_uri}"
 
     def on_mount(self) -> None:
+        """Show the start-up notice, if any, for `_NOTICE_SECONDS`."""
         if self.notice:
             self.notify(self.notice, timeout=_NOTICE_SECONDS)
 
@@ -76,6 +83,7 @@ class SimApp(GraphScreenApp):
         super().__init__(link, notice=notice)
         self.link = link
 
+    @override
     def compose(self) -> ComposeResult:
         yield Header(icon="≈")
         yield SimBody(self.link, id="body")

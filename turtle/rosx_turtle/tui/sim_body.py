@@ -8,6 +8,7 @@ tabs. In a terminal too small for any of it, the body shows which size it needs 
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 from textual.containers import Container, Horizontal, Vertical  # noqa: TID253 - TUI code
@@ -22,6 +23,11 @@ from rosx_turtle.tui.status import PoseLine
 from rosx_turtle.tui.teleop import TeleopPad
 from rosx_turtle.tui.topics import TopicsPanel
 from rosx_turtle.view.layout import SimLayout, sim_layout
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual import events
@@ -46,6 +52,7 @@ class GraphPanels(Vertical):
         super().__init__(id=id)
         self.link = link
 
+    @override
     def compose(self) -> ComposeResult:
         link = self.link
         if not self.tabs:
@@ -87,6 +94,7 @@ class Columns(Container):
         #: The layout in force (None before the first resize).
         self.layout_now: SimLayout | None = None
 
+    @override
     def compose(self) -> ComposeResult:
         with Horizontal(id="columns"):
             with Vertical(id="world"):
@@ -108,6 +116,7 @@ class Columns(Container):
         raise NotImplementedError
 
     def on_resize(self, event: events.Resize) -> None:
+        """Lay the columns out again for the terminal's new size."""
         self.lay_out(*self.app.size)
 
     def lay_out(self, width: int, height: int) -> None:
@@ -129,12 +138,14 @@ class SimBody(Columns):
         super().__init__(id=id)
         self.link = link
 
+    @override
     def world_column(self) -> ComposeResult:
         link = self.link
         yield PondView(link.scenes, id="pond")
         yield PoseLine(link.scenes, id="poses")
         yield LogLine(link.logs, id="log")
 
+    @override
     def side_column(self) -> ComposeResult:
         link = self.link
         scale_linear, scale_angular = link.scales
@@ -143,5 +154,6 @@ class SimBody(Columns):
         )
         yield GraphPanels(link, id="panels")
 
+    @override
     def fold(self, layout: SimLayout) -> None:
         self.query_one(GraphPanels).tabs = layout.tabs

@@ -16,6 +16,7 @@ cut mid-word on an 80x24 terminal.
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, ClassVar
 
 from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
@@ -23,6 +24,11 @@ from textual.message import Message  # noqa: TID253 - TUI code
 from textual.widgets import Static  # noqa: TID253 - TUI code
 
 from rosx_turtle.teleop import KEYS
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -67,14 +73,17 @@ class KeyPad(Static, can_focus=True):
         raise NotImplementedError
 
     def on_mount(self) -> None:
+        """Show the pane's text (not driving yet)."""
         self.describe()
 
     def on_focus(self) -> None:
+        """Light the pane: its keys drive now."""
         self.driving = True
         self.border_subtitle = self.focused
         self.describe()
 
     def on_blur(self) -> None:
+        """Dim the pane: its keys no longer drive."""
         self.driving = False
         self.border_subtitle = ""
         self.describe()
@@ -134,6 +143,7 @@ class TeleopPad(KeyPad):
         self.describe()
         self.post_message(self.Sent(linear, angular))
 
+    @override
     def describe(self) -> None:
         # Each line fits the narrowest side column (`rosx_turtle.view.layout.SIDE_MIN`).
         if self.driving:

@@ -2,9 +2,15 @@
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 from rosx_turtle.tui.graph_table import GraphTable
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Iterator
@@ -26,6 +32,7 @@ class TopicsPanel(GraphTable):
     def __init__(self, feed: Feed[Graph] | None = None, *, id: str | None = None) -> None:
         super().__init__("Topics", feed, id=id)
 
+    @override
     def rows_of(self, graph: Graph) -> Iterator[tuple[str, ...]]:
         for topic in graph.topics:
             counts = str(len(topic.publishers)), str(len(topic.subscribers))

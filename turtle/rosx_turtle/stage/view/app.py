@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, ClassVar
 
 from textual.app import App  # noqa: TID253 - TUI code
@@ -11,6 +12,11 @@ from rosx_turtle.stage.view.status import RobotLine
 from rosx_turtle.stage.view.widget import WorldView
 from rosx_turtle.tui.log_line import LogLine
 from rosx_turtle.tui.quit import QuitFooter
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -45,6 +51,7 @@ class StageApp(App[None]):
         self.steps = steps
         self.logs = logs
 
+    @override
     def compose(self) -> ComposeResult:
         yield WorldView(self.world, self.grid, self.steps, id="world")
         yield RobotLine(self.names, self.steps, id="robots")

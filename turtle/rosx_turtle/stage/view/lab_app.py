@@ -10,6 +10,7 @@ Esc closes them.
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 from textual.containers import Vertical  # noqa: TID253 - TUI code
@@ -27,6 +28,11 @@ from rosx_turtle.tui.sim_app import GraphScreenApp
 from rosx_turtle.tui.sim_body import Columns
 from rosx_turtle.tui.topics import TopicsPanel
 from rosx_turtle.view.layout import CHROME_ROWS
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -62,6 +68,7 @@ class LabPanels(Vertical):
             link.steps, odom=link.odom_topic, scan_topic=link.scan_topic, title=title, id="robot"
         )
 
+    @override
     def compose(self) -> ComposeResult:
         link = self.link
         if not self.tabs:
@@ -85,6 +92,7 @@ class LabBody(Columns):
         super().__init__(id=id)
         self.link = link
 
+    @override
     def world_column(self) -> ComposeResult:
         link = self.link
         assert link.world is not None and link.grid is not None
@@ -92,10 +100,12 @@ class LabBody(Columns):
         yield RobotLine(link.names, link.steps, id="robots")
         yield LogLine(link.logs, id="log")
 
+    @override
     def side_column(self) -> ComposeResult:
         yield TwistPad(self.link.drive, topic=self.link.drive_topic, id="teleop")
         yield LabPanels(self.link, id="panels")
 
+    @override
     def fold(self, layout: SimLayout) -> None:
         self.query_one(LabPanels).tabs = layout.height - CHROME_ROWS < STACKED_ROWS
 
@@ -109,6 +119,7 @@ class LabApp(GraphScreenApp):
         super().__init__(link, notice=notice)
         self.link = link
 
+    @override
     def compose(self) -> ComposeResult:
         yield Header(icon="◉")
         yield LabBody(self.link, id="body")

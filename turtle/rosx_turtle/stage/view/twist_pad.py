@@ -13,6 +13,7 @@ focus. It does not publish itself: it calls ``drive(x, y, z, turn)``.
 
 from __future__ import annotations
 
+import sys
 import time
 from typing import TYPE_CHECKING, ClassVar
 
@@ -20,6 +21,11 @@ from textual.binding import Binding, BindingType  # noqa: TID253 - TUI code
 
 from rosx_turtle.teleop_twist import MOVES, SPEEDS, TwistKeys
 from rosx_turtle.tui.teleop import KeyPad
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -85,9 +91,12 @@ class TwistPad(KeyPad):
 
     # textual runs KeyPad's handlers of these messages as well (every class's, in turn).
     def on_mount(self) -> None:
+        """Repeat the held key's command every `REPEAT` seconds until it times out (after
+        KeyPad's handler has shown the help)."""
         self._repeat = self.set_interval(REPEAT, self._tick)
 
     def on_blur(self) -> None:
+        """Stop the robot when the pane loses the focus with a key still held."""
         if self.keys.direction != (0, 0, 0, 0):
             self.action_press("k")
 
@@ -115,6 +124,7 @@ class TwistPad(KeyPad):
         self.sent += 1
         self.last = command
 
+    @override
     def describe(self) -> None:
         lines = list(_HELP) if self.driving else list(_NOT_DRIVING)
         keys = self.keys

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 from textual.strip import Strip  # noqa: TID253 - TUI code
@@ -10,6 +11,11 @@ from textual.widget import Widget  # noqa: TID253 - TUI code
 from rosx_turtle.stage.view.picture import WorldPainter, laser_hits
 from rosx_turtle.tui.feed import Follows
 from rosx_turtle.view.halfblock import CellPainter
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     import numpy as np
@@ -56,6 +62,7 @@ class WorldView(Follows["StepReport"], Widget):
         self._strips: dict[int, Strip] = {}
 
     def on_resize(self, event: events.Resize) -> None:
+        """Repaint the world at the new size (two pixel rows per terminal row)."""
         self._repaint()
 
     def show(self, value: StepReport) -> None:
@@ -75,6 +82,7 @@ class WorldView(Follows["StepReport"], Widget):
         self.frames += 1
         self.refresh()
 
+    @override
     def render_line(self, y: int) -> Strip:
         strip = self._strips.get(y)
         if strip is not None:
