@@ -35,6 +35,8 @@ class ToolArgumentParser(argparse.ArgumentParser):
             (self.env.stderr if file is sys.stderr else self.env.stdout).write(message)
 
     def exit(self, status: int = 0, message: str | None = None) -> NoReturn:
+        """Raise instead of exiting: `HelpShown` after ``--help`` (status 0), else `CommandError`
+        with argparse's status, its message already written to the environment's stderr."""
         if message:
             self.env.stderr.write(message)
         if status == 0:
@@ -42,4 +44,5 @@ class ToolArgumentParser(argparse.ArgumentParser):
         raise CommandError("", status)
 
     def parse(self, argv: list[str]) -> Any:
+        """``argv`` parsed into a namespace; raises as `exit` does on a usage error."""
         return self.parse_args(argv)

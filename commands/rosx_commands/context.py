@@ -51,10 +51,12 @@ class Environment:
 
     @property
     def stdout_isatty(self) -> bool:
+        """Whether stdout is a terminal (colours and live redraws only then)."""
         return is_terminal(self.stdout)
 
     @property
     def stderr_isatty(self) -> bool:
+        """Whether stderr is a terminal."""
         return is_terminal(self.stderr)
 
     @property

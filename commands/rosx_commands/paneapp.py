@@ -6,12 +6,18 @@ this app around the pane, quitting on ``q`` and Ctrl-C as every rosx terminal UI
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, ClassVar, Generic, TypeVar
 
 from textual.app import App  # noqa: TID253 - TUI code
 from textual.widget import Widget  # noqa: TID253 - TUI code
 
 from rosx_turtle.tui.quit import QUIT_BINDINGS, QuitFooter
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -31,6 +37,7 @@ class PaneApp(App[int], Generic[PaneT]):
         super().__init__()
         self.pane = pane
 
+    @override
     def compose(self) -> ComposeResult:
         yield self.pane
         yield QuitFooter()

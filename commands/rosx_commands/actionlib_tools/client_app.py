@@ -14,6 +14,7 @@ held while the screen is busy).
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from rich.text import Text
@@ -24,6 +25,11 @@ from textual.widgets import Button, Static, TextArea  # noqa: TID253 - TUI code
 
 from rosx_commands.actionlib_tools.forms import FormError, from_yaml, status_look, to_yaml
 from rosx_commands.paneapp import PaneApp
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -87,6 +93,7 @@ class ClientPane(Vertical):
         self.connected = False
         self.pursuing = False
 
+    @override
     def compose(self) -> ComposeResult:
         yield Static(f"{self.action_name} - {self.types.name} - GUI Client", id="title")
         goal = TextArea(to_yaml(self.types.goal()), id="goal", language=None)
@@ -105,6 +112,8 @@ class ClientPane(Vertical):
         yield Static(id="server")
 
     def on_mount(self) -> None:
+        """Show "No Goal" and "Disconnected", focus the goal editor, and ask whether the server
+        is up now and every `SERVER_CHECK` seconds."""
         self._show("#status", "No Goal", _RED)
         self._show("#server", "Disconnected from server.", _RED)
         self.query_one("#goal", TextArea).focus()
@@ -125,6 +134,7 @@ class ClientPane(Vertical):
         self.run_worker(job, thread=True, exclusive=True, group="server")
 
     def on_client_pane_server(self, message: Server) -> None:
+        """Show whether the action server is connected; SEND GOAL is enabled only while it is."""
         self.connected = up = message.up
         if up:
             self._show("#server", "Connected to server", "rgb(192,252,253)")
@@ -135,6 +145,8 @@ class ClientPane(Vertical):
     # -- the goal ------------------------------------------------------------------------------
 
     def action_send_goal(self) -> None:
+        """Ctrl+S: send the goal editor's YAML as a goal; a form error goes on the status line
+        instead. Does nothing while the server is not connected."""
         if not self.connected:
             return
         try:
@@ -148,12 +160,14 @@ class ClientPane(Vertical):
         self.client.send_goal(goal, self._done, self._active, self._feedback)
 
     def action_cancel_goal(self) -> None:
+        """Ctrl+X: ask the server to cancel the goal being pursued (axclient's CANCEL GOAL)."""
         if not self.pursuing:
             return
         self.client.cancel_goal()
         self._show("#status", "Canceling goal", "rgb(211,34,243)")
 
     def on_button_pressed(self, event: Button.Pressed) -> None:
+        """The SEND GOAL and CANCEL GOAL buttons do what Ctrl+S and Ctrl+X do."""
         if event.button.id == "send":
             self.action_send_goal()
         elif event.button.id == "cancel":
@@ -174,6 +188,8 @@ class ClientPane(Vertical):
         self.post_message(self.Update(None, feedback=to_yaml(feedback)))
 
     def on_client_pane_update(self, update: Update) -> None:
+        """Show feedback, result and status from the client's callbacks (which run on its
+        threads); CANCEL GOAL is disabled once the goal is done."""
         if update.feedback is not None:
             self.query_one("#feedback", TextArea).text = update.feedback
         if update.result is not None:

@@ -12,6 +12,7 @@ screen as messages.
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from rich.text import Text
@@ -23,6 +24,11 @@ from textual.widgets import Button, Static, TextArea  # noqa: TID253 - TUI code
 from rosx_commands.actionlib_tools.forms import FormError, from_yaml, to_yaml
 from rosx_commands.actionlib_tools.standin import ABORT, PREEMPT, SEND_FEEDBACK, SUCCEED
 from rosx_commands.paneapp import PaneApp
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -78,6 +84,7 @@ class ServerPane(Vertical):
         self.standin: Standin | None = None
         self.holding = False
 
+    @override
     def compose(self) -> ComposeResult:
         yield Static(f"{self.action_name} - {self.types.name} - Standin", id="title")
         goal = TextArea("", id="goal", read_only=True)
@@ -103,6 +110,7 @@ class ServerPane(Vertical):
         self.post_message(self.Event(kind, goal))
 
     def on_mount(self) -> None:
+        """Show the stand-in as idle, its decision buttons disabled."""
         self._state("idle", None)
 
     def _state(self, kind: str, goal: Any) -> None:
@@ -116,9 +124,12 @@ class ServerPane(Vertical):
         self.query_one("#goal", TextArea).text = to_yaml(goal) if self.holding else ""
 
     def on_server_pane_event(self, event: Event) -> None:
+        """Show a goal's arrival or end, reported by the stand-in from its thread."""
         self._state(event.kind, event.goal)
 
     def action_decide(self, kind: str) -> None:
+        """Answer the held goal with ``kind`` (feedback, succeed, abort or preempt), sending the
+        editor's feedback or result; a form error goes on the status line and nothing is sent."""
         if not self.holding or self.standin is None:
             return
         message = None
@@ -136,6 +147,7 @@ class ServerPane(Vertical):
         self.standin.decide(kind, message)
 
     def on_button_pressed(self, event: Button.Pressed) -> None:
+        """The decision buttons do what their keys do (``do-<kind>`` ids)."""
         if event.button.id is not None:
             self.action_decide(event.button.id.removeprefix("do-"))
 

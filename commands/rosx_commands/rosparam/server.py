@@ -41,9 +41,11 @@ class ParamServer:
         return self.master.call("getParam", name)
 
     def names(self) -> list[str]:
+        """Every parameter's full name (``getParamNames``)."""
         return [str(name) for name in self.master.call("getParamNames")]
 
     def delete(self, name: str) -> None:
+        """Delete ``name`` (``deleteParam``); `MasterError` when it is not set."""
         self.master.call("deleteParam", name)
 
     def replace_root(self) -> None:

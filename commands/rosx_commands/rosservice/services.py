@@ -33,6 +33,8 @@ class Services:
 
     @property
     def store(self) -> TypeStore:
+        """The type store of this environment's package path, made on first use (typed commands
+        only)."""
         if self._store is None:
             from rosx.msg.store import TypeStore  # noqa: PLC0415 - only for typed commands
 

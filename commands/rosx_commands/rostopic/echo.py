@@ -144,6 +144,8 @@ class Printer:
         self._path_error, self._now = FieldPathError, clock or now
 
     def __call__(self, msg: object) -> None:
+        """Print ``msg`` if it passes the filter, until ``max_count`` are printed; sets ``done``
+        then, when stdout is closed, or when printing fails (the error on stderr)."""
         if self.message_filter is not None and not self.message_filter(msg, self.topic):
             return
         if self.max_count is not None and self.count >= self.max_count:

@@ -187,6 +187,8 @@ class MessageFilter:
         return cls(env, expression, code)
 
     def __call__(self, msg: object, topic: str) -> bool:
+        """Whether ``--filter``'s expression is true for ``msg`` on ``topic``; an expression that
+        raises counts as false, reported once on stderr."""
         try:
             return bool(eval(self.code, {"m": msg, "topic": topic}))
         except Exception as error:

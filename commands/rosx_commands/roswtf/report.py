@@ -46,6 +46,7 @@ class Findings:
             self.check(level, message, check())
 
     def clear(self) -> None:
+        """Forget the warnings and errors found so far."""
         self.warnings.clear()
         self.errors.clear()
 

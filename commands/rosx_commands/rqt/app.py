@@ -8,6 +8,7 @@ or ``ctrl+c`` quit.
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, ClassVar
 
 from rich.text import Text
@@ -17,6 +18,11 @@ from textual.widgets import Static, TabbedContent, TabPane  # noqa: TID253 - TUI
 
 from rosx_commands.rqt.tabs import TABS, Tab
 from rosx_turtle.tui.quit import QuitFooter
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -47,6 +53,7 @@ class RqtApp(App[int]):
         self.first = first or self.tabs[0].name
         self.built: dict[str, object] = {}
 
+    @override
     def compose(self) -> ComposeResult:
         with TabbedContent(initial=f"tab-{self.first}"):
             for tab in self.tabs:
@@ -54,9 +61,11 @@ class RqtApp(App[int]):
         yield QuitFooter()
 
     def on_mount(self) -> None:
+        """Build the first tab's plugin; the others are built when first shown."""
         self._build(self.first)
 
     def on_tabbed_content_tab_activated(self, event: TabbedContent.TabActivated) -> None:
+        """Build the activated tab's plugin on first showing."""
         self._build((event.pane.id or "tab-").removeprefix("tab-"))
 
     def _build(self, name: str) -> None:
@@ -80,10 +89,12 @@ class RqtApp(App[int]):
         return self.query_one(TabbedContent).active.removeprefix("tab-")
 
     def action_show_tab(self, index: int) -> None:
+        """F1..F9: show the ``index``-th tab (counting from 0); out of range does nothing."""
         if 0 <= index < len(self.tabs):
             self.query_one(TabbedContent).active = f"tab-{self.tabs[index].name}"
 
     def action_next_tab(self, step: int) -> None:
+        """Ctrl+PageDown/PageUp: show the tab ``step`` away, wrapping around."""
         names = [t.name for t in self.tabs]
         self.action_show_tab((names.index(self.active) + step) % len(names))
 

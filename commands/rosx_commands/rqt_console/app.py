@@ -15,6 +15,7 @@ table follows new entries again). ``q`` or Ctrl-C quit.
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from rich.text import Text
@@ -34,6 +35,11 @@ from rosx_commands.rqt_console.model import (
     details,
 )
 from rosx_commands.rqt_console.table import LogTable
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -94,6 +100,7 @@ class ConsolePane(Vertical):
         self._editing: Kind | None = None
         self._waiting = 0
 
+    @override
     def compose(self) -> ComposeResult:
         yield Static(id="status")
         yield LogTable(self.entries, id="table")
@@ -102,9 +109,12 @@ class ConsolePane(Vertical):
 
     @property
     def table(self) -> LogTable:
+        """The message table."""
         return self.query_one(LogTable)
 
     def on_mount(self) -> None:
+        """Focus the table and start the source on a worker thread; new entries are taken in
+        every ``period`` seconds."""
         self.table.focus()
         self._status()
         self.run_worker(self._start, thread=True, group="source")
@@ -161,6 +171,7 @@ class ConsolePane(Vertical):
         self.query_one("#status", Static).update(Text(text))
 
     def on_log_table_selected(self, message: LogTable.Selected) -> None:
+        """Show the selected row's message in full below the table."""
         self._details(message.row)
 
     def _details(self, row: int | None) -> None:
@@ -170,12 +181,15 @@ class ConsolePane(Vertical):
             panel.update(Text(details(self.entries.shown(row))))
 
     def key_escape(self) -> None:
+        """Escape closes the rule line if it is open, else clears the selection."""
         if self._editing is not None:
             self._close_rule()
         else:
             self.table.select(None)
 
     def action_pause(self) -> None:
+        """P or space: pause or resume taking in entries; those arriving meanwhile wait in the
+        inbox."""
         self.paused = not self.paused
         self._waiting = len(self.source.inbox)
         self._status()
@@ -183,12 +197,14 @@ class ConsolePane(Vertical):
             self.ingest()
 
     def action_clear(self) -> None:
+        """C: drop every entry shown so far (rules stay)."""
         self.entries.clear()
         self.table.select(None)
         self.table.refresh_rows()
         self._status()
 
     def action_edit_rule(self, kind: str) -> None:
+        """I, X or H: open the rule line for an include, exclude or highlight rule of ``kind``."""
         which = Kind(kind)
         self._editing = which
         line = self.query_one("#rule", Input)
@@ -198,6 +214,7 @@ class ConsolePane(Vertical):
         line.focus()
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
+        """Add the typed rule; a bad one leaves the line open with the error on the status line."""
         kind = self._editing
         if kind is None:
             return
@@ -211,9 +228,11 @@ class ConsolePane(Vertical):
         self.add_rule(rule)
 
     def add_rule(self, rule: Rule) -> None:
+        """Add ``rule`` after the others and filter the entries again."""
         self.set_rules(self.entries.rules.with_rule(rule))
 
     def set_rules(self, rules: Rules) -> None:
+        """Use ``rules`` from now on, refiltering every entry and keeping the selection in range."""
         self.error = None
         self.entries.set_rules(rules)
         self.table.refresh_rows()
@@ -221,9 +240,11 @@ class ConsolePane(Vertical):
         self._status()
 
     def action_drop_rule(self) -> None:
+        """U: drop the last rule added."""
         self.set_rules(Rules(self.entries.rules.rules[:-1]))
 
     def action_clear_rules(self) -> None:
+        """R: drop every rule."""
         self.set_rules(self.entries.rules.without())
 
     def _close_rule(self) -> None:
@@ -232,6 +253,7 @@ class ConsolePane(Vertical):
         self.table.focus()
 
     def on_unmount(self) -> None:
+        """Close the source (its node), so no entries arrive for a closed pane."""
         self.source.close()
 
 

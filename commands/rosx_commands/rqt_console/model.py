@@ -49,6 +49,7 @@ class Entry:
 
     @property
     def severity(self) -> str:
+        """The severity's name as rqt_console shows it (``Warn``), or the number if unknown."""
         return SEVERITIES.get(self.level, str(self.level))
 
     def repeats(self, other: Entry) -> bool:
@@ -115,6 +116,8 @@ class Rule:
         return cls(kind, name, pattern, regex=regex)
 
     def matches(self, entry: Entry) -> bool:
+        """Whether ``entry`` matches: its severity among ``levels``, or the pattern found in the
+        field."""
         if self.subject == "severity":
             return entry.level in self.levels
         regex = self.regex
@@ -154,6 +157,7 @@ class Rules:
     rules: tuple[Rule, ...] = ()
 
     def with_rule(self, rule: Rule) -> Rules:
+        """These rules with ``rule`` added last (rules are immutable)."""
         return Rules((*self.rules, rule))
 
     def without(self, kind: Kind | None = None) -> Rules:
@@ -161,6 +165,7 @@ class Rules:
         return Rules(tuple(r for r in self.rules if kind is not None and r.kind is not kind))
 
     def of(self, kind: Kind) -> tuple[Rule, ...]:
+        """The rules of ``kind``, in the order added."""
         return tuple(r for r in self.rules if r.kind is kind)
 
     def shows(self, entry: Entry) -> bool:
@@ -172,6 +177,7 @@ class Rules:
         return not any(rule.matches(entry) for rule in self.of(Kind.EXCLUDE))
 
     def highlights(self, entry: Entry) -> bool:
+        """Whether a highlight rule matches ``entry``."""
         return any(rule.matches(entry) for rule in self.of(Kind.HIGHLIGHT))
 
     def matcher(self) -> Callable[[Entry], bool]:
@@ -210,6 +216,7 @@ class Log:
 
     @property
     def shown_count(self) -> int:
+        """How many entries pass the rules."""
         return len(self._shown)
 
     def shown(self, row: int) -> Entry:

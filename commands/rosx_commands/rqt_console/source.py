@@ -33,6 +33,8 @@ class Inbox:
         self._topics: dict[tuple[str, ...], tuple[str, ...]] = {}
 
     def put(self, entry: Entry) -> None:
+        """Queue ``entry`` from any thread; when the inbox is full the oldest is dropped and
+        counted in ``overflow``."""
         with self._lock:
             if len(self._waiting) == self._waiting.maxlen:
                 self.overflow += 1
@@ -75,7 +77,8 @@ class ConsoleSource(Protocol):
         """Start receiving; what the status line says about it. Raises on failure."""
         ...
 
-    def close(self) -> None: ...
+    def close(self) -> None:
+        """Stop receiving; the inbox keeps what it holds."""
 
 
 class LiveSource:
@@ -88,6 +91,8 @@ class LiveSource:
         self._node: Any = None
 
     def start(self) -> str:
+        """Subscribe to ``/rosout_agg`` with an anonymous ``rqt_console`` node; returns the
+        status line's text. Raises when the master cannot be reached."""
         from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
         from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415 - name rules load only when used
         from rosx.node import Node  # noqa: PLC0415 - the node runtime loads with the first node
@@ -103,6 +108,7 @@ class LiveSource:
         return f"{TOPIC} at {self.uri}"
 
     def close(self) -> None:
+        """Shut the node down; calling it again does nothing."""
         if self._node is not None:
             self._node.shutdown("rqt_console closed")
             self._node = None

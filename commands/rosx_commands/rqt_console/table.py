@@ -12,6 +12,7 @@ that, ``end`` resumes it.
 
 from __future__ import annotations
 
+import sys
 from typing import ClassVar
 
 from rich.segment import Segment
@@ -23,6 +24,11 @@ from textual.scroll_view import ScrollView  # noqa: TID253 - TUI code
 from textual.strip import Strip  # noqa: TID253 - TUI code
 
 from rosx_commands.rqt_console.model import Entry, Log, Rules, clock_text
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 SEVERITY_STYLES = {
     1: Style(color="bright_black"),
@@ -108,6 +114,7 @@ class LogTable(ScrollView, can_focus=True):
 
     @property
     def rules(self) -> Rules:
+        """The rules in force (the log's)."""
         return self.entries.rules
 
     def refresh_rows(self) -> None:
@@ -126,9 +133,12 @@ class LogTable(ScrollView, can_focus=True):
             self.scroll_end(animate=False, immediate=True, x_axis=False)
 
     def on_resize(self) -> None:
+        """Fit the scroll area to the new size, keeping the cursor in range."""
         self.refresh_rows()
 
     def select(self, row: int | None) -> None:
+        """Put the cursor on ``row`` (clamped; None clears it), scroll it into view and post
+        `Selected`; the table follows new entries while the cursor is on the last row or none."""
         count = self.entries.shown_count
         if row is not None:
             row = min(max(row, 0), count - 1) if count else None
@@ -145,15 +155,19 @@ class LogTable(ScrollView, can_focus=True):
         self.post_message(self.Selected(row))
 
     def action_move(self, step: int) -> None:
+        """Up/Down/PageUp/PageDown: move the cursor ``step`` rows; with no cursor, start at an
+        end."""
         if self.cursor is None:
             self.select(self.entries.shown_count - 1 if step < 0 else 0)
         else:
             self.select(self.cursor + step)
 
     def action_first(self) -> None:
+        """Home: select the first row."""
         self.select(0)
 
     def action_last(self) -> None:
+        """End: select the last row (and follow new entries)."""
         self.select(self.entries.shown_count - 1)
 
     def visible_text(self) -> list[str]:
@@ -161,6 +175,7 @@ class LogTable(ScrollView, can_focus=True):
         height = self.scrollable_content_region.height
         return [self.render_line(y).text.rstrip() for y in range(height)]
 
+    @override
     def render_line(self, y: int) -> Strip:
         width = self.scrollable_content_region.width
         base = self.rich_style

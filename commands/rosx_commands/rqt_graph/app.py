@@ -17,6 +17,7 @@ namespace groups, ``d`` toggles hiding debug names; ``q`` or ``ctrl+c`` quit.
 from __future__ import annotations
 
 import dataclasses
+import sys
 import time
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
@@ -35,6 +36,11 @@ from rosx.graph.view import Changes, Kind, ViewGraph, changes, vanished, with_gh
 from rosx_commands.paneapp import PaneApp
 from rosx_commands.rqt_graph.source import CALLER_ID, REFRESH_PERIOD, GraphSource, LiveSource
 from rosx_commands.rqt_graph.view import GraphView, Marks
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 _MODES = list(Mode)
 #: Seconds the last changes stay marked (what vanished drawn as gone) on an unchanged graph.
@@ -113,8 +119,10 @@ class GraphPane(Vertical):
 
     @property
     def changes(self) -> Changes:
+        """What the last refresh changed (marked in the drawing until they age out)."""
         return self.history.changes
 
+    @override
     def compose(self) -> ComposeResult:
         yield Static(id="status")
         with Horizontal():
@@ -124,6 +132,7 @@ class GraphPane(Vertical):
         yield Input(id="filter")
 
     def on_mount(self) -> None:
+        """Focus the drawing and fetch the graph now, then every ``period`` seconds."""
         self.query_one(GraphView).focus()
         self._status()
         self.action_refresh_graph()
@@ -137,6 +146,7 @@ class GraphPane(Vertical):
             self.action_refresh_graph()
 
     def action_refresh_graph(self) -> None:
+        """R: fetch the graph again on a worker thread, replacing a fetch still under way."""
         self.run_worker(self._refresh, thread=True, exclusive=True, group="refresh")
 
     def _refresh(self) -> None:
@@ -182,6 +192,8 @@ class GraphPane(Vertical):
         self.query_one("#status", Static).update(Text(text))
 
     def action_select(self, step: int) -> None:
+        """Tab/Shift+Tab: select the next or previous box, left to right then top to bottom, and
+        show its details; ignored while a filter line is open."""
         if self._editing:
             return
         boxes = self.drawing.boxes
@@ -216,13 +228,17 @@ class GraphPane(Vertical):
             self.query_one("#info", Static).update(Text(text))
 
     def action_next_mode(self) -> None:
+        """M: the next of rqt_graph's modes (nodes only, nodes/topics active, nodes/topics all)."""
         mode = _MODES[(_MODES.index(self.options.mode) + 1) % len(_MODES)]
         self._set_options(dataclasses.replace(self.options, mode=mode))
 
     def action_toggle_debug(self) -> None:
+        """D: show or hide the debug nodes and topics (``/rosout``, rqt's own), as rqt_graph's
+        "Hide Debug" checkbox."""
         self._set_options(dataclasses.replace(self.options, hide_debug=not self.options.hide_debug))
 
     def action_next_group_depth(self) -> None:
+        """G: group by one more namespace level, back to none after `MAX_GROUP_DEPTH`."""
         depth = (self.options.group_depth + 1) % (MAX_GROUP_DEPTH + 1)
         self._set_options(dataclasses.replace(self.options, group_depth=depth))
 
@@ -237,6 +253,8 @@ class GraphPane(Vertical):
         line.focus()
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
+        """Apply the typed node or topic filter; a bad pattern leaves the line open with the
+        error."""
         which, text = self._editing, event.value.strip() or "/"
         if which is None:
             return
@@ -253,6 +271,8 @@ class GraphPane(Vertical):
             self._set_options(dataclasses.replace(self.options, topic_filter=text))
 
     def key_escape(self) -> None:
+        """Escape closes the filter line if open, else drops the selection (the drawing widens
+        again)."""
         if self._editing:
             self._close_filter()
         elif self.selected:
@@ -273,6 +293,7 @@ class GraphPane(Vertical):
         self.action_refresh_graph()
 
     def on_unmount(self) -> None:
+        """Close the source (its rate node, if any)."""
         self.source.close()
 
 
@@ -283,18 +304,22 @@ class GraphApp(PaneApp[GraphPane]):
 
     @property
     def drawing(self) -> Drawing:
+        """The pane's current drawing (for tests and snapshots)."""
         return self.pane.drawing
 
     @property
     def selected(self) -> str | None:
+        """The id of the selected box, or None."""
         return self.pane.selected
 
     @property
     def options(self) -> GraphOptions:
+        """The pane's graph options (mode, filters, grouping)."""
         return self.pane.options
 
     @property
     def graph(self) -> ViewGraph | None:
+        """The graph last fetched, or None before the first fetch."""
         return self.pane.graph
 
 

@@ -23,13 +23,18 @@ REFRESH_PERIOD = 1.5
 class GraphSource(Protocol):
     """Where the live view gets its graph and details (`LiveSource`, or a test's)."""
 
-    def snapshot(self) -> GraphState: ...
+    def snapshot(self) -> GraphState:
+        """The master's registrations now (and the nodes' bus info when asked for); blocks on the
+        network."""
 
-    def describe(self, vertex: Vertex) -> str: ...
+    def describe(self, vertex: Vertex) -> str:
+        """What the details panel shows for ``vertex`` (``rosnode info``/``rostopic info`` text)."""
 
-    def rate(self, topic: str) -> str: ...
+    def rate(self, topic: str) -> str:
+        """A line with ``topic``'s average message rate."""
 
-    def close(self) -> None: ...
+    def close(self) -> None:
+        """Release the source's node and connections."""
 
 
 class RateCounter:
@@ -40,12 +45,15 @@ class RateCounter:
         self._stamps: list[float] = []
 
     def __call__(self, _message: object) -> None:
+        """Count one message's arrival; only the last 5 seconds' are kept."""
         now = time.monotonic()
         with self._lock:
             self._stamps.append(now)
             self._stamps = [t for t in self._stamps if now - t <= 5.0]
 
     def text(self) -> str:
+        """The average rate over the last 5 seconds, as rqt_graph's topic tooltip, or "no
+        messages yet"."""
         with self._lock:
             stamps = list(self._stamps)
         if len(stamps) < 2:
@@ -65,6 +73,7 @@ class LiveSource:
         self._counters: dict[str, RateCounter] = {}
 
     def snapshot(self) -> GraphState:
+        """The master's graph now, fetched as `rosx.graph.fetch.fetch_state` does (blocks)."""
         from rosx.graph.fetch import fetch_state  # noqa: PLC0415 - graph code loads only when asked for
 
         return fetch_state(self.uri, self.caller_id, bus_info=self.bus_info)
@@ -96,6 +105,8 @@ class LiveSource:
             master.close()
 
     def rate(self, topic: str) -> str:
+        """``topic``'s average rate; the first call subscribes (starting a hidden node if
+        needed), so the rate builds up on later calls."""
         if topic not in self._counters:
             if self._node is None:
                 from rosx.names.anonymous import anonymous_node_name  # noqa: PLC0415 - name rules load only when used
@@ -110,6 +121,7 @@ class LiveSource:
         return self._counters[topic].text()
 
     def close(self) -> None:
+        """Shut the hidden rate node down, if one was started."""
         if self._node is not None:
             self._node.shutdown("rqt_graph closed")
             self._node = None

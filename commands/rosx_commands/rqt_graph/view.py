@@ -8,6 +8,7 @@ API). Panning costs the rows on screen, whatever the size of the graph.
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
@@ -19,6 +20,11 @@ from textual.strip import Strip  # noqa: TID253 - TUI code
 
 from rosx.graph.text import Box, Drawing, Stretch
 from rosx.graph.view import Changes, Edge
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 NODE = Style(color="cyan")
 FRAME = Style(dim=True)
@@ -51,6 +57,8 @@ class GraphView(ScrollView, can_focus=True):
         self._shown: tuple[object, ...] | None = None
 
     def show(self, drawing: Drawing, marks: Marks) -> None:
+        """Draw ``drawing`` with ``marks`` (selection, changes), scrolling the selected box into
+        view; a refresh that found the same graph does nothing."""
         shown = (drawing.lines, drawing.boxes, marks)
         if shown == self._shown:
             return  # a refresh that found the same graph: nothing to redraw
@@ -67,6 +75,7 @@ class GraphView(ScrollView, can_focus=True):
         """The characters on screen, row by row (for tests and for copying)."""
         return [self.render_line(y).text for y in range(self.scrollable_content_region.height)]
 
+    @override
     def render_line(self, y: int) -> Strip:
         scroll_x, scroll_y = self.scroll_offset
         row = scroll_y + y

@@ -11,6 +11,7 @@ shows in full on the status line. ``r`` reads the nodes again; tab moves between
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from rich.text import Text
@@ -22,6 +23,11 @@ from textual.widgets.option_list import Option  # noqa: TID253 - TUI code
 from rosx_commands.errors import error_line
 from rosx_commands.paneapp import PaneApp
 from rosx_commands.rqt_logger_level.source import LEVELS, LiveSource
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -52,6 +58,7 @@ class LevelPane(Vertical):
         self.error: str | None = None
         self.note = "reading the nodes…"
 
+    @override
     def compose(self) -> ComposeResult:
         yield Static(id="status")
         with Horizontal():
@@ -66,6 +73,7 @@ class LevelPane(Vertical):
             yield levels
 
     def on_mount(self) -> None:
+        """Focus the node list and fetch the nodes."""
         self.query_one("#nodes", OptionList).focus()
         self._status()
         self.action_refresh_nodes()
@@ -95,6 +103,8 @@ class LevelPane(Vertical):
         self._status()
 
     def action_refresh_nodes(self) -> None:
+        """R: fetch again the nodes that serve the logger services, on a worker thread."""
+
         def job() -> None:
             try:
                 nodes = self.source.nodes()
@@ -164,6 +174,8 @@ class LevelPane(Vertical):
             levels.highlighted = LEVELS.index(current)
 
     def on_option_list_option_highlighted(self, event: OptionList.OptionHighlighted) -> None:
+        """Moving in the node list loads that node's loggers; in the logger list, marks its
+        level."""
         which = event.option_list.id
         if which == "nodes":
             node = self.node_names[event.option_index]
@@ -177,6 +189,8 @@ class LevelPane(Vertical):
             self._status()
 
     def on_option_list_option_selected(self, event: OptionList.OptionSelected) -> None:
+        """Enter moves on from nodes to loggers to levels; on a level, sets the highlighted
+        logger to it."""
         which = event.option_list.id
         if which == "nodes":
             self.query_one("#loggers", OptionList).focus()
@@ -208,6 +222,7 @@ class LevelPane(Vertical):
         self._show_loggers(node, loggers)
 
     def on_unmount(self) -> None:
+        """Close the source (its master connection)."""
         self.source.close()
 
 

@@ -41,7 +41,8 @@ class LevelSource(Protocol):
         """Set ``logger`` of ``node`` to ``level`` (a name of `LEVELS`)."""
         ...
 
-    def close(self) -> None: ...
+    def close(self) -> None:
+        """Release the source's connections."""
 
 
 def level_nodes(services: Iterable[tuple[str, Sequence[str]]]) -> list[str]:
@@ -64,6 +65,7 @@ class LiveSource:
 
     @property
     def master(self) -> MasterClient:
+        """A client for the master at ``uri``, made on first use."""
         if self._master is None:
             from rosx.master.client import MasterClient  # noqa: PLC0415 - the master's code loads only to talk to one
 
@@ -71,15 +73,20 @@ class LiveSource:
         return self._master
 
     def nodes(self) -> list[str]:
+        """The nodes that serve both ``get_loggers`` and ``set_logger_level`` (rqt_logger_level's
+        list)."""
         from rosx.graph.state import registrations  # noqa: PLC0415 - as the master client
 
         return level_nodes(registrations(self.master).services.items())
 
     def loggers(self, node: str) -> list[tuple[str, str]]:
+        """``node``'s loggers and their levels in upper case, from its ``~get_loggers`` service."""
         response = self._call(node + GET_LOGGERS, "roscpp/GetLoggers")
         return [(logger.name, logger.level.upper()) for logger in response.loggers]
 
     def set_level(self, node: str, logger: str, level: str) -> None:
+        """Call ``node``'s ``~set_logger_level`` for ``logger``; the service takes the level in
+        lower case."""
         self._call(node + SET_LOGGER_LEVEL, "roscpp/SetLoggerLevel", logger, level.lower())
 
     def _call(self, service: str, type_name: str, *args: str) -> Any:
@@ -94,6 +101,7 @@ class LiveSource:
             client.close()
 
     def close(self) -> None:
+        """Close the master connection."""
         if self._master is not None:
             self._master.close()
             self._master = None

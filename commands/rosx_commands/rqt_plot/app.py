@@ -15,6 +15,7 @@ window; ``q`` or ``ctrl+c`` quit.
 from __future__ import annotations
 
 import itertools
+import sys
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, ClassVar
 
@@ -27,6 +28,11 @@ from textual.widgets.option_list import Option  # noqa: TID253 - TUI code
 
 from rosx_commands.paneapp import PaneApp
 from rosx_commands.rqt_plot.series import Series, SeriesError, envelope, expand_args
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -94,6 +100,7 @@ class PlotPane(Vertical):
         self._shown: tuple[object, ...] | None = None
         self.frames = 0  # how often the plot was drawn (tests and the bench look)
 
+    @override
     def compose(self) -> ComposeResult:
         from textual_plot import PlotWidget  # textual-plot only once a plot is drawn
 
@@ -106,11 +113,14 @@ class PlotPane(Vertical):
 
     @property
     def plot(self) -> PlotWidget:
+        """The plot widget (textual-plot's)."""
         from textual_plot import PlotWidget  # textual-plot only once a plot is drawn
 
         return self.query_one("#plot", PlotWidget)
 
     def on_mount(self) -> None:
+        """Lay the plot out, add the series given on the command line, and start redrawing at the
+        settings' frame rate and retrying unpublished topics every `RETRY_PERIOD` seconds."""
         self.plot.margin_left = 8
         self.plot.margin_top = 0
         self.plot.margin_bottom = 2
@@ -183,6 +193,8 @@ class PlotPane(Vertical):
         self._say(error_line(error))
 
     def remove_series(self, name: str) -> None:
+        """Remove the series called ``name`` and unsubscribe from it on a worker thread; unknown
+        names are ignored."""
         series = next((s for s in self.series if s.name == name), None)
         if series is None:
             return
@@ -197,18 +209,21 @@ class PlotPane(Vertical):
     # -- actions -----------------------------------------------------------------------------
 
     def action_add(self) -> None:
+        """A: open the line to type a series to add (``/topic/field``)."""
         line = self.query_one("#add", Input)
         line.value = ""
         line.add_class("editing")
         line.focus()
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
+        """Add the typed series, if any, and close the line."""
         event.stop()
         self._close_entry()
         if event.value.strip():
             self.add_series(event.value.strip())
 
     def key_escape(self) -> None:
+        """Escape closes the add line."""
         self._close_entry()
 
     def _close_entry(self) -> None:
@@ -216,20 +231,24 @@ class PlotPane(Vertical):
         self.query_one("#legend", OptionList).focus()
 
     def action_remove(self) -> None:
+        """X or Delete: remove the series highlighted in the legend."""
         legend = self.query_one("#legend", OptionList)
         if legend.highlighted is not None and legend.highlighted < len(self.series):
             self.remove_series(self.series[legend.highlighted].name)
 
     def action_pause(self) -> None:
+        """Space: pause or resume the plot; samples keep arriving meanwhile."""
         self.settings.paused = not self.settings.paused
         self._shown = None
         self._status()
 
     def action_clear(self) -> None:
+        """C: drop every series' samples."""
         for series in self.series:
             series.clear()
 
     def action_autoscale(self) -> None:
+        """S: fix the y axis at the current range, or go back to autoscaling."""
         settings = self.settings
         if settings.ymin is None or settings.ymax is None:
             plot = self.plot
@@ -240,6 +259,7 @@ class PlotPane(Vertical):
         self._status()
 
     def action_window(self, step: int) -> None:
+        """[ and ]: the previous or next time window of `WINDOWS`."""
         window = self.settings.window
         if step > 0:
             self.settings.window = next((w for w in WINDOWS if w > window), WINDOWS[-1])
@@ -321,6 +341,7 @@ class PlotPane(Vertical):
         self._status()
 
     def on_unmount(self) -> None:
+        """Close the feed (its node)."""
         self.feed.close()
 
 

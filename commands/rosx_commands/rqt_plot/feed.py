@@ -42,9 +42,11 @@ class PlotFeed(Protocol):
         Raises `SeriesError` for a name that cannot be plotted."""
         ...
 
-    def detach(self, series: Series) -> None: ...
+    def detach(self, series: Series) -> None:
+        """Stop feeding ``series``."""
 
-    def close(self) -> None: ...
+    def close(self) -> None:
+        """Release the feed's node."""
 
 
 class LiveFeed(ToolNode):
@@ -58,9 +60,13 @@ class LiveFeed(ToolNode):
         self._lock = threading.Lock()
 
     def now(self) -> float:
+        """Seconds since the plot started: the right edge of the time window."""
         return self._clock() - self._start
 
     def attach(self, series: Series) -> bool:
+        """Subscribe ``series``'s topic and append its field's value per message; False while the
+        topic is not published (try again later). Raises `SeriesError` for a name that cannot be
+        plotted."""
         from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
         from rosx.msg.text.fieldpath import find_topic  # noqa: PLC0415 - the text forms load on first use
         from rosx.names.script import ros_namespace, script_resolve_name  # noqa: PLC0415 - name rules load only when used
@@ -99,6 +105,7 @@ class LiveFeed(ToolNode):
         return True
 
     def detach(self, series: Series) -> None:
+        """Unsubscribe ``series``; a series not attached is ignored."""
         with self._lock:
             subscriber = self._subscribers.pop(series, None)
         if subscriber is not None:

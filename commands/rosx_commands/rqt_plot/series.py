@@ -82,12 +82,14 @@ class Series:
             self.received += 1
 
     def clear(self) -> None:
+        """Drop every sample (the series stays, counting as changed)."""
         with self._lock:
             self._head = self._count = 0
             self.received += 1
 
     @property
     def latest(self) -> float | None:
+        """The newest value, or None if there is none."""
         with self._lock:
             if not self._count:
                 return None

@@ -8,6 +8,7 @@ thread; ``q`` or ``ctrl+c`` quit.
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 from rich.text import Text
@@ -16,6 +17,11 @@ from textual.widgets import Static, Tree  # noqa: TID253 - TUI code
 
 from rosx_commands.paneapp import PaneApp
 from rosx_commands.rqt_tf_tree.source import Row, tree_rows
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Sequence
@@ -69,6 +75,7 @@ class TfTreePane(Vertical):
         self.rows: list[Row] = []
         self.error: str | None = None
 
+    @override
     def compose(self) -> ComposeResult:
         tree: Tree[str] = Tree("frames", id="tf-frames")
         tree.show_root = False
@@ -78,9 +85,11 @@ class TfTreePane(Vertical):
 
     @property
     def frame_tree(self) -> Tree[str]:
+        """The tree of frames."""
         return self.query_one("#tf-frames", Tree)
 
     def on_mount(self) -> None:
+        """Focus the tree and read the frames now, then every `PERIOD` seconds."""
         self.frame_tree.focus()
         self.refresh_frames()
         if self.periodic:
@@ -88,6 +97,7 @@ class TfTreePane(Vertical):
         self._status()
 
     def refresh_frames(self) -> None:
+        """Read the frames on a worker thread, unless a read is still under way."""
         if not any(w.group == "frames" and w.is_running for w in self.workers):
             self.run_worker(self._read, thread=True, group="frames")
 
@@ -150,6 +160,7 @@ class TfTreePane(Vertical):
         self.query_one("#tf-status", Static).update(Text(text, no_wrap=True))
 
     def on_unmount(self) -> None:
+        """Close the source (its node)."""
         self.source.close()
 
 

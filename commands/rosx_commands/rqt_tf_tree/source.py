@@ -35,13 +35,15 @@ class Row(NamedTuple):
 class TfSource(Protocol):
     """Where the frames come from."""
 
-    def frames(self) -> Sequence[FrameInfo]: ...
+    def frames(self) -> Sequence[FrameInfo]:
+        """Every frame the buffer has heard of, with its parent, broadcaster, rate and delay."""
 
     def now(self) -> float:
         """ROS time in seconds, which the delays are measured from."""
         ...
 
-    def close(self) -> None: ...
+    def close(self) -> None:
+        """Release the source's node."""
 
 
 def tree_rows(frames: Sequence[FrameInfo], now: float) -> list[Row]:
@@ -95,6 +97,9 @@ class LiveTfSource(ToolNode):
         self._buffer: Buffer | None = None
 
     def frames(self) -> Sequence[FrameInfo]:
+        """The frames heard on ``/tf`` and ``/tf_static`` so far; the first call starts the
+        listener (under ``/use_sim_time``, on ``/clock``'s time), so frames appear from the next
+        call."""
         if self._buffer is None:
             from rosx.node.simtime import follow_sim_time  # noqa: PLC0415 - with the node runtime
             from rosx.tf import Buffer, TransformListener  # noqa: PLC0415 - tf code loads only when used

@@ -10,6 +10,7 @@ only while it is expanded. ``q`` or ``ctrl+c`` quit.
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, ClassVar
 
 from rich.text import Text
@@ -26,6 +27,11 @@ from rosx_commands.rqt_topic.monitor import (
     bytes_per_second,
     fields,
 )
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual.widgets.tree import TreeNode
@@ -48,6 +54,8 @@ class TopicTree(Tree[str]):
     ]
 
     def action_monitor(self) -> None:
+        """Space: start or stop monitoring the topic under the cursor (or the topic of the field
+        there)."""
         node = self.cursor_node
         while node is not None and node.parent is not None and node.parent is not self.root:
             node = node.parent
@@ -75,6 +83,7 @@ class TopicPane(Vertical):
         self.error: str | None = None
         self._rows: dict[str, TreeNode[str]] = {}
 
+    @override
     def compose(self) -> ComposeResult:
         yield Static(id="topic-header")
         tree = TopicTree("topics", id="topics")
@@ -85,9 +94,12 @@ class TopicPane(Vertical):
 
     @property
     def topic_tree(self) -> TopicTree:
+        """The tree of topics and, under monitored ones, their fields."""
         return self.query_one(TopicTree)
 
     def on_mount(self) -> None:
+        """Focus the tree and read the topics; refresh the list every `TOPICS_PERIOD` seconds and
+        the monitored readings every `READING_PERIOD`."""
         self.topic_tree.focus()
         self.refresh_topics()
         if self.periodic:
@@ -98,6 +110,7 @@ class TopicPane(Vertical):
     # -- the topic list ----------------------------------------------------------------------
 
     def refresh_topics(self) -> None:
+        """Read the published topics on a worker thread, unless a read is still under way."""
         if not any(w.group == "topics" and w.is_running for w in self.workers):
             self.run_worker(self._read_topics, thread=True, group="topics")
 
@@ -177,6 +190,7 @@ class TopicPane(Vertical):
         self._relabel()
 
     def on_tree_node_expanded(self, event: Tree.NodeExpanded[str]) -> None:
+        """Fill an expanded topic's fields from its latest message."""
         reading = self.readings.get(event.node.data or "")
         if event.node.parent is self.topic_tree.root and reading and reading.message is not None:
             _sync(event.node, fields(reading.message))
@@ -206,6 +220,7 @@ class TopicPane(Vertical):
         self.query_one("#topic-status", Static).update(Text(text, no_wrap=True))
 
     def on_unmount(self) -> None:
+        """Close the source (its node)."""
         self.source.close()
 
 

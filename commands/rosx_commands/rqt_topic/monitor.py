@@ -61,11 +61,14 @@ class TopicSource(Protocol):
         """Start counting ``topic``'s messages; may block."""
         ...
 
-    def unmonitor(self, topic: str) -> None: ...
+    def unmonitor(self, topic: str) -> None:
+        """Stop counting ``topic``'s messages."""
 
-    def reading(self, topic: str) -> Reading: ...
+    def reading(self, topic: str) -> Reading:
+        """``topic``'s bandwidth, rate, count and latest message so far (empty if not monitored)."""
 
-    def close(self) -> None: ...
+    def close(self) -> None:
+        """Release the source's node."""
 
 
 class _Monitored:
@@ -92,6 +95,8 @@ class LiveTopicSource(ToolNode):
         self._lock = threading.Lock()
 
     def topics(self) -> list[tuple[str, str]]:
+        """``(topic, type)`` of every topic with a publisher, sorted ("unknown type" when the
+        master has none); blocks on the master."""
         master = self.env.master(CALLER_ID)
         try:
             published = set(registrations(master).publishers)
@@ -101,6 +106,8 @@ class LiveTopicSource(ToolNode):
         return sorted((t, types.get(t, "unknown type")) for t in published)
 
     def monitor(self, topic: str, type_name: str) -> None:
+        """Subscribe to ``topic`` without decoding, counting rate, bandwidth and messages; a
+        topic already monitored is left alone."""
         with self._lock:
             if topic in self._monitored:
                 return
@@ -117,12 +124,14 @@ class LiveTopicSource(ToolNode):
         watched.subscriber = self._started().subscribe(topic, None, arrived)
 
     def unmonitor(self, topic: str) -> None:
+        """Unsubscribe from ``topic``; one not monitored is ignored."""
         with self._lock:
             watched = self._monitored.pop(topic, None)
         if watched is not None and watched.subscriber is not None:
             watched.subscriber.unregister()
 
     def reading(self, topic: str) -> Reading:
+        """``topic``'s readings now: bandwidth, rate, count, and the latest message decoded once."""
         watched = self._monitored.get(topic)
         if watched is None:
             return Reading()

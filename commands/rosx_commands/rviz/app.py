@@ -3,12 +3,18 @@ above a footer that names the tools and the quit key; ``q`` or Ctrl-C quit."""
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, ClassVar
 
 from textual.app import App  # noqa: TID253 - TUI code
 
 from rosx_commands.rviz.pane import RvizPane, RvizSettings
 from rosx_turtle.tui.quit import QUIT_BINDINGS, QuitFooter
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from textual.app import ComposeResult
@@ -35,6 +41,7 @@ class RvizApp(App[None]):
         super().__init__()
         self.pane = pane
 
+    @override
     def compose(self) -> ComposeResult:
         yield self.pane
         yield QuitFooter()
@@ -42,25 +49,31 @@ class RvizApp(App[None]):
     # What tests and the runner look at, through the pane.
     @property
     def manager(self) -> Manager:
+        """The pane's display manager (for tests and snapshots)."""
         return self.pane.manager
 
     @property
     def view(self) -> View:
+        """The pane's camera."""
         return self.pane.view
 
     @property
     def viewport(self) -> Viewport:
+        """The pane's 3D view widget."""
         return self.pane.viewport
 
     @property
     def panel(self) -> DisplaysPanel:
+        """The Displays panel."""
         return self.pane.panel
 
     @property
     def message(self) -> str:
+        """The status line's text now (e.g. "Waiting for the master ...")."""
         return self.pane.message
 
     def changed(self) -> None:
+        """Tell the pane that something arrived, as the source does (any thread)."""
         self.pane.changed()
 
 

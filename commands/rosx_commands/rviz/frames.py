@@ -38,6 +38,8 @@ class FixedFrame:
         self._answers: dict[tuple[str, int], Transform | str] = {}
 
     def set_fixed(self, fixed: str) -> None:
+        """Make ``fixed`` the fixed frame (a leading slash dropped); cached answers are
+        forgotten."""
         self.fixed = clean(fixed)
         self._answers.clear()
 
@@ -81,9 +83,11 @@ class FixedFrame:
         return self.core.frame_names()
 
     def parent(self, frame: str) -> str | None:
+        """``frame``'s parent in tf's tree, or None for a root or an unknown frame."""
         return self.core.parent_of(frame)
 
     def exists(self, frame: str) -> bool:
+        """Whether tf has heard of ``frame`` (a leading slash ignored)."""
         return self.core.frame_exists(clean(frame))
 
 

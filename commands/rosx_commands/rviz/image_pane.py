@@ -3,6 +3,7 @@ Displays panel (hidden while there is no Image display)."""
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 import numpy as np  # noqa: TID253 - TUI code
@@ -13,6 +14,11 @@ from textual.widget import Widget  # noqa: TID253 - TUI code
 from rosx_commands.rviz.cells import Cells
 from rosx_commands.rviz.displays.image import Image
 from rosx_commands.rviz.painter import Picture
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     import numpy.typing as npt
@@ -55,6 +61,8 @@ class ImagePane(Widget):
         return next((d for d in self.manager.displays if isinstance(d, Image) and d.enabled), None)
 
     def update_from(self) -> None:
+        """Show the first enabled Image display's picture fitted to the pane (hidden when there
+        is none); redraws only when the image, display or size changed."""
         with self.manager.lock:
             display = self._display()
             image = None if display is None else display.image
@@ -75,8 +83,10 @@ class ImagePane(Widget):
         self.refresh()
 
     def on_resize(self) -> None:
+        """Fit the image to the new size."""
         self.update_from()
 
+    @override
     def render_line(self, y: int) -> Strip:
         if y == 0 and self._strips:
             return Strip([Segment(self._title[: self.size.width])], self.size.width)

@@ -13,12 +13,18 @@ With ``/use_sim_time`` set (the robot simulator sets it), the tools stamp their 
 
 from __future__ import annotations
 
+import sys
 import threading
 import time
 from typing import TYPE_CHECKING, Any
 
 from rosx_commands.rviz.displays.robot_model import RobotModel
 from rosx_commands.toolnode import ToolNode
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -45,6 +51,7 @@ class LiveSource(ToolNode):
 
     @property
     def master_uri(self) -> str:
+        """The master this source talks to (shown while waiting for it)."""
         return self.env.master_uri
 
     def start(self, manager: Manager, changed: Callable[[], object]) -> None:
@@ -150,6 +157,7 @@ class LiveSource(ToolNode):
         """A parameter's value (None when unset)."""
         return self._started().params.get(name, None)
 
+    @override
     def close(self) -> None:
         if self.manager is not None:
             self.manager.frames.core.remove_listener(self.changed)

@@ -34,6 +34,7 @@ class Manager:
 
     @property
     def fixed_frame(self) -> str:
+        """The fixed frame's name, as tf keeps it."""
         return self.frames.fixed
 
     def set_fixed_frame(self, frame: str) -> None:
@@ -80,6 +81,7 @@ class Manager:
             return display
 
     def add(self, display: Display) -> None:
+        """Add ``display`` after the others (thread-safe); the view redraws."""
         with self.lock:
             self.displays.append(display)
             self._changes += 1

@@ -15,6 +15,7 @@ from __future__ import annotations
 import contextlib
 import itertools
 import math
+import sys
 import threading
 import time
 from dataclasses import dataclass
@@ -29,6 +30,11 @@ from rosx_commands.rviz.image_pane import ImagePane
 from rosx_commands.rviz.panel import DisplaysPanel
 from rosx_commands.rviz.viewport import Placing, Viewport
 from rosx_turtle.tui.feed import Feed
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -110,6 +116,7 @@ class RvizPane(Vertical):
         self.message = ""
         self._stopping = threading.Event()
 
+    @override
     def compose(self) -> ComposeResult:
         with Horizontal(id="body"):
             yield Viewport(
@@ -127,13 +134,17 @@ class RvizPane(Vertical):
 
     @property
     def viewport(self) -> Viewport:
+        """The 3D view widget."""
         return self.query_one(Viewport)
 
     @property
     def panel(self) -> DisplaysPanel:
+        """The Displays panel."""
         return self.query_one(DisplaysPanel)
 
     def on_mount(self) -> None:
+        """Focus the view, start the source on a worker thread (it waits for the master), and
+        expire old markers and clouds every `EXPIRY_PERIOD` seconds."""
         self.viewport.focus()
         self.run_worker(self._start, thread=True, name="rviz-start")
         self.set_interval(EXPIRY_PERIOD, self._expire)
@@ -180,20 +191,24 @@ class RvizPane(Vertical):
         self.query_one("#status", Static).update(text)
 
     def on_unmount(self) -> None:
+        """Stop waiting for the master and close the source (its node)."""
         self._stopping.set()
         self.source.close()
 
     # -- the panel ---------------------------------------------------------------------------
 
     def on_viewport_drawn(self, message: Viewport.Drawn) -> None:
+        """After each drawing, bring the Displays panel and the image pane up to date."""
         self.panel.follow = self.viewport.follow
         self.panel.update_from()
         self.query_one(ImagePane).update_from()
 
     def on_displays_panel_toggle(self, message: DisplaysPanel.Toggle) -> None:
+        """A click on a display's line in the panel toggles it, as its number key does."""
         self.action_toggle_display(message.index)
 
     def action_toggle_display(self, index: int) -> None:
+        """1..9: show or hide the ``index``-th display, resubscribing on a worker thread."""
         display = self.manager.toggle(index)
         if display is None:
             return
@@ -207,6 +222,8 @@ class RvizPane(Vertical):
         return next(tool for tool in self.tools if tool.word == word)
 
     def action_tool(self, word: str) -> None:
+        """G, P or C: take rviz's 2D Nav Goal, 2D Pose Estimate or Publish Point tool; the next
+        click (or Enter) places it."""
         tool = self._tool(word)
         viewport = self.viewport
         if viewport.tool is None or viewport.tool.word != word:
@@ -216,11 +233,13 @@ class RvizPane(Vertical):
         viewport.redraw()
 
     def action_drop_tool(self) -> None:
+        """Escape: put the tool down without publishing."""
         self.viewport.tool = None
         self.say("")
         self.viewport.redraw()
 
     def action_turn(self, direction: int) -> None:
+        """[ and ]: turn the tool's heading by `HEADING_STEP` (left for +1)."""
         self.heading = math.remainder(self.heading + direction * HEADING_STEP, math.tau)
         tool = self.viewport.tool
         if tool is not None and tool.heading:
@@ -228,6 +247,7 @@ class RvizPane(Vertical):
             self.viewport.redraw()
 
     def action_place(self) -> None:
+        """Enter: publish the tool's message at the view's centre."""
         tool = self.viewport.tool
         if tool is not None:
             self._publish(
@@ -235,6 +255,7 @@ class RvizPane(Vertical):
             )
 
     def on_viewport_placed(self, message: Viewport.Placed) -> None:
+        """Publish the tool's message where it was clicked (dragged for the heading)."""
         tool = self.viewport.tool
         if tool is not None:
             self._publish(tool.word, message.x, message.y, message.yaw if tool.heading else 0.0)
@@ -266,15 +287,18 @@ class RvizPane(Vertical):
         self.viewport.redraw()
 
     def action_pan(self, columns: int, rows: int) -> None:
+        """Arrow keys: pan the view by ``columns`` and ``rows`` cells; stops following a frame."""
         self.view.pan(-columns, -rows * 2)
         self.viewport.follow = None
         self._moved()
 
     def action_zoom(self, steps: int) -> None:
+        """+ and -: zoom in or out by ``steps``."""
         self.view.zoom(steps)
         self._moved()
 
     def action_reset_view(self) -> None:
+        """Home: back to the fixed frame's origin at the default reach; stops following a frame."""
         self.view.reset()
         self.viewport.follow = None
         self._moved()
@@ -293,6 +317,7 @@ class RvizPane(Vertical):
     # -- files -------------------------------------------------------------------------------
 
     def action_save(self) -> None:
+        """Ctrl+S: write the displays, view and tools to the config file (rviz's Save Config)."""
         from rosx_commands.rviz.save import save_config  # noqa: PLC0415 - this tool's parts load only when used
 
         path = self.settings.save_path
@@ -306,6 +331,7 @@ class RvizPane(Vertical):
         self.say(f"Saved {path}")
 
     def action_snapshot(self) -> None:
+        """O: write the view as a PNG in the snapshot folder, named by the time."""
         from rosx_commands.rviz.snapshot import write_png  # noqa: PLC0415 - this tool's parts load only when used
 
         stamp = time.strftime("%Y%m%d-%H%M%S")

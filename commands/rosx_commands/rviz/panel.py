@@ -86,9 +86,11 @@ class DisplaysPanel(Static):
         self._starts: list[int] = []
 
     def on_mount(self) -> None:
+        """Show the displays."""
         self.update_from()
 
     def on_resize(self) -> None:
+        """Re-wrap the displays' lines for the new width."""
         self.update_from()
 
     def update_from(self) -> None:
@@ -108,6 +110,7 @@ class DisplaysPanel(Static):
         self.update(text)
 
     def on_click(self, event: events.Click) -> None:
+        """A click on a display's lines posts `Toggle` for it."""
         for index, start in enumerate(self._starts):
             if start <= event.y < start + 3:
                 self.post_message(self.Toggle(index))

@@ -23,15 +23,19 @@ class Source(Protocol):
         """Subscribe what the displays now want (after one was shown or hidden)."""
         ...
 
-    def advertise(self, tools: tuple[Tool, ...]) -> None: ...
+    def advertise(self, tools: tuple[Tool, ...]) -> None:
+        """Advertise the tools' topics (by default ``/move_base_simple/goal``, ``/initialpose``
+        and ``/clicked_point``), as rviz does when it starts."""
 
     def publish(self, tool: Tool, fixed: str, x: float, y: float, yaw: float) -> str:
         """Publish the tool's message; the line rviz logs."""
         ...
 
-    def param(self, name: str) -> Any: ...
+    def param(self, name: str) -> Any:
+        """A parameter's value, or None when it is not set."""
 
-    def close(self) -> None: ...
+    def close(self) -> None:
+        """Stop the node and drop its subscriptions."""
 
 
 __all__ = ["Source"]

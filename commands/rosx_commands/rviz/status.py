@@ -48,21 +48,27 @@ class StatusList:
         self.entries: dict[str, tuple[Level, str]] = {}
 
     def set(self, name: str, level: Level, text: str) -> None:
+        """Set status ``name``; a new name goes last, an existing one keeps its place."""
         self.entries[name] = (level, text)
 
     def ok(self, name: str, text: str) -> None:
+        """Set status ``name`` to OK with ``text``."""
         self.set(name, Level.OK, text)
 
     def warn(self, name: str, text: str) -> None:
+        """Set status ``name`` to Warn with ``text``."""
         self.set(name, Level.WARN, text)
 
     def error(self, name: str, text: str) -> None:
+        """Set status ``name`` to Error with ``text``."""
         self.set(name, Level.ERROR, text)
 
     def delete(self, name: str) -> None:
+        """Remove status ``name``, if it is set."""
         self.entries.pop(name, None)
 
     def clear(self) -> None:
+        """Remove every status."""
         self.entries.clear()
 
     @property

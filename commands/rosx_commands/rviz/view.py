@@ -67,6 +67,7 @@ class View:
 
     @property
     def pixels_per_metre(self) -> float:
+        """The scale in pixels per metre (1.0 until the first `resize` sets it)."""
         return self.scale or 1.0
 
     @property
@@ -125,6 +126,7 @@ class View:
         self.moved = True
 
     def centre_on(self, x: float, y: float) -> None:
+        """Look at fixed-frame point ``x``, ``y`` (Follow uses it), keeping zoom and angle."""
         self.x, self.y = x, y
 
     def reset(self) -> None:

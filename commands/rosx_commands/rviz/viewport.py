@@ -11,6 +11,7 @@ places it and dragging sets its heading; the release posts `Viewport.Placed`.
 from __future__ import annotations
 
 import math
+import sys
 import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -25,6 +26,11 @@ from rosx_commands.rviz.cells import Cells
 from rosx_commands.rviz.painter import Painter
 from rosx_commands.rviz.primitives import Layer, Points, Polygon, Segments
 from rosx_turtle.tui.feed import Follows
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -143,6 +149,7 @@ class Viewport(Follows[int], Widget, can_focus=True):
         self.redraw()
 
     def on_resize(self, event: events.Resize) -> None:
+        """Size the camera to the widget (two pixels per cell vertically) and redraw."""
         self.view.resize(self.size.width, self.size.height * 2)
         self.redraw(force=True)
 
@@ -183,6 +190,7 @@ class Viewport(Follows[int], Widget, can_focus=True):
                     self.refresh(Region(0, y, width, 1))
         self.post_message(self.Drawn())
 
+    @override
     def render_line(self, y: int) -> Strip:
         if y < len(self._strips):
             return self._strips[y]
@@ -194,6 +202,7 @@ class Viewport(Follows[int], Widget, can_focus=True):
         return self.view.point_at(event.x, event.y * 2 + 0.5)
 
     def on_mouse_down(self, event: events.MouseDown) -> None:
+        """Left button down: start a drag, or put the tool down where pressed."""
         if event.button != 1:
             return
         self.capture_mouse()
@@ -205,6 +214,7 @@ class Viewport(Follows[int], Widget, can_focus=True):
             self._drag = (event.x, event.y)
 
     def on_mouse_move(self, event: events.MouseMove) -> None:
+        """Drag: pan the view, or with a tool, aim its heading at the pointer."""
         if not self.pressed:
             return
         if self.tool is not None:
@@ -221,6 +231,7 @@ class Viewport(Follows[int], Widget, can_focus=True):
                 self.redraw()
 
     def on_mouse_up(self, event: events.MouseUp) -> None:
+        """Left button up: end the drag; with a tool, post `Placed` so the pane publishes it."""
         if not self.pressed:
             return
         self.pressed = False
@@ -230,10 +241,12 @@ class Viewport(Follows[int], Widget, can_focus=True):
             self.post_message(self.Placed(self.tool.x, self.tool.y, self.tool.yaw))
 
     def on_mouse_scroll_up(self, event: events.MouseScrollUp) -> None:
+        """Wheel up: zoom in around the pointer."""
         self.view.zoom(1, (event.x + 0.5, event.y * 2 + 1.0))
         self.redraw()
 
     def on_mouse_scroll_down(self, event: events.MouseScrollDown) -> None:
+        """Wheel down: zoom out around the pointer."""
         self.view.zoom(-1, (event.x + 0.5, event.y * 2 + 1.0))
         self.redraw()
 

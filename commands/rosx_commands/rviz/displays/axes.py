@@ -2,12 +2,18 @@
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 from rosx_commands.rviz.displays.base import Display
 from rosx_commands.rviz.displays.grid import FIXED_FRAME
 from rosx_commands.rviz.displays.shapes import axes
 from rosx_commands.rviz.primitives import Layer
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from rosx_commands.rviz.displays.base import Context
@@ -18,6 +24,7 @@ class Axes(Display):
 
     CLASSES = ("rviz/Axes",)
 
+    @override
     def draw(self, context: Context) -> Layer:
         frame = str(self.option("Reference Frame", FIXED_FRAME) or FIXED_FRAME)
         if frame == FIXED_FRAME:

@@ -11,12 +11,18 @@ received" until the first message and then counts them; each display adds its ow
 
 from __future__ import annotations
 
+import sys
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from rosx_commands.rviz import status
 from rosx_commands.rviz.config import parse_color
 from rosx_commands.rviz.primitives import Layer
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from rosx_commands.rviz.config import DisplaySpec
@@ -65,15 +71,19 @@ class Display:
         return self.spec.get(key, default)
 
     def number(self, key: str, default: float) -> float:
+        """The config's ``key`` as a float; ``default`` when absent or not a number (rviz ignores
+        bad values the same way)."""
         try:
             return float(self.spec.get(key, default))
         except (TypeError, ValueError):
             return default
 
     def colour(self, key: str, default: RGB) -> RGB:
+        """The config's ``key`` as an RGB colour (rviz's ``"r; g; b"``), or ``default``."""
         return parse_color(self.spec.get(key), default)
 
     def flag(self, key: str, default: bool) -> bool:
+        """The config's ``key`` as a bool; rviz's configs write ``true``/``false`` as text."""
         value = self.spec.get(key, default)
         if isinstance(value, str):
             return value.strip().lower() == "true"
@@ -114,6 +124,7 @@ class Display:
         """Drop the display's own state (its part of `reset`)."""
 
     def set_enabled(self, enabled: bool) -> None:
+        """Show or hide the display; a change resets it, as rviz does when a display is enabled."""
         if enabled != self.enabled:
             self.enabled = enabled
             self.reset()
@@ -131,6 +142,8 @@ class Display:
         return self.draw(context)
 
     def draw(self, context: Context) -> Layer:
+        """What the display draws in ``context`` (its own part of `layer`); the base draws
+        nothing."""
         return Layer()
 
     @property
@@ -142,6 +155,7 @@ class Display:
 
     @property
     def level(self) -> status.Level:
+        """The worst status of the display (OK when it is disabled), for the panel's mark."""
         return self.statuses.level if self.enabled else status.Level.OK
 
     def transform_status(self, frame: str, answer: object, key: str = "Transform") -> bool:
@@ -157,12 +171,14 @@ class Display:
 class Unsupported(Display):
     """A class rosx cannot draw: listed, kept for saving, never subscribed."""
 
+    @override
     def reset(self) -> None:
         self.statuses.clear()
         self.statuses.warn("Class", status.UNSUPPORTED)
         self.version += 1
 
     @property
+    @override
     def summary(self) -> str:
         return status.UNSUPPORTED
 

@@ -4,6 +4,7 @@
 
 from __future__ import annotations
 
+import sys
 from collections import deque
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -14,6 +15,11 @@ from rosx_commands.rviz import status
 from rosx_commands.rviz.displays.base import Display
 from rosx_commands.rviz.geometry import apply
 from rosx_commands.rviz.primitives import Layer, Points
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     import numpy.typing as npt
@@ -71,6 +77,7 @@ class CloudDisplay(Display):
 
     PREFER = ("Points",)
 
+    @override
     def clear(self) -> None:
         self.clouds: deque[Cloud] = deque()
 
@@ -89,6 +96,7 @@ class CloudDisplay(Display):
             dropped = True
         return dropped
 
+    @override
     def expire(self, now: float) -> bool:
         decay = self.number("Decay Time", 0.0)
         if decay > 0 and self._drop(now, decay):
@@ -128,6 +136,7 @@ class CloudDisplay(Display):
             return rainbow(normalised(placed[:, axis], low, high)), flat
         return None, flat
 
+    @override
     def draw(self, context: Context) -> Layer:
         layer = Layer()
         shown = 0

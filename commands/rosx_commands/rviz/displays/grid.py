@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 import numpy as np  # noqa: TID253 - rviz's model is array work; only rviz imports it
@@ -10,6 +11,11 @@ import numpy as np  # noqa: TID253 - rviz's model is array work; only rviz impor
 from rosx_commands.rviz.displays.base import Display
 from rosx_commands.rviz.geometry import apply
 from rosx_commands.rviz.primitives import Layer, Segments
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from rosx_commands.rviz.displays.base import Context
@@ -24,6 +30,7 @@ class Grid(Display):
 
     CLASSES = ("rviz/Grid",)
 
+    @override
     def draw(self, context: Context) -> Layer:
         frame = str(self.option("Reference Frame", FIXED_FRAME) or FIXED_FRAME)
         if frame == FIXED_FRAME:

@@ -8,11 +8,17 @@ highest values (rviz's ``Normalize Range``), or ``Min Value``…``Max Value`` wh
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, Any
 
 import numpy as np  # noqa: TID253 - rviz's model is array work; only rviz imports it
 
 from rosx_commands.rviz.displays.base import Display
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     import numpy.typing as npt
@@ -67,11 +73,13 @@ class Image(Display):
     MESSAGE_TYPE = "sensor_msgs/Image"
     TOPIC_KEY = "Image Topic"
 
+    @override
     def clear(self) -> None:
         self.image: npt.NDArray[np.uint8] | None = None
         if self.topic:
             self.statuses.warn("Image", "No Image received")
 
+    @override
     def take(self, msg: Any, now: float) -> None:
         try:
             self.image = to_rgb(
@@ -86,6 +94,7 @@ class Image(Display):
         self.statuses.ok("Image", f"{self.messages} images received")
 
     @property
+    @override
     def summary(self) -> str:
         text = super().summary
         if text == "OK" and self.image is not None:

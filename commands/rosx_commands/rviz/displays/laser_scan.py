@@ -4,6 +4,7 @@ laser_geometry projects for rviz, a beam gives no point when it is not finite, b
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, Any
 
 import numpy as np  # noqa: TID253 - rviz's model is array work; only rviz imports it
@@ -11,6 +12,11 @@ import numpy as np  # noqa: TID253 - rviz's model is array work; only rviz impor
 from rosx.tf.stamps import nanos
 from rosx_commands.rviz.displays.clouds import Cloud, CloudDisplay
 from rosx_commands.rviz.frames import clean
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     import numpy.typing as npt
@@ -34,6 +40,7 @@ class LaserScan(CloudDisplay):
     MESSAGE_TYPE = "sensor_msgs/LaserScan"
     DEFAULT_TOPIC = ""
 
+    @override
     def take(self, msg: Any, now: float) -> None:
         xyz, intensity = scan_points(msg)
         header = msg.header

@@ -9,6 +9,7 @@ wall, known beats unknown) and kept, so panning and redrawing cost a lookup per 
 from __future__ import annotations
 
 import math
+import sys
 from typing import TYPE_CHECKING, Any
 
 import numpy as np  # noqa: TID253 - rviz's model is array work; only rviz imports it
@@ -16,6 +17,11 @@ import numpy as np  # noqa: TID253 - rviz's model is array work; only rviz impor
 from rosx_commands.rviz.displays.base import Display
 from rosx_commands.rviz.geometry import compose, pose_transform, rotation_matrix
 from rosx_commands.rviz.primitives import Layer
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     import numpy.typing as npt
@@ -102,6 +108,9 @@ class MapImage:
         return found
 
     def sample(self, x: Floats, y: Floats, metres_per_pixel: float) -> tuple[Colours, Floats]:
+        """The map's colour and alpha at fixed-frame points ``x``, ``y``, read from a coarser
+        level of the grid when a pixel covers several cells (so a large map draws at the cost of
+        the screen)."""
         factor = 1
         ratio = metres_per_pixel / self.resolution
         if ratio >= 2.0:
@@ -131,12 +140,14 @@ class Map(Display):
     MESSAGE_TYPE = "nav_msgs/OccupancyGrid"
     DEFAULT_TOPIC = "map"
 
+    @override
     def clear(self) -> None:
         self.image: MapImage | None = None
         self.frame = ""
         self.stamp = 0
         self.statuses.warn("Message", "No map received")
 
+    @override
     def take(self, msg: Any, now: float) -> None:
         info = msg.info
         width, height = int(info.width), int(info.height)
@@ -160,6 +171,7 @@ class Map(Display):
         )
         self.frame = msg.header.frame_id
 
+    @override
     def draw(self, context: Context) -> Layer:
         if self.image is None:
             return Layer()

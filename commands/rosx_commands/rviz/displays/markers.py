@@ -11,6 +11,7 @@ MESH_RESOURCE is listed as not drawn. ``Namespaces`` in the config turns namespa
 
 from __future__ import annotations
 
+import sys
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -22,6 +23,11 @@ from rosx_commands.rviz.displays.shapes import arrow, box, cylinder, ellipsoid
 from rosx_commands.rviz.frames import clean
 from rosx_commands.rviz.geometry import apply, compose, pose_transform
 from rosx_commands.rviz.primitives import Label, Layer, Points, Polygon, Segments
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     import numpy.typing as npt
@@ -124,9 +130,11 @@ class Marker(Display):
     TOPIC_KEY = "Marker Topic"
     DEFAULT_TOPIC = "visualization_marker"
 
+    @override
     def clear(self) -> None:
         self.markers: dict[tuple[str, int], Kept] = {}
 
+    @override
     def take(self, msg: Any, now: float) -> None:
         self.apply(msg, now)
 
@@ -163,6 +171,7 @@ class Marker(Display):
         )
         self.statuses.delete(f"{msg.ns}/{msg.id}")
 
+    @override
     def expire(self, now: float) -> bool:
         gone = [
             key
@@ -179,6 +188,7 @@ class Marker(Display):
         chosen = self.option("Namespaces", {}) or {}
         return not hasattr(chosen, "get") or chosen.get(namespace, True) is not False
 
+    @override
     def draw(self, context: Context) -> Layer:
         layer = Layer()
         failed = None
@@ -199,6 +209,7 @@ class Marker(Display):
         return layer
 
     @property
+    @override
     def summary(self) -> str:
         text = super().summary
         if text == "OK" and self.enabled and self.messages:
@@ -213,6 +224,7 @@ class MarkerArray(Marker):
     MESSAGE_TYPE = "visualization_msgs/MarkerArray"
     DEFAULT_TOPIC = "visualization_marker_array"
 
+    @override
     def take(self, msg: Any, now: float) -> None:
         for marker in msg.markers:
             self.apply(marker, now)

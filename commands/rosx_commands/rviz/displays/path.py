@@ -4,6 +4,7 @@ paths kept, each pose drawn as ``Pose Style`` says) and Polygon
 
 from __future__ import annotations
 
+import sys
 from collections import deque
 from typing import TYPE_CHECKING, Any
 
@@ -15,6 +16,11 @@ from rosx_commands.rviz.displays.shapes import arrow, axes
 from rosx_commands.rviz.frames import clean
 from rosx_commands.rviz.geometry import apply, compose, pose_transform
 from rosx_commands.rviz.primitives import Layer, Segments
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     import numpy.typing as npt
@@ -29,15 +35,18 @@ class Path(Display):
     CLASSES = ("rviz/Path",)
     MESSAGE_TYPE = "nav_msgs/Path"
 
+    @override
     def clear(self) -> None:
         self.paths: deque[tuple[str, int, list[Transform]]] = deque()
 
+    @override
     def take(self, msg: Any, now: float) -> None:
         poses = [pose_transform(stamped.pose) for stamped in msg.poses]
         self.paths.append((clean(msg.header.frame_id), nanos(msg.header.stamp), poses))
         while len(self.paths) > max(1, int(self.number("Buffer Length", 1))):
             self.paths.popleft()
 
+    @override
     def draw(self, context: Context) -> Layer:
         colour = self.colour("Color", (25, 255, 0))
         alpha = self.number("Alpha", 1.0)
@@ -72,13 +81,16 @@ class Polygon(Display):
     CLASSES = ("rviz/Polygon",)
     MESSAGE_TYPE = "geometry_msgs/PolygonStamped"
 
+    @override
     def clear(self) -> None:
         self.latest: tuple[str, int, npt.NDArray[np.float64]] | None = None
 
+    @override
     def take(self, msg: Any, now: float) -> None:
         corners = np.array([[p.x, p.y, p.z] for p in msg.polygon.points], dtype=np.float64)
         self.latest = (clean(msg.header.frame_id), nanos(msg.header.stamp), corners.reshape(-1, 3))
 
+    @override
     def draw(self, context: Context) -> Layer:
         if self.latest is None or len(self.latest[2]) == 0:
             return Layer()

@@ -7,6 +7,7 @@ order); points with a coordinate that is not finite are dropped, as rviz drops t
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, Any
 
 import numpy as np  # noqa: TID253 - rviz's model is array work; only rviz imports it
@@ -14,6 +15,11 @@ import numpy as np  # noqa: TID253 - rviz's model is array work; only rviz impor
 from rosx.tf.stamps import nanos
 from rosx_commands.rviz.displays.clouds import Cloud, CloudDisplay
 from rosx_commands.rviz.frames import clean
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     import numpy.typing as npt
@@ -77,6 +83,7 @@ class PointCloud2(CloudDisplay):
     CLASSES = ("rviz/PointCloud2",)
     MESSAGE_TYPE = "sensor_msgs/PointCloud2"
 
+    @override
     def take(self, msg: Any, now: float) -> None:
         channel = str(self.option("Channel Name", "intensity") or "intensity")
         try:

@@ -7,6 +7,7 @@ axes (``Shape: Axes``)."""
 from __future__ import annotations
 
 import math
+import sys
 from collections import deque
 from typing import TYPE_CHECKING, Any
 
@@ -16,6 +17,11 @@ from rosx_commands.rviz.displays.shapes import arrow, axes, flat_arrow
 from rosx_commands.rviz.frames import clean
 from rosx_commands.rviz.geometry import compose, pose_transform, valid_quaternion, yaw_of
 from rosx_commands.rviz.primitives import Layer
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from rosx_commands.rviz.displays.base import Context
@@ -30,6 +36,8 @@ class PoseShapes(Display):
     """What the three share: drawing one pose in the display's shape."""
 
     def shape(self, pose: Transform, context: Context) -> Layer:
+        """``pose`` drawn as the ``Shape`` option says: rviz's arrow (shaft, head, radius,
+        colour) or axes; an arrow is never shorter than `MIN_ARROW_PIXELS` on screen."""
         alpha = self.number("Alpha", 1.0)
         if str(self.option("Shape", "Arrow")) == "Axes":
             return axes(pose, self.number("Axes Length", 1.0), alpha)
@@ -46,6 +54,8 @@ class PoseShapes(Display):
         )
 
     def placed(self, frame: str, stamp: int, pose: Transform, context: Context) -> Transform | None:
+        """``pose`` (in ``frame`` at ``stamp``) in the fixed frame, or None when tf cannot place
+        it (the display's Transform status says why)."""
         answer = context.frames.lookup(frame, stamp)
         if not self.transform_status(frame, answer) or isinstance(answer, str):
             return None
@@ -58,9 +68,11 @@ class Pose(PoseShapes):
     CLASSES = ("rviz/Pose", "rviz/PoseStamped")
     MESSAGE_TYPE = "geometry_msgs/PoseStamped"
 
+    @override
     def clear(self) -> None:
         self.latest: tuple[str, int, Transform] | None = None
 
+    @override
     def take(self, msg: Any, now: float) -> None:
         pose = pose_transform(msg.pose)
         if not valid_quaternion(*pose[3:]):
@@ -70,6 +82,7 @@ class Pose(PoseShapes):
             return
         self.latest = (clean(msg.header.frame_id), nanos(msg.header.stamp), pose)
 
+    @override
     def draw(self, context: Context) -> Layer:
         if self.latest is None:
             return Layer()
@@ -83,13 +96,16 @@ class PoseArray(PoseShapes):
     CLASSES = ("rviz/PoseArray",)
     MESSAGE_TYPE = "geometry_msgs/PoseArray"
 
+    @override
     def clear(self) -> None:
         self.latest: tuple[str, int, list[Transform]] | None = None
 
+    @override
     def take(self, msg: Any, now: float) -> None:
         poses = [pose_transform(p) for p in msg.poses]
         self.latest = (clean(msg.header.frame_id), nanos(msg.header.stamp), poses)
 
+    @override
     def draw(self, context: Context) -> Layer:
         if self.latest is None:
             return Layer()
@@ -122,9 +138,11 @@ class Odometry(PoseShapes):
     CLASSES = ("rviz/Odometry",)
     MESSAGE_TYPE = "nav_msgs/Odometry"
 
+    @override
     def clear(self) -> None:
         self.kept: deque[tuple[str, int, Transform]] = deque()
 
+    @override
     def take(self, msg: Any, now: float) -> None:
         pose = pose_transform(msg.pose.pose)
         if not valid_quaternion(*pose[3:]):
@@ -146,6 +164,7 @@ class Odometry(PoseShapes):
         while keep and len(self.kept) > keep:
             self.kept.popleft()
 
+    @override
     def draw(self, context: Context) -> Layer:
         layer = Layer()
         for frame, stamp, pose in self.kept:

@@ -8,6 +8,7 @@ None when the parameter is not set.
 
 from __future__ import annotations
 
+import sys
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -16,6 +17,11 @@ from rosx_commands.rviz.displays.base import Display
 from rosx_commands.rviz.displays.shapes import box, cylinder, ellipsoid
 from rosx_commands.rviz.geometry import IDENTITY, compose
 from rosx_commands.rviz.primitives import Layer, Polygon
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from xml.etree.ElementTree import Element
@@ -121,6 +127,7 @@ class RobotModel(Display):
         """The parameter holding the URDF."""
         return str(self.option("Robot Description", "robot_description") or "robot_description")
 
+    @override
     def clear(self) -> None:
         self.links: dict[str, list[Part]] = {}
 
@@ -145,6 +152,7 @@ class RobotModel(Display):
                 self.statuses.ok("URDF", "URDF parsed OK")
         self.version += 1
 
+    @override
     def draw(self, context: Context) -> Layer:
         layer = Layer()
         prefix = str(self.option("TF Prefix", "") or "").strip("/")
@@ -167,6 +175,7 @@ class RobotModel(Display):
         return layer
 
     @property
+    @override
     def summary(self) -> str:
         text = super().summary
         if text == status.OK and self.enabled:

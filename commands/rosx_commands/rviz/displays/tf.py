@@ -10,6 +10,7 @@ warning: the TF display shows what connects).
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 import numpy as np  # noqa: TID253 - rviz's model is array work; only rviz imports it
@@ -17,6 +18,11 @@ import numpy as np  # noqa: TID253 - rviz's model is array work; only rviz impor
 from rosx_commands.rviz.displays.base import Display
 from rosx_commands.rviz.geometry import apply
 from rosx_commands.rviz.primitives import Label, Layer, Segments
+
+if sys.version_info >= (3, 12):
+    from typing import override
+else:
+    from typing_extensions import override
 
 if TYPE_CHECKING:
     from rosx_commands.rviz.displays.base import Context
@@ -34,6 +40,7 @@ class TF(Display):
 
     CLASSES = ("rviz/TF",)
 
+    @override
     def clear(self) -> None:
         self.frames_shown = 0
 
@@ -50,6 +57,7 @@ class TF(Display):
             if name != "All Enabled" and hasattr(value, "get") and value.get("Value", True) is False
         }
 
+    @override
     def draw(self, context: Context) -> Layer:
         frames = context.frames
         disabled = self._disabled_frames()
@@ -98,6 +106,7 @@ class TF(Display):
         return layer
 
     @property
+    @override
     def summary(self) -> str:
         text = super().summary
         if text == "OK" and self.enabled:
