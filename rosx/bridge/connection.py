@@ -220,7 +220,15 @@ class Connection(Generic[S]):
             pending += wsframes.wire(frame)
         if pending and not self._write(pending, on_loop=False):
             return
-        self._flush(on_loop=False)  # whatever came meanwhile, and the role given back
+        with self._q:
+            done = not (self._wire or self._control or self._turns or self._closing)
+            if done:
+                self._writing = self._foreign = False
+                finished = self._finished
+        if not done:
+            self._flush(on_loop=False)  # whatever came meanwhile
+        elif finished:  # the loop finished the connection while this thread wrote
+            self.loop.call_soon_threadsafe(self._finish)
 
     def _flush(self, on_loop: bool) -> None:
         """Write what waits, holding the writer's role; give the role back, or pass it to the

@@ -20,6 +20,8 @@ from rosx.msg.codec.codegen import variant
 if TYPE_CHECKING:
     from rosx.msg.codec.message import Message
 
+#: Each topic's JSON text before its message (a topic's name is written once).
+_json_heads: dict[str, str] = {}
 #: The CBOR head of a byte string of a length (RFC 8949, 3.1: major type 2).
 _BYTES_16 = struct.Struct(">BH")
 _BYTES_32 = struct.Struct(">BI")
@@ -77,12 +79,16 @@ class Outgoing:
         """The ``publish`` op's JSON text."""
         if self._json is None:
             message = self.message()
-            topic = json.dumps(self.topic)
+            head = _json_heads.get(self.topic)
+            if head is None:
+                head = _json_heads[self.topic] = (
+                    f'{{"op":"publish","topic":{json.dumps(self.topic)},"msg":'
+                )
             try:
                 body = json_text(message)
             except (TypeError, AttributeError):  # a value of an unexpected kind: the long way
                 body = json.dumps(json_values(message), separators=(",", ":"), allow_nan=False)
-            self._json = f'{{"op":"publish","topic":{topic},"msg":{body}}}'
+            self._json = f"{head}{body}}}"
         return self._json
 
     def publish_cbor(self) -> bytes:
