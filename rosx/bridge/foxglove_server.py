@@ -76,7 +76,7 @@ class FoxgloveServer:
     @property
     def connections(self) -> set[Connection[fx.FoxgloveSession]]:
         """The open connections."""
-        return set() if self._server is None else set(self._server.connections)
+        return set() if self._server is None else self._server.connections
 
     async def start(self) -> None:
         """Bind, read the graph once, and start serving."""

@@ -72,7 +72,7 @@ class BridgeServer:
     @property
     def connections(self) -> set[Connection[Session]]:
         """The open connections."""
-        return set() if self._server is None else set(self._server.connections)
+        return set() if self._server is None else self._server.connections
 
     async def start(self) -> None:
         """Bind and start serving (on the loop); `port` is then the bound port."""

@@ -102,11 +102,16 @@ class WebSocketServer(Generic[S]):
         self.max_message = max_message
         self.subprotocols = tuple(subprotocols)
         self.pool = ThreadPoolExecutor(workers, thread_name_prefix=name)
-        #: The open connections.
-        self.connections: set[Connection[S]] = set()
+        self._open: set[Connection[S]] = set()  # under _lock: the loop adds, any thread reads
         self._all: set[Connection[S]] = set()
         self._lock = threading.Lock()
         self._listener: descriptors.Listener | None = None
+
+    @property
+    def connections(self) -> set[Connection[S]]:
+        """The open connections (a copy; any thread)."""
+        with self._lock:
+            return set(self._open)
 
     def protocol(self) -> ServerProtocol:
         """A new connection's protocol object."""
@@ -145,15 +150,15 @@ class WebSocketServer(Generic[S]):
     def opened(self, connection: Connection[S]) -> None:
         """Called by ``connection`` when its handshake has succeeded (on the loop)."""
         with self._lock:
-            self.connections.add(connection)
+            self._open.add(connection)
         self.handler.opened(connection)
 
     def forget(self, connection: Connection[S]) -> bool:
         """Called by ``connection`` when it has closed; whether it had been open."""
         self._all.discard(connection)
         with self._lock:
-            was_open = connection in self.connections
-            self.connections.discard(connection)
+            was_open = connection in self._open
+            self._open.discard(connection)
         return was_open
 
     def idle_connections(self) -> Iterator[tuple[float, Callable[[], object]]]:
