@@ -20,7 +20,7 @@ from urllib.parse import parse_qs, urlsplit
 
 from rosx.bridge import foxglove as fx
 from rosx.bridge.protocol import DEFAULT_MAX_MESSAGE
-from rosx.bridge.safety import origin_allowed
+from rosx.bridge.safety import origin_allowed, refusal, refusal_answer
 from rosx.bridge.websocket import WebSocketServer
 from rosx.graph.state import registrations
 from rosx.msg.codec.classes import get_service_class
@@ -112,10 +112,8 @@ class FoxgloveServer:
     def refuse(self, request: Request) -> tuple[int, str] | None:
         origin = request.headers.get("Origin")
         if not origin_allowed(origin, self.allow_origins):
-            self.log(
-                f"Refused a Foxglove connection from a page of {origin}: not an allowed origin"
-            )
-            return 403, f"Origin {origin} is not allowed: see --allow-origin\n"
+            self.log(refusal(origin, "Foxglove"))
+            return 403, refusal_answer(origin)
         if self.token is not None:
             tokens = parse_qs(urlsplit(request.path).query).get("token", [])
             if self.token not in tokens:

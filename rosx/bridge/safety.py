@@ -75,11 +75,21 @@ def check_auth(token: str, request: dict[str, Any], now: int) -> bool:
     return hmac.compare_digest(mac.encode(), expected.encode())
 
 
-def refusal(origin: str | None) -> str:
-    """The line the server logs when it refuses a page of ``origin``: what lets it in."""
+def refusal(origin: str | None, kind: str = "") -> str:
+    """The line a server logs when it refuses a page of ``origin``: what lets it in (``kind``:
+    the protocol's name, ``"Foxglove"``, or nothing for rosbridge's)."""
+    connection = f"{kind} connection" if kind else "connection"
     return (
-        f"Refused a connection from a page of {origin}: not an allowed origin (--allow-origin "
+        f"Refused a {connection} from a page of {origin}: not an allowed origin (--allow-origin "
         f"{origin}, or allow_origin:={origin} with roslaunch, lets its pages connect)"
+    )
+
+
+def refusal_answer(origin: str | None) -> str:
+    """The body of the HTTP answer (403) refusing a page of ``origin``: what lets it in."""
+    return (
+        f"Origin {origin} is not allowed: start the bridge with --allow-origin {origin} "
+        "to let its pages connect\n"
     )
 
 
@@ -90,4 +100,5 @@ __all__ = [
     "is_local_origin",
     "origin_allowed",
     "refusal",
+    "refusal_answer",
 ]

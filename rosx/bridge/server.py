@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 from urllib.parse import parse_qs, urlsplit
 
 from rosx.bridge.protocol import DEFAULT_MAX_MESSAGE, Session
-from rosx.bridge.safety import origin_allowed, refusal
+from rosx.bridge.safety import origin_allowed, refusal, refusal_answer
 from rosx.bridge.websocket import WebSocketServer
 
 if TYPE_CHECKING:
@@ -102,11 +102,7 @@ class BridgeServer:
         if origin_allowed(origin, self.allow_origins):
             return None
         self.log(refusal(origin))
-        return (
-            403,
-            f"Origin {origin} is not allowed: start the bridge with --allow-origin {origin} "
-            "to let its pages connect\n",
-        )
+        return 403, refusal_answer(origin)
 
     def session(self, connection: Connection[Session]) -> Session:
         token = self.token

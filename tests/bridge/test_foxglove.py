@@ -12,8 +12,9 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 import pytest
+from websockets.exceptions import InvalidStatus
 from websockets.sync.client import ClientConnection, connect
-from websockets.typing import Subprotocol
+from websockets.typing import Origin, Subprotocol
 
 from rosx.bridge import foxglove as fx
 from rosx.bridge.app import Bridge
@@ -86,6 +87,30 @@ def foxglove(master: str) -> Iterator[tuple[Bridge, str]]:
     finally:
         bridge.shutdown("test over")
         sim.shutdown("test over")
+
+
+def test_a_refused_page_is_told_how_to_let_it_in(master: str) -> None:
+    bridge, lines = start_bridge(master, rosapi=False, foxglove_port=0)
+    try:
+        assert bridge.foxglove is not None
+        url = f"ws://127.0.0.1:{bridge.foxglove.port}"
+        with pytest.raises(InvalidStatus) as refused:
+            connect(url, origin=Origin("null"), subprotocols=[Subprotocol(fx.SUBPROTOCOL)])
+        assert refused.value.response.status_code == 403
+        assert refused.value.response.body == (
+            b"Origin null is not allowed: start the bridge with --allow-origin null to let its "
+            b"pages connect\n"
+        )
+        line = (
+            "Refused a Foxglove connection from a page of null: not an allowed origin "
+            "(--allow-origin null, or allow_origin:=null with roslaunch, lets its pages connect)"
+        )
+        deadline = time.monotonic() + 10
+        while line not in lines:
+            assert time.monotonic() < deadline, lines
+            time.sleep(0.01)
+    finally:
+        bridge.shutdown("test over")
 
 
 class Reader:
