@@ -40,6 +40,7 @@ import asyncio
 import contextlib
 import json
 import os
+import shutil
 import signal
 import socket
 import statistics
@@ -237,6 +238,8 @@ class Bridge:
             except subprocess.TimeoutExpired:
                 proc.kill()
                 proc.wait()
+        if self.feed:  # the floor's socket, in a folder of its own
+            shutil.rmtree(Path(self.feed).parent, ignore_errors=True)
 
 
 def wait_port(port: int, procs: list[subprocess.Popen[bytes]], timeout: float = 30.0) -> None:
