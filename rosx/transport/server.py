@@ -208,6 +208,16 @@ class XmlRpcServer:
         loop = asyncio.get_running_loop()
         task = loop.create_task(self._serve(sock))
         self._connections[task] = loop.time()
+        task.add_done_callback(lambda task: self._ended(task, sock))
+
+    def _ended(self, task: asyncio.Task[None], sock: socket.socket) -> None:
+        """A connection's task is done. One cancelled before its first step never ran `_serve`,
+        whose ``finally`` forgets the connection and closes its socket, so that is done here:
+        a burst accepted in one turn of the loop near the descriptor limit is shed before its
+        tasks start, and their sockets stayed open and listed as idle for good."""
+        if task in self._connections:  # still listed: `_serve` never ran
+            del self._connections[task]
+            sock.close()
 
     async def _serve(self, sock: socket.socket) -> None:
         task = asyncio.current_task()

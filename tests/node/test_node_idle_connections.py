@@ -61,7 +61,6 @@ def test_node_serves_beside_more_idle_connections_than_descriptors() -> None:
             # More idle connections than the node could hold have been accepted and closed.
             wait_for(
                 lambda: closed_by_peer(on_tcpros + on_slave) >= CONNECTIONS - 1024,
-                timeout=60,
                 what="idle connections to be closed",
             )
             code, _, pid = XmlRpcClient().call(slave_uri, "getPid", "/test", timeout=5.0)
