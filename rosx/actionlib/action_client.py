@@ -192,7 +192,7 @@ class CommStateMachine:
         return hash(self.action_goal.goal_id.id)
 
     def set_state(self, state: CommState) -> None:
-        """Move to ``state`` unconditionally; the transition rules live in the callers."""
+        """Move to ``state`` without telling the transition callback (`transition_to` tells it)."""
         self.state = state
 
     def update_status(self, status_array: Any) -> None:
@@ -296,7 +296,7 @@ class GoalManager:
         return msgs().GoalID(id=f"{names.get_caller_id()}-{number}-{now.to_sec():.3f}", stamp=now)
 
     def register_send_goal_fn(self, fn: Callable[[Any], object]) -> None:
-        """Set how a goal is sent (the client's ``goal`` publisher); `init_goal` calls it."""
+        """Set how goals are sent (the client's ``goal`` publisher); every `init_goal` uses it."""
         self.send_goal_fn = fn
 
     def register_cancel_fn(self, fn: Callable[[Any], object]) -> None:

@@ -172,7 +172,8 @@ class MasterApi:
         return 1, "", self.uri
 
     def get_pid(self, caller_id: str) -> Reply:
-        """``getPid``: the master process's id (``rosnode info``/``roswtf`` print it)."""
+        """``getPid``: the master process's id; rosgraph asks for it to learn whether the master
+        is up."""
         return 1, "", self.pid
 
     # -- parameters ---------------------------------------------------------------------------
