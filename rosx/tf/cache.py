@@ -9,7 +9,11 @@ insertion older than the span or at a stamp already held is refused with tf2's
 
 A sample is a tuple ``(parent_id, tx, ty, tz, qx, qy, qz, qw)``; interpolation between two
 samples is tf2's (linear translation, slerp rotation, the same operations in the same order),
-so the numbers are ROS 1's to the last bit. Nothing here locks or does I/O: the buffer
+so the numbers are ROS 1's to the last bit. What tf2's slerp computes from the two samples
+alone (the angle between them, ``1 / sin`` of it, which way round) does not depend on the time
+asked, so a `TimeCache` computes it once, when a sample arrives, as the `Span` of each two
+neighbours: a lookup at a past time then costs a bisection, two sines and a few products per
+frame (`rosx.tf.core`'s ``_climb``). Nothing here locks or does I/O: the buffer
 (`rosx.tf.core`) does the locking.
 """
 
@@ -55,10 +59,24 @@ def _past(asked: int, earliest: int) -> str:
     )[:162]
 
 
-def interpolate(one: Sample, two: Sample, ratio: float) -> Sample:
-    """tf2's ``TimeCache::interpolate``: ``one`` (older) to ``two`` at ``ratio``."""
-    s = 1.0 - ratio
-    parent, ax, ay, az, x1, y1, z1, w1 = one
+#: What interpolating between two neighbouring samples needs besides the time, as tf2 computes
+#: it: ``(t1, seconds, theta, d, ax, ay, az, bx, by, bz, x1, y1, z1, w1, x2, y2, z2, w2)``, the
+#: older stamp, the span's ``Duration::toSec()`` (tf2 divides by it), tf2's half angle between
+#: the two rotations (0.0: no slerp, the older rotation), ``d = 1 / sin(theta)``, the two
+#: translations and the two rotations, the newer one negated where tf2 goes the short way round
+#: (``-q2``: a negation is exact). None where the two have different parents: tf2 does not
+#: interpolate there, the older sample is the answer.
+Span = tuple[
+    int, float, float, float, float, float, float, float, float, float,
+    float, float, float, float, float, float, float, float,
+]  # fmt: skip
+
+
+def span(t1: int, one: Sample, t2: int, two: Sample) -> Span | None:
+    """The `Span` from ``one`` (at ``t1``) to ``two`` (at ``t2``, later)."""
+    if one[0] != two[0]:
+        return None
+    _, ax, ay, az, x1, y1, z1, w1 = one
     _, bx, by, bz, x2, y2, z2, w2 = two
     # Quaternion::slerp, through angleShortestPath
     dot = x1 * x2 + y1 * y2 + z1 * z2 + w1 * w2
@@ -67,35 +85,52 @@ def interpolate(one: Sample, two: Sample, ratio: float) -> Sample:
     # tf2Acos clamps its argument to [-1, 1].
     cosine = -dot / norm if dot < 0 else dot / norm
     theta = acos(cosine) if cosine < 1.0 else 0.0
+    d = 1.0 / sin(theta) if theta != 0.0 else 0.0
+    if dot < 0:
+        x2, y2, z2, w2 = -x2, -y2, -z2, -w2
+    # Duration::toSec() of the span, as tf2 divides by it
+    seconds = stamps.to_sec(t2 - t1)
+    return (t1, seconds, theta, d, ax, ay, az, bx, by, bz, x1, y1, z1, w1, x2, y2, z2, w2)
+
+
+def interpolate(one: Sample, at: Span, time: int) -> Sample:
+    """tf2's ``TimeCache::interpolate`` at ``time``, from ``one`` (the older sample) along its
+    `Span` ``at`` to the newer."""
+    t1, seconds, theta, d, ax, ay, az, bx, by, bz, x1, y1, z1, w1, x2, y2, z2, w2 = at
+    into = time - t1
+    # Duration::toSec(): seconds + 1e-9 * nanoseconds, the first 0.0 within a second
+    ratio = (1e-9 * into if into < SECOND else stamps.to_sec(into)) / seconds
+    s = 1.0 - ratio
     if theta != 0.0:
-        d = 1.0 / sin(theta)
-        s0 = sin((1.0 - ratio) * theta)
+        s0 = sin(s * theta)
         s1 = sin(ratio * theta)
-        if dot < 0:
-            qx = (x1 * s0 + -x2 * s1) * d
-            qy = (y1 * s0 + -y2 * s1) * d
-            qz = (z1 * s0 + -z2 * s1) * d
-            qw = (w1 * s0 + -w2 * s1) * d
-        else:
-            qx = (x1 * s0 + x2 * s1) * d
-            qy = (y1 * s0 + y2 * s1) * d
-            qz = (z1 * s0 + z2 * s1) * d
-            qw = (w1 * s0 + w2 * s1) * d
+        qx = (x1 * s0 + x2 * s1) * d
+        qy = (y1 * s0 + y2 * s1) * d
+        qz = (z1 * s0 + z2 * s1) * d
+        qw = (w1 * s0 + w2 * s1) * d
     else:
         qx, qy, qz, qw = x1, y1, z1, w1
-    return (parent, s * ax + ratio * bx, s * ay + ratio * by, s * az + ratio * bz, qx, qy, qz, qw)
+    return (one[0], s * ax + ratio * bx, s * ay + ratio * by, s * az + ratio * bz, qx, qy, qz, qw)
 
 
 class TimeCache:
-    """The transforms of one moving frame, ``max_storage`` ns behind the newest."""
+    """The transforms of one moving frame, ``max_storage`` ns behind the newest.
 
-    __slots__ = ("answer", "asked", "max_storage", "samples", "stamps")
+    ``stamps``, ``samples`` and ``spans`` are changed in place, never replaced: the buffer keeps
+    them in its chains (`rosx.tf.core`) from one insertion to the next.
+    """
+
+    __slots__ = ("answer", "asked", "max_storage", "parent", "samples", "spans", "stamps")
 
     def __init__(self, max_storage: int) -> None:
         self.max_storage = max_storage
         #: Stamps in ns, oldest first; ``samples[i]`` is the transform at ``stamps[i]``.
         self.stamps: list[int] = []
         self.samples: list[Sample] = []
+        #: ``spans[i]``: from ``samples[i]`` to ``samples[i + 1]`` (`span`).
+        self.spans: list[Span | None] = []
+        #: The parent of every sample held: 0 when none is, -1 when they differ.
+        self.parent = 0
         #: The last time `get` was asked for and its answer, until the next insertion: the
         #: frames of a tree are usually looked up many times at one time.
         self.asked = -1
@@ -132,20 +167,12 @@ class TimeCache:
         if time < earliest:
             return _past(time, earliest)
         i = bisect_right(stamps_, time) - 1
-        samples = self.samples
-        one = samples[i]
-        two = samples[i + 1]
-        if one[0] != two[0]:
-            return one
-        t1 = stamps_[i]
-        span = stamps_[i + 1] - t1
-        into = time - t1
-        # Duration::toSec() of each (seconds + 1e-9 * nanoseconds), as tf2 divides them
-        if span < SECOND:
-            return interpolate(one, two, (1e-9 * into) / (1e-9 * span))
-        return interpolate(one, two, stamps.to_sec(into) / stamps.to_sec(span))
+        at = self.spans[i]
+        if at is None:
+            return self.samples[i]
+        return interpolate(self.samples[i], at, time)
 
-    def parent(self, time: int) -> int | str:
+    def parent_at(self, time: int) -> int | str:
         """The parent frame's id at ``time``, or tf2's text of why there is none."""
         stamps_ = self.stamps
         count = len(stamps_)
@@ -172,29 +199,45 @@ class TimeCache:
         tf2's text."""
         self.asked = -1
         stamps_ = self.stamps
+        samples = self.samples
+        spans = self.spans
         if stamps_:
             latest = stamps_[-1]
             if latest > stamp + self.max_storage:
                 return _OLD_DATA
             if stamp > latest:
+                spans.append(span(latest, samples[-1], stamp, sample))
                 stamps_.append(stamp)
-                self.samples.append(sample)
+                samples.append(sample)
             else:
                 i = bisect_right(stamps_, stamp)
                 if i and stamps_[i - 1] == stamp:
                     return _REPEATED_DATA
+                after = span(stamp, sample, stamps_[i], samples[i])
+                if i:
+                    spans[i - 1 : i] = [span(stamps_[i - 1], samples[i - 1], stamp, sample), after]
+                else:
+                    spans.insert(0, after)
                 stamps_.insert(i, stamp)
-                self.samples.insert(i, sample)
+                samples.insert(i, sample)
+            if sample[0] != self.parent:
+                self.parent = -1
         else:
             stamps_.append(stamp)
-            self.samples.append(sample)
+            samples.append(sample)
+            self.parent = sample[0]
         latest = stamps_[-1] - self.max_storage
         if stamps_[0] < latest:
             drop = 1
             while drop < len(stamps_) and stamps_[drop] < latest:
                 drop += 1
             del stamps_[:drop]
-            del self.samples[:drop]
+            del samples[:drop]
+            del spans[:drop]
+            if self.parent == -1:  # the other parent's samples may all be gone
+                first = samples[0][0]
+                if all(held[0] == first for held in samples):
+                    self.parent = first
         return None
 
     def latest(self) -> tuple[int, int]:
@@ -214,26 +257,31 @@ class TimeCache:
 
     def clear(self) -> None:
         self.asked = -1
+        self.parent = 0
         self.stamps.clear()
         self.samples.clear()
+        self.spans.clear()
 
 
 class StaticCache:
     """The one transform of a static frame, the same at every time (its stamp reads 0)."""
 
-    __slots__ = ("sample",)
+    __slots__ = ("parent", "sample")
 
     def __init__(self) -> None:
         self.sample: Sample = (0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+        #: The sample's parent, as `TimeCache.parent`.
+        self.parent = 0
 
     def get(self, time: int) -> Sample | str:
         return self.sample
 
-    def parent(self, time: int) -> int | str:
+    def parent_at(self, time: int) -> int | str:
         return self.sample[0]
 
     def insert(self, stamp: int, sample: Sample) -> str | None:
         self.sample = sample
+        self.parent = sample[0]
         return None
 
     def latest(self) -> tuple[int, int]:
@@ -254,4 +302,4 @@ class StaticCache:
 
 Cache = TimeCache | StaticCache
 
-__all__ = ["Cache", "Sample", "StaticCache", "TimeCache", "interpolate"]
+__all__ = ["Cache", "Sample", "Span", "StaticCache", "TimeCache", "interpolate", "span"]

@@ -14,6 +14,17 @@ common ancestor. The arithmetic is tf2's LinearMath in the same order, so a look
 1's numbers bit for bit (and ``tf_echo``'s ``-0.000`` where ROS 1 prints one). A lookup at
 time 0 uses the latest time all frames on the way share (``getLatestCommonTime``).
 
+Two ways make the same walk cheaper. At one time asked again (time 0, or the same stamp for
+every frame of a view), each frame's walk to the root is kept until the buffer changes
+(`_remembered`). At a new time each call (a message's stamp), the frames tf2's walk would
+visit are known beforehand wherever every frame on the way has had one parent over the whole
+buffer: the `_Plan` of the pair, kept until a parent changes, holds their transforms' lists,
+and `_climb` does each step's interpolation (from the `Span` the cache computed on insertion)
+and accumulation in tf2's operations, with no call per step; above the frame where the two
+walks meet, each step is interpolated once for both. Where a frame on the way has no
+transform at that time, or the tree is not so simple, `_walk` answers, with tf2's texts and
+its ways around a missing frame.
+
 Threads: every public method takes the core's lock, so a listener's thread may insert while
 others look up. `add_listener` callbacks run after each insertion, outside the lock.
 """
@@ -21,7 +32,8 @@ others look up. `add_listener` callbacks run after each insertion, outside the l
 from __future__ import annotations
 
 import threading
-from math import isnan
+from bisect import bisect_right
+from math import isnan, sin
 from typing import TYPE_CHECKING, Any
 
 from rosx.tf import stamps
@@ -32,15 +44,28 @@ from rosx.tf.exceptions import (
     InvalidArgumentException,
     LookupException,
 )
+from rosx.tf.stamps import SECOND
 
 if TYPE_CHECKING:
     from collections.abc import Callable
 
-    from rosx.tf.cache import Cache, Sample
+    from rosx.tf.cache import Cache, Sample, Span
 
 #: (tx, ty, tz, qx, qy, qz, qw)
 Transform = tuple[float, float, float, float, float, float, float]
 IDENTITY: Transform = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+#: One frame's transforms as `_climb` reads them: a `TimeCache`'s ``(stamps, samples, spans)``
+#: lists (changed in place by insertions), or a static frame's ``(None, sample, None)``.
+_Link = tuple["list[int] | None", Any, Any]
+#: How tf2's walk goes between two frames (`BufferCore._plan`): ``(_UP, the source's links up
+#: to the target, the target's own, [])``, ``(_DOWN, the target's links up to the source, the
+#: source's links to its root, [])`` or ``(_FULL, the source's links up to where the two
+#: walks meet, the target's, the links from there to the root)``. The second list of the
+#: first two is only read for whether it holds the time, as tf2 does.
+_Plan = tuple[int, list[_Link], list[_Link], list[_Link]]
+_UP = 0
+_DOWN = 1
+_FULL = 2
 
 #: tf2's default cache length, in ns (``BufferCore::DEFAULT_CACHE_TIME``: 10 s).
 DEFAULT_CACHE_TIME = 10 * stamps.SECOND
@@ -121,6 +146,118 @@ def _accumulate(acc: Transform, st: Sample) -> Transform:
     )
 
 
+def _holds(links: list[_Link], time: int) -> bool:
+    """Whether every link has a transform at ``time`` (a given time, not 0)."""
+    for stamps_, _, _ in links:
+        if stamps_ is not None and not (stamps_ and stamps_[0] <= time <= stamps_[-1]):
+            return False
+    return True
+
+
+def _edge(
+    stamps_: list[int], held: list[Sample], spans: Any, time: int, i: int
+) -> Sample | Span | None:
+    """What `_climb` reads at ``time`` where the bisection gave ``i`` at either end of a
+    cache, as `TimeCache.get` answers there: the newest or oldest sample itself at their
+    stamps, the first `Span` just after the oldest, None outside."""
+    count = len(stamps_)
+    if i == count:
+        return held[-1] if count and stamps_[-1] == time else None
+    if not i:
+        return None
+    return held[0] if stamps_[0] == time else spans[0]
+
+
+def _climb(
+    links: list[_Link], time: int, one: Transform, two: Transform | None = None
+) -> tuple[Transform, Transform | None] | None:
+    """tf2's accumulation up ``links`` at ``time`` (a given time, not 0) after ``one``, and
+    after ``two`` too where given (the part above where two walks meet: each step found
+    once): each step's transform as `TimeCache.get` interpolates it, then ``accum()``, both in
+    tf2's operations and order (a negation moved into a subtraction is exact); None where a
+    link has no transform at ``time`` (the caller asks `BufferCore._walk`)."""
+    ax, ay, az, bx, by, bz, bw = one
+    cx, cy, cz, dx, dy, dz, dw = IDENTITY if two is None else two
+    for stamps_, held, spans in links:
+        if stamps_ is None:  # static
+            _, tx, ty, tz, qx, qy, qz, qw = held
+        else:
+            i = bisect_right(stamps_, time)
+            at: Any = spans[i - 1] if 1 < i < len(stamps_) else _edge(stamps_, held, spans, time, i)
+            if at is None:
+                return None
+            if len(at) == 8:  # a sample as it is
+                _, tx, ty, tz, qx, qy, qz, qw = at
+            else:  # cache.interpolate, inline
+                t1, sec, th, d, px, py, pz, nx, ny, nz, x1, y1, z1, w1, x2, y2, z2, w2 = at
+                into = time - t1
+                ratio = (1e-9 * into if into < SECOND else stamps.to_sec(into)) / sec
+                s = 1.0 - ratio
+                tx = s * px + ratio * nx
+                ty = s * py + ratio * ny
+                tz = s * pz + ratio * nz
+                if th != 0.0:
+                    s0 = sin(s * th)
+                    s1 = sin(ratio * th)
+                    qx = (x1 * s0 + x2 * s1) * d
+                    qy = (y1 * s0 + y2 * s1) * d
+                    qz = (z1 * s0 + z2 * s1) * d
+                    qw = (w1 * s0 + w2 * s1) * d
+                else:
+                    qx, qy, qz, qw = x1, y1, z1, w1
+        # tf2's accum(): quatRotate(step, acc) + translation; step's rotation * acc's
+        nqx = -qx
+        x = qw * ax + qy * az - qz * ay
+        y = qw * ay + qz * ax - qx * az
+        z = qw * az + qx * ay - qy * ax
+        w = nqx * ax - qy * ay - qz * az
+        ax, ay, az, bx, by, bz, bw = (
+            w * nqx + x * qw - y * qz + z * qy + tx,
+            w * -qy + y * qw - z * qx + x * qz + ty,
+            w * -qz + z * qw - x * qy + y * qx + tz,
+            qw * bx + qx * bw + qy * bz - qz * by,
+            qw * by + qy * bw + qz * bx - qx * bz,
+            qw * bz + qz * bw + qx * by - qy * bx,
+            qw * bw - qx * bx - qy * by - qz * bz,
+        )
+        if two is not None:  # the same for the other walk
+            x = qw * cx + qy * cz - qz * cy
+            y = qw * cy + qz * cx - qx * cz
+            z = qw * cz + qx * cy - qy * cx
+            w = nqx * cx - qy * cy - qz * cz
+            cx, cy, cz, dx, dy, dz, dw = (
+                w * nqx + x * qw - y * qz + z * qy + tx,
+                w * -qy + y * qw - z * qx + x * qz + ty,
+                w * -qz + z * qw - x * qy + y * qx + tz,
+                qw * dx + qx * dw + qy * dz - qz * dy,
+                qw * dy + qy * dw + qz * dx - qx * dz,
+                qw * dz + qz * dw + qx * dy - qy * dx,
+                qw * dw - qx * dx - qy * dy - qz * dz,
+            )
+    return (ax, ay, az, bx, by, bz, bw), (None if two is None else (cx, cy, cz, dx, dy, dz, dw))
+
+
+def _follow(plan: _Plan, time: int) -> Transform | None:
+    """`lookup`'s answer at a given ``time`` along ``plan``, as tf2's walk composes it; None
+    where a frame on the way has no transform then."""
+    kind, first, second, above = plan
+    if kind == _FULL:
+        source = _climb(first, time, IDENTITY)
+        if source is None:
+            return None
+        target = _climb(second, time, IDENTITY)
+        if target is None:
+            return None
+        both = _climb(above, time, source[0], target[0])
+        return None if both is None else _full_path(both[0], both[1])  # type: ignore[arg-type]
+    if not _holds(second, time):
+        return None
+    climbed = _climb(first, time, IDENTITY)
+    if climbed is None:
+        return None
+    return climbed[0] if kind == _UP else _inverse(climbed[0])
+
+
 class BufferCore:
     """Transforms between frames over time: tf2's ``BufferCore`` (see the module docstring).
 
@@ -152,6 +289,11 @@ class BufferCore:
         self._walks_time = -1
         self._common: dict[tuple[int, int], tuple[int, int, str]] = {}
         self._walks_version = 0
+        #: The last time given to `lookup`: asked again, the walks are kept (`_remembered`).
+        self._given = -1
+        #: `_Plan` by (target id, source id), None where `_walk` goes; emptied when a frame's
+        #: parents change.
+        self._plans: dict[tuple[int, int], _Plan | None] = {}
 
     # -- storing -----------------------------------------------------------------------------
 
@@ -208,10 +350,14 @@ class BufferCore:
             if cache is None:
                 cache = StaticCache() if is_static else TimeCache(self.cache_time)
                 self._caches[child_id] = cache
+            before = cache.parent
             refused = cache.insert(stamp, (self._id_of(parent), tx, ty, tz, qx, qy, qz, qw))
             if refused is None:
                 self._authority[child_id] = authority
                 self.version += 1
+                # a plan holds a static frame's sample itself, a moving frame's lists
+                if cache.parent != before or isinstance(cache, StaticCache):
+                    self._plans.clear()
         if refused is not None:
             if self.report is not None:
                 self.report(
@@ -241,6 +387,7 @@ class BufferCore:
                 if cache is not None:
                     cache.clear()
             self.version += 1
+            self._plans.clear()
 
     def add_listener(self, callback: Callable[[], object]) -> None:
         """Call ``callback()`` after each transform stored."""
@@ -310,13 +457,82 @@ class BufferCore:
             if not target_id or not source_id or target[0] == "/" or source[0] == "/":
                 target_id = self.validate("lookupTransform argument target_frame", target)
                 source_id = self.validate("lookupTransform argument source_frame", source)
-            found = self._remembered(time, target_id, source_id)
-            if found is not None:
-                return found
+            if time and time != self._given:  # a new time: along the pair's plan
+                self._given = time
+                try:
+                    plan = self._plans[(target_id, source_id)]
+                except KeyError:
+                    plan = self._plans[(target_id, source_id)] = self._plan(target_id, source_id)
+                if plan is not None:
+                    done = _follow(plan, time)
+                    if done is not None:
+                        return time, done
+            else:
+                found = self._remembered(time, target_id, source_id)
+                if found is not None:
+                    return found
             code, stamp, result, text = self._walk(time, target_id, source_id, True)
         if code:
             raise _RAISE[code](text)
         return stamp, result
+
+    # -- plans kept until a parent changes --------------------------------------------------
+
+    def _up(self, frame: int) -> tuple[list[int], int] | None:
+        """The frames with transforms from ``frame`` up and the root above them, each frame
+        with one parent over its whole buffer; None where one has had two, or none, or for a
+        loop."""
+        caches = self._caches
+        frames: list[int] = []
+        while True:
+            cache = caches[frame]
+            if cache is None:
+                return frames, frame
+            parent = cache.parent
+            if parent <= 0 or len(frames) >= MAX_GRAPH_DEPTH:
+                return None
+            frames.append(frame)
+            frame = parent
+
+    def _plan(self, target_id: int, source_id: int) -> _Plan | None:
+        """The `_Plan` of tf2's walk between two frames (see `_walk`) where every transform
+        on the way is found; None where `_walk` itself goes."""
+        up = self._up(source_id)
+        down = self._up(target_id)
+        if up is None or down is None:
+            return None
+        source_frames, source_root = up
+        target_frames, target_root = down
+        if target_id in source_frames:
+            i = source_frames.index(target_id)
+            return _UP, self._links(source_frames[:i]), self._links(source_frames[i : i + 1]), []
+        if source_id in target_frames:
+            j = target_frames.index(source_id)
+            return _DOWN, self._links(target_frames[:j]), self._links(source_frames), []
+        if source_root != target_root:
+            return None
+        # both walks go on to the root from the first frame they share
+        shared = {*source_frames, source_root}
+        k = 0
+        while k < len(target_frames) and target_frames[k] not in shared:
+            k += 1
+        j = source_frames.index(target_frames[k]) if k < len(target_frames) else len(source_frames)
+        return (
+            _FULL,
+            self._links(source_frames[:j]),
+            self._links(target_frames[:k]),
+            self._links(source_frames[j:]),
+        )
+
+    def _links(self, frames: list[int]) -> list[_Link]:
+        links: list[_Link] = []
+        for frame in frames:
+            cache = self._caches[frame]
+            if isinstance(cache, TimeCache):
+                links.append((cache.stamps, cache.samples, cache.spans))
+            elif cache is not None:
+                links.append((None, cache.sample, None))
+        return links
 
     # -- walks remembered until the next insertion -------------------------------------------
 
@@ -512,7 +728,7 @@ class BufferCore:
             if cache is None:
                 top_parent = frame
                 break
-            step: Any = cache.get(time) if accumulate else cache.parent(time)
+            step: Any = cache.get(time) if accumulate else cache.parent_at(time)
             if isinstance(step, str):
                 top_parent = frame
                 extrapolation = step
@@ -551,7 +767,7 @@ class BufferCore:
             cache = caches[frame] if frame < count else None
             if cache is None:
                 break
-            step = cache.get(time) if accumulate else cache.parent(time)
+            step = cache.get(time) if accumulate else cache.parent_at(time)
             if isinstance(step, str):
                 return (
                     EXTRAPOLATION_ERROR,
@@ -729,7 +945,7 @@ class BufferCore:
             if cache is None:
                 top_parent = frame
                 break
-            parent = cache.parent(time)
+            parent = cache.parent_at(time)
             if isinstance(parent, str):
                 top_parent = frame
                 extrapolation = parent
@@ -747,7 +963,7 @@ class BufferCore:
             cache = caches[frame] if frame < count else None
             if cache is None:
                 break
-            parent = cache.parent(time)
+            parent = cache.parent_at(time)
             if isinstance(parent, str):
                 raise ExtrapolationException(self._on_the_way(parent, source_id, target_id))
             if frame == source_id:
@@ -790,7 +1006,7 @@ class BufferCore:
             cache = self._caches[number] if number else None
             if cache is None:
                 return None
-            parent = cache.parent(time)
+            parent = cache.parent_at(time)
             if isinstance(parent, str) or not parent:
                 return None
             return self._names[parent]
