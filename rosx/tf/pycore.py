@@ -110,8 +110,10 @@ class BufferCore(core.BufferCore):
         msg_class, time_class = classes
         msg = msg_class()
         header = msg.header
-        secs, nsecs = divmod(stamp, stamps.SECOND)
-        header.stamp = time_class(secs, nsecs)
+        # divmod's pair is already canonical: the constructor's checks would only cost time
+        when: Any = object.__new__(time_class)
+        when.secs, when.nsecs = divmod(stamp, stamps.SECOND)
+        header.stamp = when
         header.frame_id = target
         msg.child_frame_id = source
         transform = msg.transform
