@@ -72,6 +72,8 @@ DEFAULT_CACHE_TIME = 10 * stamps.SECOND
 #: tf2's ``MAX_GRAPH_DEPTH``: a walk longer than this is a loop.
 MAX_GRAPH_DEPTH = 1000
 _NORMALIZATION_TOLERANCE = 10e-3
+#: How many times' walks to the root `BufferCore._walk_up` keeps between two insertions.
+_KEPT_TIMES = 16
 
 # tf2_msgs/TF2Error codes, as walkToTopParent returns them.
 NO_ERROR = 0
@@ -283,10 +285,9 @@ class BufferCore:
         self._listeners: list[Callable[[], object]] = []
         #: Counts insertions, so that waiters and views know something changed.
         self.version = 0
-        #: Walks to the root at `_walks_time`, and latest common times, valid while
+        #: Walks to the root by time and frame (`_walk_up`), and latest common times, valid while
         #: `version` is unchanged.
-        self._walks: dict[int, Any] = {}
-        self._walks_time = -1
+        self._walks: dict[int, dict[int, Any]] = {}
         self._common: dict[tuple[int, int], tuple[int, int, str]] = {}
         self._walks_version = 0
         #: The last time given to `lookup`: asked again, the walks are kept (`_remembered`).
@@ -585,10 +586,14 @@ class BufferCore:
         """``(frames, sums, clean, root)``: the frames from ``frame`` to its root at ``time``
         whose transforms were found, the accumulated transform after each, whether the walk
         reached a frame without transforms (the root), and that frame; None for a loop."""
-        if time != self._walks_time:  # the walks of one time are kept: that of the last asked
-            self._walks.clear()
-            self._walks_time = time
-        walk = self._walks.get(frame)
+        # by time: pairs of frames published at different rates have different latest
+        # common times; a few times are kept, that of each kind of pair
+        walks = self._walks.get(time)
+        if walks is None:
+            if len(self._walks) >= _KEPT_TIMES:
+                self._walks.clear()
+            walks = self._walks[time] = {}
+        walk = walks.get(frame)
         if walk is not None:
             return walk
         caches = self._caches
@@ -626,7 +631,7 @@ class BufferCore:
             frame = parent
             if len(frames) > MAX_GRAPH_DEPTH:
                 return None
-        walk = self._walks[start] = (frames, accs, clean, frame)
+        walk = walks[start] = (frames, accs, clean, frame)
         return walk
 
     def lookup_full(
