@@ -3,11 +3,14 @@
 The same scripts run twice: under ROS 1's Python with Debian's ``tf2_ros`` and ``rospy``, and
 under this Python with rosx's (``rosx run-script``, whose ``tf2_ros`` is `rosx.tf`):
 
-* ``lookup``: ``Buffer.lookup_transform`` on a 30-frame robot tree (map, odom, a base, two
-  six-joint arms with grippers, sensors, a head, wheels; depth up to 12) holding 10 s of
-  transforms at 100 Hz, between frame pairs drawn at random: at the latest time
-  (``rospy.Time()``), and at random times in the buffer (each lookup its own time, so no
-  answer can be kept from the one before). p50 and p99 of single calls, in µs.
+* ``lookup``: ``Buffer.lookup_transform`` on a tree holding 10 s of transforms, between
+  frame pairs drawn at random: at the latest time (``rospy.Time()``), and at random times in
+  the buffer (each lookup its own time, so no answer can be kept from the one before). p50
+  and p99 of single calls, in µs. Two trees: ``arms``, the target's, 30 frames all moving at
+  100 Hz (map, odom, a base, two six-joint arms with grippers, sensors, a head, wheels;
+  chains up to 11 frames deep), and ``robot``, a mobile base as its URDF and a driver
+  publish it (map -> odom -> base_footprint at 20 Hz, wheels at 50 Hz from the joint states,
+  base_link, laser, imu, caster and camera static).
 * ``listener``: a ``TransformListener`` taking 50 frames at 100 Hz on ``/tf`` (one TFMessage
   of 50 transforms a hundred times a second, from a rospy publisher in both cases): the CPU
   it uses, in % of one core, over ``--seconds``.
@@ -17,7 +20,7 @@ under this Python with rosx's (``rosx run-script``, whose ``tf2_ros`` is `rosx.t
 
 Targets (DESIGN.md): lookup p50 ≤ 1 x Debian's; listener ≤ 10 % of one core; latency p50 ≤
 0.5 x ROS 1's. Run: ``python bench/bench_tf.py [--only lookup|listener|latency]
-[--seconds N] [--messages N] [--rounds N]``.
+[--tree arms|robot] [--seconds N] [--messages N] [--rounds N]``.
 """
 
 from __future__ import annotations
@@ -39,8 +42,8 @@ sys.path.insert(0, str(ROOT))
 from bench import interpreter  # noqa: E402 -- after the path is set
 from bench.interpreter import ROS1_PYTHON  # noqa: E402
 
-# A robot: (child, parent), in the order they are sent.
-TREE = [
+# Two arms on a mobile base: (child, parent, Hz), in the order they are sent.
+ARMS = [
     ("odom", "map"),
     ("base_footprint", "odom"),
     ("base_link", "base_footprint"),
@@ -61,7 +64,26 @@ TREE = [
     ("gps", "base_link"),
     ("bumper", "base_footprint"),
 ]
-assert len(TREE) == 29  # 30 frames with map
+assert len(ARMS) == 29  # 30 frames with map
+
+# A mobile base: (child, parent, Hz), 0 for a static joint.
+ROBOT = [
+    ("odom", "map", 20),
+    ("base_footprint", "odom", 20),
+    ("base_link", "base_footprint", 0),
+    ("laser", "base_link", 0),
+    ("imu_link", "base_link", 0),
+    ("wheel_left_link", "base_link", 50),
+    ("wheel_right_link", "base_link", 50),
+    ("caster_link", "base_link", 0),
+    ("camera_link", "base_link", 0),
+    ("camera_optical_frame", "camera_link", 0),
+]
+
+TREES = {
+    "arms": ([(child, parent, 100) for child, parent in ARMS], "30 frames, all at 100 Hz"),
+    "robot": (ROBOT, "11 frames: odom 20 Hz, wheels 50 Hz, 6 static"),
+}
 
 LOOKUP = r"""
 import json, math, random, sys, time
@@ -70,8 +92,10 @@ from geometry_msgs.msg import TransformStamped
 tree = json.loads(sys.argv[1]); count = int(sys.argv[2])
 buffer = tf2_ros.Buffer(rospy.Duration(10), debug=False)
 start = 1000.0
-for k in range(1000):  # 10 s at 100 Hz
-    for i, (child, parent) in enumerate(tree):
+for k in range(1000):  # 10 s in steps of 10 ms
+    for i, (child, parent, hz) in enumerate(tree):
+        if (k and not hz) or (hz and k % (100 // hz)):
+            continue
         t = TransformStamped()
         t.header.frame_id = parent
         t.child_frame_id = child
@@ -81,8 +105,11 @@ for k in range(1000):  # 10 s at 100 Hz
         t.transform.translation.y = math.sin(a)
         t.transform.rotation.z = math.sin(a / 2)
         t.transform.rotation.w = math.cos(a / 2)
-        buffer.set_transform(t, "bench")
-frames = ["map"] + [c for c, _ in tree]
+        if hz:
+            buffer.set_transform(t, "bench")
+        else:
+            buffer.set_transform_static(t, "bench")
+frames = ["map"] + [c for c, _, _ in tree]
 rng = random.Random(30)
 pairs = [rng.sample(frames, 2) for _ in range(count)]
 times = [rospy.Time.from_sec(start + 0.5 + 9.0 * rng.random()) for _ in range(count)]
@@ -261,14 +288,18 @@ def ratio(mine: float, theirs: float) -> str:
     return f"{mine / theirs:.2f} x" if theirs else "-"
 
 
-def bench_lookup(folder: Path, rounds: int, count: int) -> None:
+def bench_lookup(folder: Path, rounds: int, count: int, tree: str) -> None:
     script = folder / "lookup.py"
     script.write_text(LOOKUP)
     runs: dict[str, list[dict[str, list[float]]]] = {"ros1": [], "rosx": []}
+    frames = json.dumps(TREES[tree][0])
     for _ in range(rounds):
         for lib in ("ros1", "rosx"):
-            runs[lib].append(run(lib, script, json.dumps(TREE), count))  # type: ignore[arg-type]
-    print(f"\nlookup_transform, 30 frames, 10 s at 100 Hz, {count} lookups (µs, median of rounds)")
+            runs[lib].append(run(lib, script, frames, count))  # type: ignore[arg-type]
+    print(
+        f"\nlookup_transform, the {tree} tree ({TREES[tree][1]}; 10 s), {count} lookups"
+        " (µs, median of rounds)"
+    )
     print(f"  {'':<28}{'Debian tf2_ros':>16}{'rosx':>10}{'rosx/ROS 1':>12}")
     for case in ("latest", "random"):
         for index, name in ((0, "p50"), (1, "p99")):
@@ -325,13 +356,15 @@ def main() -> None:
     parser.add_argument("--messages", type=int, default=500)
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--lookups", type=int, default=20000)
+    parser.add_argument("--tree", choices=tuple(TREES), help="one lookup tree (both by default)")
     interpreter.add_option(parser)
     args = parser.parse_args()
     interpreter.run_on(args.python)
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
         if args.only in (None, "lookup"):
-            bench_lookup(folder, args.rounds, args.lookups)
+            for tree in (args.tree,) if args.tree else TREES:
+                bench_lookup(folder, args.rounds, args.lookups, tree)
         if args.only in (None, "listener", "latency"):
             master_process, master = start_master()
             try:
