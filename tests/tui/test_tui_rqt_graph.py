@@ -212,12 +212,15 @@ def test_timer_refreshes_do_not_pile_up_behind_a_slow_one() -> None:
     app = make_graph_app(source, GraphOptions(mode=Mode.ACTIVE), period=0.05)
 
     async def drive() -> None:
+        started = time.monotonic()  # before the first read, which the app starts as it mounts
         async with app.run_test(size=WIDE) as pilot:
-            started = time.monotonic()
-            await asyncio.sleep(1.2)  # 24 periods
-            # Piled up, each period would start a read; one at a time, each read takes 0.5 s
-            # (a loaded machine only makes them fewer).
-            assert 1 <= source.reads <= (time.monotonic() - started) / source.delay + 1
+            deadline = started + 60
+            while source.reads < 3 and time.monotonic() < deadline:
+                await asyncio.sleep(0.05)
+            # Piled up, each period (0.05 s) would start a read: the third within 0.1 s of the
+            # first. One at a time, each read takes 0.5 s: the third starts 1 s after the first
+            # or later (a loaded machine only makes them later).
+            assert 3 <= source.reads <= (time.monotonic() - started) / source.delay + 1
             await settle(pilot)
             assert "t:/turtle1/cmd_vel" in app.drawing.boxes
 
