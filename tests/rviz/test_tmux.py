@@ -59,6 +59,11 @@ def words(rows: list[str]) -> str:
     return " ".join(" ".join(rows).split())
 
 
+def colours(term: Tmux) -> set[str | None]:
+    """Every foreground and background colour on the screen."""
+    return {colour for row in term.cells() for cell in row for colour in (cell.fg, cell.bg)}
+
+
 @pytest.mark.parametrize("size", SIZES)
 def test_rviz_beside_the_robot_simulator(tmp_path: Path, size: tuple[int, int], robot: str) -> None:
     columns, _ = size
@@ -70,8 +75,11 @@ def test_rviz_beside_the_robot_simulator(tmp_path: Path, size: tuple[int, int], 
             STARTUP,
         )
         assert "Fixed Frame: map" in words(rows)
-        colours = {colour for row in term.cells() for cell in row for colour in (cell.fg, cell.bg)}
-        assert FREE in colours and LASER in colours
+        # The map and the scan are drawn in their colours once a frame after their messages
+        # is on screen: a later capture than the text's on a loaded machine.
+        wait_for(
+            lambda: {FREE, LASER} <= colours(term), STARTUP, "the map's free space and the laser"
+        )
         footer = rows[-1].split()
         assert footer[:2] == ["q", "Quit"]
         if columns >= 120:
