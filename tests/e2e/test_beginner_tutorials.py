@@ -184,6 +184,10 @@ class Terminal:
     def stop_last(self) -> None:
         stop(self.background.pop())
 
+    def wait_last(self, timeout: float = 60) -> None:
+        """Wait for the last program started in the background to end by itself."""
+        self.background.pop().wait(timeout)
+
     def close(self) -> None:
         while self.background:
             self.stop_last()
@@ -482,6 +486,11 @@ def test_the_beginner_tutorials(terminal: Terminal) -> None:  # noqa: PLR0915 - 
     wait_for(lambda: "/rostopic" in t.run("rosnode list"), what="rostopic echo")
     t.run("cd ~/bagfiles\nrosbag play --immediate subset.bag --topics /turtle1/cmd_vel")
     wait_for(lambda: echo.read_text().count("linear:") == 2, what="the bag's messages echoed")
+    # roswtf's online checks below see the graph as it is: rostopic echo -n 2 ends after its
+    # two messages, and must have left it before (else ROS 1's roswtf and rosx's, one after the
+    # other, would each see it at a different moment of its leaving).
+    t.wait_last()
+    wait_for(lambda: "/rostopic" not in t.run("rosnode list"), what="rostopic echo gone")
 
     # 19. Getting started with roswtf
     wtf = t.run("roscd beginner_tutorials\nroswtf")
