@@ -16,7 +16,8 @@ under this Python with rosx's (``rosx run-script``, whose ``tf2_ros`` is `rosx.t
   it uses, in % of one core, over ``--seconds``.
 * ``latency``: a ``TransformBroadcaster`` in one process, a ``Buffer`` and listener in
   another: from ``sendTransform`` to the transform being found by ``lookup_transform`` (the
-  listener polls every 0.1 ms), p50 and p99 over ``--messages`` transforms at 50 Hz.
+  listener polls every 0.1 ms), p50 and p99 over ``--messages`` transforms at 50 Hz, in
+  each of ``--rounds``.
 
 Targets (DESIGN.md): lookup p50 ≤ 1 x Debian's; listener ≤ 10 % of one core; latency p50 ≤
 0.5 x ROS 1's. Run: ``python bench/bench_tf.py [--only lookup|listener|latency]
@@ -300,13 +301,16 @@ def bench_lookup(folder: Path, rounds: int, count: int, tree: str) -> None:
         f"\nlookup_transform, the {tree} tree ({TREES[tree][1]}; 10 s), {count} lookups"
         " (µs, median of rounds)"
     )
-    print(f"  {'':<28}{'Debian tf2_ros':>16}{'rosx':>10}{'rosx/ROS 1':>12}")
+    print(f"  {'':<28}{'Debian tf2_ros':>16}{'rosx':>10}{'rosx/ROS 1':>12}   each round")
     for case in ("latest", "random"):
         for index, name in ((0, "p50"), (1, "p99")):
             theirs = sorted(r[case][index] for r in runs["ros1"])[rounds // 2]
             mine = sorted(r[case][index] for r in runs["rosx"])[rounds // 2]
             label = f"{'at the latest time' if case == 'latest' else 'at random times'} {name}"
-            print(f"  {label:<28}{theirs:>16.2f}{mine:>10.2f}{ratio(mine, theirs):>12}")
+            pairs = zip(runs["rosx"], runs["ros1"], strict=True)
+            each = sorted(r[case][index] / o[case][index] for r, o in pairs)
+            spread = f"{each[0]:.2f}-{each[-1]:.2f} x"
+            print(f"  {label:<28}{theirs:>16.2f}{mine:>10.2f}{ratio(mine, theirs):>12}   {spread}")
 
 
 def bench_listener(folder: Path, seconds: float, master: str) -> None:
@@ -326,27 +330,37 @@ def bench_listener(folder: Path, seconds: float, master: str) -> None:
     print(f"  (each frame's rate in the buffer: ROS 1 {rates[0]:.1f} Hz, rosx {rates[1]:.1f} Hz)")
 
 
-def bench_latency(folder: Path, messages: int, master: str) -> None:
+def bench_latency(folder: Path, messages: int, master: str, rounds: int) -> None:
     broadcaster = folder / "broadcaster.py"
     broadcaster.write_text(BROADCASTER)
     waiter = folder / "waiter.py"
     waiter.write_text(WAITER)
-    results = {}
-    for lib in ("ros1", "rosx"):
-        listening = spawn(lib, waiter, master, messages)
-        assert listening.stdout is not None
-        listening.stdout.readline()  # ready
-        sending = spawn(lib, broadcaster, master, messages)
-        try:
-            out, _ = listening.communicate(timeout=120)
-        finally:
-            stop(sending)
-            stop(listening)
-        results[lib] = json.loads(out.strip().splitlines()[-1])
-    print(f"\nsendTransform -> lookup_transform finds it, {messages} transforms at 50 Hz (µs)")
+    runs: dict[str, list[dict[str, float]]] = {"ros1": [], "rosx": []}
+    for _ in range(rounds):
+        for lib in ("ros1", "rosx"):
+            listening = spawn(lib, waiter, master, messages)
+            assert listening.stdout is not None
+            listening.stdout.readline()  # ready
+            sending = spawn(lib, broadcaster, master, messages)
+            try:
+                out, _ = listening.communicate(timeout=120)
+            finally:
+                stop(sending)
+                stop(listening)
+            runs[lib].append(json.loads(out.strip().splitlines()[-1]))
+    print(
+        f"\nsendTransform -> lookup_transform finds it, {messages} transforms at 50 Hz"
+        " (µs, median of rounds)"
+    )
     for name in ("p50", "p99"):
-        theirs, mine = results["ros1"][name], results["rosx"][name]
-        print(f"  {name}: ROS 1 {theirs:.0f}   rosx {mine:.0f}   rosx/ROS 1 {ratio(mine, theirs)}")
+        theirs = sorted(r[name] for r in runs["ros1"])[rounds // 2]
+        mine = sorted(r[name] for r in runs["rosx"])[rounds // 2]
+        pairs = zip(runs["rosx"], runs["ros1"], strict=True)
+        each = sorted(r[name] / o[name] for r, o in pairs)
+        print(
+            f"  {name}: ROS 1 {theirs:.0f}   rosx {mine:.0f}   rosx/ROS 1 {ratio(mine, theirs)}"
+            f"   each round {each[0]:.2f}-{each[-1]:.2f} x"
+        )
 
 
 def main() -> None:
@@ -371,7 +385,7 @@ def main() -> None:
                 if args.only in (None, "listener"):
                     bench_listener(folder, args.seconds, master)
                 if args.only in (None, "latency"):
-                    bench_latency(folder, args.messages, master)
+                    bench_latency(folder, args.messages, master, args.rounds)
             finally:
                 master_process.terminate()
                 master_process.wait()
