@@ -17,6 +17,7 @@ import pytest
 from rosx.bag.reader import BagReader
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node, Rate
+from rosx_turtle.engine.constants import DT
 from tests.support.cli import clean_environ
 from tests.support.procs import free_port, port_open, running, stop, wait_for
 
@@ -33,6 +34,8 @@ class Pond:
         self.node = node
         self.pose: Any = None
         self._poses = 0
+        #: Poses heard of a moving turtle: the ticks turtlesim carried out while it moved.
+        self.moving_ticks = 0
         self._lock = threading.Lock()
         node.subscribe("/turtle1/pose", Pose, self._heard)
         self.cmd = node.advertise("/turtle1/cmd_vel", Twist, queue_size=10)
@@ -44,6 +47,8 @@ class Pond:
         with self._lock:
             self.pose = msg
             self._poses += 1
+            if msg.linear_velocity != 0.0:
+                self.moving_ticks += 1
 
     def still(self) -> Any:
         """The pose once the turtle has stopped moving."""
@@ -107,6 +112,7 @@ def test_record_drive_reset_play_and_the_turtle_ends_in_the_same_place(pond: Pon
             what="the recorder on /turtle1/cmd_vel",
         )
         wait_for(lambda: pond.cmd.get_num_connections() == 2, what="turtlesim and the recorder")
+        pond.moving_ticks = 0
         rate = Rate(10)
         for i in range(25):
             msg = Twist()
@@ -115,6 +121,7 @@ def test_record_drive_reset_play_and_the_turtle_ends_in_the_same_place(pond: Pon
             pond.cmd.publish(msg)
             rate.sleep()
         first = pond.still()
+        first_ticks = pond.moving_ticks
     finally:
         stop(recorder)
     assert recorder.returncode == 0, recorder.stderr.read() if recorder.stderr else ""
@@ -126,6 +133,7 @@ def test_record_drive_reset_play_and_the_turtle_ends_in_the_same_place(pond: Pon
     assert {"/turtle1/cmd_vel", "/turtle1/pose", "/rosout"} <= topics
 
     pond.reset()
+    pond.moving_ticks = 0
     player = pond.rosx("rosbag", "play", "-q", "tutorial.bag", "--topics", "/turtle1/cmd_vel")
     try:
         out, err = player.communicate(timeout=60)
@@ -134,7 +142,11 @@ def test_record_drive_reset_play_and_the_turtle_ends_in_the_same_place(pond: Pon
     assert player.returncode == 0, err
     assert out.endswith("\nDone.\n")
     second = pond.still()
-    assert abs(second.x - first.x) < 0.25
-    assert abs(second.y - first.y) < 0.25
-    assert abs(second.theta - first.theta) < 0.15
+    # turtlesim leaves out a tick that comes late (as roscpp's timer does), which a loaded
+    # machine causes in either run: each tick one run had and the other not is one step of
+    # the turtle (1.5 m/s, 1 rad/s for DT) that the two places may differ by.
+    missed = abs(pond.moving_ticks - first_ticks)
+    assert abs(second.x - first.x) < 0.25 + missed * 1.5 * DT
+    assert abs(second.y - first.y) < 0.25 + missed * 1.5 * DT
+    assert abs(second.theta - first.theta) < 0.15 + missed * 1.0 * DT
     assert abs(first.x - START_X) > 1.0  # the turtle did move
