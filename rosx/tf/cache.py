@@ -11,16 +11,18 @@ A sample is a tuple ``(parent_id, tx, ty, tz, qx, qy, qz, qw)``; interpolation b
 samples is tf2's (linear translation, slerp rotation, the same operations in the same order),
 so the numbers are ROS 1's to the last bit. What tf2's slerp computes from the two samples
 alone (the angle between them, ``1 / sin`` of it, which way round) does not depend on the time
-asked, so a `TimeCache` computes it once, when a sample arrives, as the `Span` of each two
-neighbours: a lookup at a past time then costs a bisection, two sines and a few products per
-frame (`rosx.tf.core`'s ``_climb``). Nothing here locks or does I/O: the buffer
-(`rosx.tf.core`) does the locking.
+asked, so a `TimeCache` computes it once for each two neighbours, as their `Span`, the first
+time a lookup falls between them (most never are: a listener stores thousands a second, and
+most lookups ask the latest time). A lookup at a past time then costs a bisection, two sines
+and a few products per frame (`rosx.tf.core`'s ``_climb``). Nothing here locks or does I/O:
+the buffer (`rosx.tf.core`) does the locking.
 """
 
 from __future__ import annotations
 
 from bisect import bisect_right
 from math import acos, sin, sqrt
+from typing import Any
 
 from rosx.tf import stamps
 from rosx.tf.stamps import SECOND
@@ -72,6 +74,10 @@ Span = tuple[
 ]  # fmt: skip
 
 
+#: A `Span` not computed yet (`TimeCache.spans`).
+LATER: tuple[()] = ()
+
+
 def span(t1: int, one: Sample, t2: int, two: Sample) -> Span | None:
     """The `Span` from ``one`` (at ``t1``) to ``two`` (at ``t2``, later)."""
     if one[0] != two[0]:
@@ -91,6 +97,12 @@ def span(t1: int, one: Sample, t2: int, two: Sample) -> Span | None:
     # Duration::toSec() of the span, as tf2 divides by it
     seconds = stamps.to_sec(t2 - t1)
     return (t1, seconds, theta, d, ax, ay, az, bx, by, bz, x1, y1, z1, w1, x2, y2, z2, w2)
+
+
+def fill(stamps_: list[int], samples: list[Sample], spans: list[Any], i: int) -> Span | None:
+    """``spans[i]``, computed now if it was `LATER`."""
+    at = spans[i] = span(stamps_[i], samples[i], stamps_[i + 1], samples[i + 1])
+    return at
 
 
 def interpolate(one: Sample, at: Span, time: int) -> Sample:
@@ -127,8 +139,9 @@ class TimeCache:
         #: Stamps in ns, oldest first; ``samples[i]`` is the transform at ``stamps[i]``.
         self.stamps: list[int] = []
         self.samples: list[Sample] = []
-        #: ``spans[i]``: from ``samples[i]`` to ``samples[i + 1]`` (`span`).
-        self.spans: list[Span | None] = []
+        #: ``spans[i]``: from ``samples[i]`` to ``samples[i + 1]`` (`span`), `LATER` until
+        #: a lookup needs it (`fill`).
+        self.spans: list[Span | tuple[()] | None] = []
         #: The parent of every sample held: 0 when none is, -1 when they differ.
         self.parent = 0
         #: The last time `get` was asked for and its answer, until the next insertion: the
@@ -168,9 +181,11 @@ class TimeCache:
             return _past(time, earliest)
         i = bisect_right(stamps_, time) - 1
         at = self.spans[i]
+        if at is LATER:
+            at = fill(stamps_, self.samples, self.spans, i)
         if at is None:
             return self.samples[i]
-        return interpolate(self.samples[i], at, time)
+        return interpolate(self.samples[i], at, time)  # type: ignore[arg-type]
 
     def parent_at(self, time: int) -> int | str:
         """The parent frame's id at ``time``, or tf2's text of why there is none."""
@@ -206,18 +221,17 @@ class TimeCache:
             if latest > stamp + self.max_storage:
                 return _OLD_DATA
             if stamp > latest:
-                spans.append(span(latest, samples[-1], stamp, sample))
+                spans.append(LATER)
                 stamps_.append(stamp)
                 samples.append(sample)
             else:
                 i = bisect_right(stamps_, stamp)
                 if i and stamps_[i - 1] == stamp:
                     return _REPEATED_DATA
-                after = span(stamp, sample, stamps_[i], samples[i])
                 if i:
-                    spans[i - 1 : i] = [span(stamps_[i - 1], samples[i - 1], stamp, sample), after]
+                    spans[i - 1 : i] = [LATER, LATER]
                 else:
-                    spans.insert(0, after)
+                    spans.insert(0, LATER)
                 stamps_.insert(i, stamp)
                 samples.insert(i, sample)
             if sample[0] != self.parent:
@@ -302,4 +316,14 @@ class StaticCache:
 
 Cache = TimeCache | StaticCache
 
-__all__ = ["Cache", "Sample", "Span", "StaticCache", "TimeCache", "interpolate", "span"]
+__all__ = [
+    "LATER",
+    "Cache",
+    "Sample",
+    "Span",
+    "StaticCache",
+    "TimeCache",
+    "fill",
+    "interpolate",
+    "span",
+]

@@ -19,11 +19,11 @@ every frame of a view), each frame's walk to the root is kept until the buffer c
 (`_remembered`). At a new time each call (a message's stamp), the frames tf2's walk would
 visit are known beforehand wherever every frame on the way has had one parent over the whole
 buffer: the `_Plan` of the pair, kept until a parent changes, holds their transforms' lists,
-and `_climb` does each step's interpolation (from the `Span` the cache computed on insertion)
-and accumulation in tf2's operations, with no call per step; above the frame where the two
-walks meet, each step is interpolated once for both. Where a frame on the way has no
-transform at that time, or the tree is not so simple, `_walk` answers, with tf2's texts and
-its ways around a missing frame.
+and `_climb` does each step's interpolation (from the `Span` of the two samples around the
+time, which the cache computes once) and accumulation in tf2's operations, with no call per
+step; above the frame where the two walks meet, each step is interpolated once for both.
+Where a frame on the way has no transform at that time, or the tree is not so simple, `_walk`
+answers, with tf2's texts and its ways around a missing frame.
 
 Threads: every public method takes the core's lock, so a listener's thread may insert while
 others look up. `add_listener` callbacks run after each insertion, outside the lock.
@@ -37,7 +37,7 @@ from math import isnan, sin
 from typing import TYPE_CHECKING, Any
 
 from rosx.tf import stamps
-from rosx.tf.cache import StaticCache, TimeCache
+from rosx.tf.cache import LATER, StaticCache, TimeCache, fill
 from rosx.tf.exceptions import (
     ConnectivityException,
     ExtrapolationException,
@@ -186,6 +186,8 @@ def _climb(
         else:
             i = bisect_right(stamps_, time)
             at: Any = spans[i - 1] if 1 < i < len(stamps_) else _edge(stamps_, held, spans, time, i)
+            if at is LATER:  # computed once, the first time a lookup falls there
+                at = fill(stamps_, held, spans, i - 1)
             if at is None:
                 return None
             if len(at) == 8:  # a sample as it is
