@@ -261,15 +261,18 @@ class TimeCache:
         return self.stamps[-1], self.samples[-1][0]
 
     def newest_stamp(self) -> int:
+        """The newest stamp held (ns), or 0 when empty."""
         return self.stamps[-1] if self.stamps else 0
 
     def oldest_stamp(self) -> int:
+        """The oldest stamp held (ns), or 0 when empty."""
         return self.stamps[0] if self.stamps else 0
 
     def __len__(self) -> int:
         return len(self.stamps)
 
     def clear(self) -> None:
+        """Forget every transform (the buffer's ``clear``, e.g. when ROS time jumps back)."""
         self.asked = -1
         self.parent = 0
         self.stamps.clear()
@@ -288,23 +291,29 @@ class StaticCache:
         self.parent = 0
 
     def get(self, time: int) -> Sample | str:
+        """The static transform, whatever ``time`` is asked for."""
         return self.sample
 
     def parent_at(self, time: int) -> int | str:
+        """The static transform's parent frame id, at any time."""
         return self.sample[0]
 
     def insert(self, stamp: int, sample: Sample) -> str | None:
+        """Replace the transform (a static frame keeps only its last); never refused."""
         self.sample = sample
         self.parent = sample[0]
         return None
 
     def latest(self) -> tuple[int, int]:
+        """``(0, parent)``: a static transform's stamp reads 0."""
         return 0, self.sample[0]
 
     def newest_stamp(self) -> int:
+        """Always 0: a static transform holds at every time."""
         return 0
 
     def oldest_stamp(self) -> int:
+        """Always 0: a static transform holds at every time."""
         return 0
 
     def __len__(self) -> int:

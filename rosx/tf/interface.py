@@ -64,12 +64,17 @@ class TransformRegistration:
     _map: ClassVar[_Registry] = _Registry()
 
     def print_me(self) -> None:
+        """Print the registered types and their functions (tf2_ros's debugging aid)."""
         print(self._map.entries)
 
     def add(self, key: Any, callback: Any) -> None:
+        """Register ``callback`` as the transform function of type ``key`` (a class or its
+        message type name)."""
         self._map.add(key, callback)
 
     def get(self, key: Any) -> Any:
+        """The transform function of ``key``'s type. Raises `TypeException` if none is
+        registered."""
         return self._map.get(key)
 
 
@@ -81,21 +86,27 @@ class ConvertRegistration:
     _convert: ClassVar[_Registry] = _Registry()
 
     def add_from_msg(self, key: Any, callback: Any) -> None:
+        """Register ``callback`` to build type ``key`` from its message."""
         self._from_msg.add(key, callback)
 
     def add_to_msg(self, key: Any, callback: Any) -> None:
+        """Register ``callback`` to turn type ``key`` into a message."""
         self._to_msg.add(key, callback)
 
     def add_convert(self, key: Any, callback: Any) -> None:
+        """Register ``callback`` for the direct conversion ``key`` (a ``(from, to)`` pair)."""
         self._convert.entries[key] = callback
 
     def get_from_msg(self, key: Any) -> Any:
+        """The from-message function of ``key``. Raises `TypeException` if none is registered."""
         return self._from_msg.get(key)
 
     def get_to_msg(self, key: Any) -> Any:
+        """The to-message function of ``key``. Raises `TypeException` if none is registered."""
         return self._to_msg.get(key)
 
     def get_convert(self, key: Any) -> Any:
+        """The direct conversion registered for ``key``. Raises `TypeException` if there is none."""
         if key not in self._convert.entries:
             raise TypeException(f"Type {key!s} if not loaded or supported")
         return self._convert.entries[key]
@@ -178,6 +189,12 @@ class BufferInterface:
     def lookup_transform(
         self, target_frame: str, source_frame: str, time: Any, timeout: Any = None
     ) -> Any:
+        """The ``TransformStamped`` taking data from ``source_frame`` to ``target_frame`` at
+        ``time`` (0 for the latest), waiting up to ``timeout`` for it; a subclass implements it.
+
+        Raises:
+            LookupException, ConnectivityException, ExtrapolationException: tf2's errors.
+        """
         raise NotImplementedException
 
     def lookup_transform_full(
@@ -189,11 +206,16 @@ class BufferInterface:
         fixed_frame: str,
         timeout: Any = None,
     ) -> Any:
+        """The transform from ``source_frame`` at ``source_time`` to ``target_frame`` at
+        ``target_time``, through ``fixed_frame`` (which must not move between the two times);
+        waits up to ``timeout``. A subclass implements it."""
         raise NotImplementedException
 
     def can_transform(
         self, target_frame: str, source_frame: str, time: Any, timeout: Any = None
     ) -> Any:
+        """Whether `lookup_transform` would succeed, waiting up to ``timeout``; never raises
+        tf2's errors. A subclass implements it."""
         raise NotImplementedException
 
     def can_transform_full(
@@ -205,6 +227,8 @@ class BufferInterface:
         fixed_frame: str,
         timeout: Any = None,
     ) -> Any:
+        """Whether `lookup_transform_full` would succeed, waiting up to ``timeout``. A subclass
+        implements it."""
         raise NotImplementedException
 
 

@@ -22,13 +22,15 @@ if TYPE_CHECKING:
 class Handle(Protocol):
     """A subscription, publication or service: something to unregister."""
 
-    def unregister(self) -> None: ...
+    def unregister(self) -> None:
+        """Stop the subscription, publication or service."""
 
 
 class Publishing(Handle, Protocol):
     """A handle that publishes: what tf's broadcasters need of a publisher."""
 
-    def publish(self, msg: Any) -> None: ...
+    def publish(self, msg: Any) -> None:
+        """Publish ``msg`` (a ``tf2_msgs/TFMessage``)."""
 
 
 class Endpoint(Protocol):
@@ -40,7 +42,8 @@ class Endpoint(Protocol):
     def ready(self) -> bool:
         """Whether the node runs (a script's before ``init_node`` does not)."""
 
-    def is_shutdown(self) -> bool: ...
+    def is_shutdown(self) -> bool:
+        """Whether the node is shutting down (a buffer's waiting lookup gives up then)."""
 
     def subscribe(
         self,
@@ -49,18 +52,21 @@ class Endpoint(Protocol):
         callback: Callable[[Any], object],
         queue_size: int | None,
         tcp_nodelay: bool = False,
-    ) -> Handle: ...
+    ) -> Handle:
+        """Subscribe to ``topic``, as rospy's ``Subscriber`` does."""
 
     def advertise(
         self, topic: str, data_class: type[Message], queue_size: int, latch: bool
-    ) -> Publishing: ...
+    ) -> Publishing:
+        """Advertise ``topic`` (latched for ``/tf_static``), as rospy's ``Publisher`` does."""
 
     def serve(
         self,
         name: str,
         service_class: type[ServiceDefinition],
         handler: Callable[[Any], object],
-    ) -> Handle: ...
+    ) -> Handle:
+        """Provide service ``name`` (tf2_ros's buffer server), as rospy's ``Service`` does."""
 
     def key(self) -> object:
         """The same object for endpoints of one node (what per-node state is kept by)."""
@@ -70,16 +76,19 @@ class ScriptEndpoint:
     """The process's rospy-style node (`rosx.client`)."""
 
     def name(self) -> str:
+        """The script's node name (rospy's ``get_name``)."""
         from rosx.client.lifecycle import get_name  # noqa: PLC0415 - only when asked
 
         return get_name()
 
     def ready(self) -> bool:
+        """Whether the script has called ``init_node``."""
         from rosx.client import state  # noqa: PLC0415 - the rospy API loads only when used
 
         return state.CLIENT.initialized
 
     def is_shutdown(self) -> bool:
+        """Whether the script's node is shutting down (rospy's ``is_shutdown``)."""
         from rosx.client.lifecycle import is_shutdown  # noqa: PLC0415 - the rospy API loads only when used
 
         return is_shutdown()
@@ -92,6 +101,7 @@ class ScriptEndpoint:
         queue_size: int | None,
         tcp_nodelay: bool = False,
     ) -> Handle:
+        """A rospy ``Subscriber`` on the script's node."""
         from rosx.client.topics import Subscriber  # noqa: PLC0415 - the rospy API loads only when used
 
         return Subscriber(
@@ -101,6 +111,7 @@ class ScriptEndpoint:
     def advertise(
         self, topic: str, data_class: type[Message], queue_size: int, latch: bool
     ) -> Publishing:
+        """A rospy ``Publisher`` on the script's node."""
         from rosx.client.topics import Publisher  # noqa: PLC0415 - the rospy API loads only when used
 
         return Publisher(topic, data_class, queue_size=queue_size, latch=latch)
@@ -111,11 +122,13 @@ class ScriptEndpoint:
         service_class: type[ServiceDefinition],
         handler: Callable[[Any], object],
     ) -> Handle:
+        """A rospy ``Service`` on the script's node."""
         from rosx.client.services import Service  # noqa: PLC0415 - the rospy API loads only when used
 
         return Service(name, service_class, handler)
 
     def key(self) -> object:
+        """One key for the whole process: a script has one node."""
         return ScriptEndpoint
 
 
@@ -126,12 +139,15 @@ class NodeEndpoint:
         self.node = node
 
     def name(self) -> str:
+        """The node's resolved name."""
         return self.node.name
 
     def ready(self) -> bool:
+        """Whether the node still runs."""
         return not self.node.is_shutdown()
 
     def is_shutdown(self) -> bool:
+        """Whether the node is shutting down or down."""
         return self.node.is_shutdown()
 
     def subscribe(
@@ -142,6 +158,7 @@ class NodeEndpoint:
         queue_size: int | None,
         tcp_nodelay: bool = False,
     ) -> Handle:
+        """Subscribe on the node (`rosx.node.Node.subscribe`)."""
         return self.node.subscribe(
             topic, data_class, callback, queue_size=queue_size, tcp_nodelay=tcp_nodelay
         )
@@ -149,6 +166,7 @@ class NodeEndpoint:
     def advertise(
         self, topic: str, data_class: type[Message], queue_size: int, latch: bool
     ) -> Publishing:
+        """Advertise on the node (`rosx.node.Node.advertise`)."""
         return self.node.advertise(topic, data_class, queue_size=queue_size, latch=latch)
 
     def serve(
@@ -157,9 +175,11 @@ class NodeEndpoint:
         service_class: type[ServiceDefinition],
         handler: Callable[[Any], object],
     ) -> Handle:
+        """Provide the service on the node (`rosx.node.Node.advertise_service`)."""
         return self.node.advertise_service(name, service_class, handler)
 
     def key(self) -> object:
+        """The node itself: per-node state is kept per `Node`."""
         return self.node
 
 
