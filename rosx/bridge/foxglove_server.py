@@ -110,6 +110,8 @@ class FoxgloveServer:
     # -- the `Handler` ---------------------------------------------------------------------------
 
     def refuse(self, request: Request) -> tuple[int, str] | None:
+        """Refuse a page of an origin not allowed (403, logged) and, with a token set, a URL
+        without ``?token=`` matching it (401); else None."""
         origin = request.headers.get("Origin")
         if not origin_allowed(origin, self.allow_origins):
             self.log(refusal(origin, "Foxglove"))
@@ -121,15 +123,21 @@ class FoxgloveServer:
         return None
 
     def session(self, connection: Connection[fx.FoxgloveSession]) -> fx.FoxgloveSession:
+        """A Foxglove session named after the bridge's node, on sim time when ``/use_sim_time``
+        is."""
         return fx.FoxgloveSession(name=f"rosx {self.node.name}", sim_time=self._sim_time)
 
     def opened(self, connection: Connection[fx.FoxgloveSession]) -> None:
+        """Log the client count, send ``serverInfo`` and advertise the graph's topics and
+        services."""
         self.log(f"Foxglove client connected.  {len(self.connections)} clients total.")
         with connection.lock:
             frames = connection.session.hello() + connection.session.update_graph(*self._graph)
         connection.send(frames)
 
     def receive(self, connection: Connection[fx.FoxgloveSession], data: str | bytes) -> None:
+        """Feed the client's message to its session, send the replies, and carry out its events
+        (subscribe, advertise, call...); a refusal reaches the client as an error status."""
         with connection.lock:
             reaction = connection.session.receive(data)
         if reaction.frames:
@@ -141,6 +149,7 @@ class FoxgloveServer:
                 connection.send([connection.session.status(fx.ERROR, f"{exc}")])
 
     def closed(self, connection: Connection[fx.FoxgloveSession]) -> None:
+        """Drop the client's subscriptions and client channels, then log the client count."""
         with connection.lock:
             topics = set(connection.session.subscriptions.values())
             published = set(connection.session.client_channels.values())
@@ -153,14 +162,17 @@ class FoxgloveServer:
     def render(
         self, session: fx.FoxgloveSession, message: tuple[str, bytes, int]
     ) -> list[fx.Frame | Pieces]:
+        """The binary ``messageData`` frames of one ROS message for the session's subscriptions."""
         return session.deliver(*message)
 
     def oversized(self, session: fx.FoxgloveSession, reason: str) -> fx.Frame | None:
+        """An error status naming the size limit, sent before the connection closes."""
         return session.status(
             fx.ERROR, f"Message refused ({reason}): the limit is {self.max_message} bytes"
         )
 
     def idle(self, session: fx.FoxgloveSession) -> bool:
+        """Whether the client neither subscribes nor publishes (so it may be closed first)."""
         return not session.subscriptions and not session.client_channels
 
     def _follow_clock(self) -> None:

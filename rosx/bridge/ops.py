@@ -136,6 +136,7 @@ class Reaction:
     events: list[Event] = field(default_factory=list)
 
     def extend(self, other: Reaction) -> None:
+        """Append ``other``'s frames and events after this one's."""
         self.frames += other.frames
         self.events += other.events
 

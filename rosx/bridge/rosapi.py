@@ -104,15 +104,19 @@ class RosApi:
     # -- topics ---------------------------------------------------------------------------------
 
     def topics(self, request: Any) -> dict[str, Any]:
+        """``~topics``: every topic the master knows, with its type ("" if unknown)."""
         state = self._state()
         names = state.topics
         return {"topics": names, "types": [state.topic_types.get(t, "") for t in names]}
 
     def topics_for_type(self, request: Any) -> dict[str, Any]:
+        """``~topics_for_type``: the topics of type ``request.type``, sorted."""
         types = self.node.master.topic_types()
         return {"topics": sorted(t for t, kind in types.items() if kind == request.type)}
 
     def topics_and_raw_types(self, request: Any) -> dict[str, Any]:
+        """``~topics_and_raw_types``: as ``~topics``, with each type's full definition text (a
+        connection header's ``message_definition``; "" for a type the bridge cannot load)."""
         state = self._state()
         names = state.topics
         types = [state.topic_types.get(t, "") for t in names]
@@ -133,15 +137,20 @@ class RosApi:
         return text
 
     def topic_type(self, request: Any) -> dict[str, Any]:
+        """``~topic_type``: ``request.topic``'s type, or "" if the master does not know it."""
         return {"type": self.node.master.topic_types().get(request.topic, "")}
 
     def publishers(self, request: Any) -> dict[str, Any]:
+        """``~publishers``: the nodes publishing ``request.topic``."""
         return {"publishers": list(self._state().publishers.get(request.topic, ()))}
 
     def subscribers(self, request: Any) -> dict[str, Any]:
+        """``~subscribers``: the nodes subscribing to ``request.topic``."""
         return {"subscribers": list(self._state().subscribers.get(request.topic, ()))}
 
     def action_servers(self, request: Any) -> dict[str, Any]:
+        """``~action_servers``: the namespaces that have all five action topics (goal, cancel,
+        status, feedback, result), sorted."""
         by_namespace: dict[str, set[str]] = {}
         for topic in self._state().topics:
             namespace, _, last = topic.rpartition("/")
@@ -155,6 +164,7 @@ class RosApi:
     # -- services -------------------------------------------------------------------------------
 
     def services(self, request: Any) -> dict[str, Any]:
+        """``~services``: every service the master knows, sorted."""
         return {"services": sorted(self._state().services)}
 
     def _type_of(self, service: str) -> str:
@@ -164,23 +174,30 @@ class RosApi:
             return ""
 
     def service_type(self, request: Any) -> dict[str, Any]:
+        """``~service_type``: ``request.service``'s type, asked of its provider; "" if it does
+        not answer."""
         return {"type": self._type_of(request.service)}
 
     def services_for_type(self, request: Any) -> dict[str, Any]:
+        """``~services_for_type``: the services of type ``request.type`` (each provider asked)."""
         names = sorted(self._state().services)
         return {"services": [s for s in names if self._type_of(s) == request.type]}
 
     def service_node(self, request: Any) -> dict[str, Any]:
+        """``~service_node``: the node providing ``request.service``, or ""."""
         providers = self._state().services.get(request.service, ())
         return {"node": providers[0] if providers else ""}
 
     def service_host(self, request: Any) -> dict[str, Any]:
+        """``~service_host``: the host name in the provider's ``rosrpc://`` URI, or ""."""
         from urllib.parse import urlsplit  # noqa: PLC0415 - only this service needs it
 
         uri = self.node.master.lookup_service(request.service) or ""
         return {"host": urlsplit(uri).hostname or ""}
 
     def service_providers(self, request: Any) -> dict[str, Any]:
+        """``~service_providers``: the nodes providing a service of type ``request.service``
+        (rosapi's field name, though it holds a type)."""
         found: list[str] = []
         for service, nodes in sorted(self._state().services.items()):
             if self._type_of(service) == request.service:
@@ -190,9 +207,12 @@ class RosApi:
     # -- nodes ----------------------------------------------------------------------------------
 
     def nodes(self, request: Any) -> dict[str, Any]:
+        """``~nodes``: every node with a registration."""
         return {"nodes": self._state().nodes}
 
     def node_details(self, request: Any) -> dict[str, Any]:
+        """``~node_details``: the topics ``request.node`` subscribes to and publishes, and its
+        services."""
         state = self._state()
         node = request.node
 
@@ -208,6 +228,8 @@ class RosApi:
     # -- parameters -----------------------------------------------------------------------------
 
     def get_param(self, request: Any) -> dict[str, Any]:
+        """``~get_param``: the value at ``request.name`` as JSON; ``request.default`` (JSON, or
+        the text itself) when it is unset."""
         default: Any = None
         if request.default != "":
             try:
@@ -217,6 +239,8 @@ class RosApi:
         return {"value": json.dumps(self.node.params.get(request.name, default))}
 
     def set_param(self, request: Any) -> dict[str, Any]:
+        """``~set_param``: set ``request.name`` to the JSON in ``request.value``; text that is
+        not JSON raises rosapi's error."""
         try:
             value = json.loads(request.value)
         except ValueError:
@@ -228,31 +252,41 @@ class RosApi:
         return {}
 
     def has_param(self, request: Any) -> dict[str, Any]:
+        """``~has_param``: whether ``request.name`` is set."""
         return {"exists": self.node.params.has(request.name)}
 
     def search_param(self, request: Any) -> dict[str, Any]:
+        """``~search_param``: the nearest ``request.name`` upwards from the bridge's namespace,
+        or ""."""
         return {"global_name": self.node.params.search(request.name) or ""}
 
     def delete_param(self, request: Any) -> dict[str, Any]:
+        """``~delete_param``: delete ``request.name``; an unset name is not an error."""
         if self.node.params.has(request.name):
             self.node.params.delete(request.name)
         return {}
 
     def get_param_names(self, request: Any) -> dict[str, Any]:
+        """``~get_param_names``: every parameter's full name."""
         return {"names": self.node.params.names()}
 
     def get_time(self, request: Any) -> dict[str, Any]:
+        """``~get_time``: the node's ROS time (sim time under ``/use_sim_time``)."""
         return {"time": now()}
 
     # -- types ----------------------------------------------------------------------------------
 
     def message_details(self, request: Any) -> dict[str, Any]:
+        """``~message_details``: the typedefs of ``request.type`` and the types it holds, as
+        roslibjs reads them."""
         return {"typedefs": typedefs(request.type)}
 
     def service_request_details(self, request: Any) -> dict[str, Any]:
+        """``~service_request_details``: the typedefs of service ``request.type``'s request."""
         return {"typedefs": _typedefs_of(get_service_class(request.type)._request_class)}
 
     def service_response_details(self, request: Any) -> dict[str, Any]:
+        """``~service_response_details``: the typedefs of service ``request.type``'s response."""
         return {"typedefs": _typedefs_of(get_service_class(request.type)._response_class)}
 
 

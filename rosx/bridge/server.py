@@ -98,6 +98,8 @@ class BridgeServer:
     # -- the `Handler` ---------------------------------------------------------------------------
 
     def refuse(self, request: Request) -> tuple[int, str] | None:
+        """Refuse a page of an origin not allowed (403, logged, with the ``--allow-origin`` that
+        would let it in); else None. The token is checked later, by the session."""
         origin = request.headers.get("Origin")
         if origin_allowed(origin, self.allow_origins):
             return None
@@ -105,6 +107,8 @@ class BridgeServer:
         return 403, refusal_answer(origin)
 
     def session(self, connection: Connection[Session]) -> Session:
+        """A rosbridge session, already authenticated when the URL carries the bridge's token
+        (else its first op must be ``auth``), limited to ``max_message`` bytes."""
         token = self.token
         path = connection.request.path if connection.request is not None else ""
         if token is not None and token in parse_qs(urlsplit(path).query).get("token", []):
@@ -114,12 +118,16 @@ class BridgeServer:
         return Session(token=token, max_message=self.max_message, client=host)
 
     def opened(self, connection: Connection[Session]) -> None:
+        """Log the client count, as rosbridge_server does."""
         self.log(f"Client connected.  {len(self.connections)} clients total.")
 
     def receive(self, connection: Connection[Session], data: str | bytes) -> None:
+        """Pass the client's message to the shared graph, which runs its ops in order."""
         self.graph.receive(connection, data)
 
     def closed(self, connection: Connection[Session]) -> None:
+        """Drop what the client held in the graph, log the messages it was too slow to get, and
+        the client count."""
         self.graph.disconnect(connection)
         for topic, count in sorted(connection.dropped.items()):
             self.log(
@@ -129,14 +137,19 @@ class BridgeServer:
         self.log(f"Client disconnected. {len(self.connections)} clients total.")
 
     def render(self, session: Session, message: Outgoing) -> list[ops.Frame | ops.Pieces]:
+        """The frames of one outgoing message (throttled, queued and compressed per
+        subscription)."""
         return session.deliver(message, time.monotonic())
 
     def oversized(self, session: Session, reason: str) -> ops.Frame | None:
+        """A ``status`` op naming the size limit (``--max-message-size``), sent before closing."""
         limit = self.max_message
         text = f"Message refused ({reason}): the limit is {limit} bytes (--max-message-size)"
         return json.dumps({"op": "status", "level": "error", "msg": text})
 
     def idle(self, session: Session) -> bool:
+        """Whether the client neither subscribes nor provides services (so it may be closed
+        first)."""
         return not session.topics and not session.services
 
 
