@@ -3,8 +3,8 @@
 rosx ships them under one prefix laid out as Noetic's ``/opt/ros/noetic`` (`PREFIX`):
 ``share/<package>/`` holds a package's files (a folder is named as its package, and a test
 keeps it so: no manifest is read to name it), ``lib/<package>/`` the programs rosrun finds
-there. turtlesim's folder is the ``rosx_turtle`` Python package itself, beside its code
-(`BUNDLED_MODULES`). Strings here and no ``pathlib``: a shell's <TAB> lists these names in a
+there (small scripts calling the code that implements them, turtlesim's in ``rosx_turtle``).
+Strings here and no ``pathlib``: a shell's <TAB> lists these names in a
 Python started for it alone (`rosx.packages.crawl.bundled_packages` gives them as paths).
 """
 
@@ -15,13 +15,10 @@ import os
 #: The install prefix of the ROS packages shipped with rosx (``share/``, ``lib/``).
 PREFIX = os.path.join(os.path.dirname(os.path.abspath(__file__)), "noetic")  # noqa: PTH100, PTH118, PTH120 - strings, no pathlib
 
-#: Python packages shipped with rosx whose folder is a ROS package's, with that package's name.
-BUNDLED_MODULES = {"rosx_turtle": "turtlesim"}
-
 
 def bundled_folders() -> dict[str, str]:
-    """The ROS package folders shipped with rosx, by name, sorted (`PREFIX`'s ``share/``, then
-    those of `BUNDLED_MODULES`), as the tree is now (a listing and a ``stat`` a package: callers
+    """The ROS package folders shipped with rosx (`PREFIX`'s ``share/``), by name, sorted, as
+    the tree is now (a listing and a ``stat`` a package: callers
     that ask often keep the answer, `rosx.packages.crawl.bundled_packages`)."""
     share = os.path.join(PREFIX, "share")  # noqa: PTH118 - strings, no pathlib
     # share/ros is ROS_ROOT, without a package.xml (see its README).
@@ -30,10 +27,6 @@ def bundled_folders() -> dict[str, str]:
         folder = os.path.join(share, name)  # noqa: PTH118
         if _is_package(folder):
             found[name] = folder
-    for module, package in BUNDLED_MODULES.items():
-        module_folder = _module_folder(module)
-        if module_folder is not None and _is_package(module_folder):
-            found.setdefault(package, module_folder)
     return found
 
 
@@ -52,18 +45,4 @@ def _is_package(folder: str) -> bool:
     return os.path.isfile(os.path.join(folder, "package.xml"))  # noqa: PTH113, PTH118 - strings, no pathlib
 
 
-def _module_folder(module: str) -> str | None:
-    """The folder of the Python package ``module``, not imported."""
-    from importlib.machinery import PathFinder  # noqa: PLC0415 - loaded with the interpreter already
-
-    spec = PathFinder.find_spec(module)  # on sys.path, as regular and editable installs put it
-    if spec is None:  # an import hook of its own (some editable installs)
-        import importlib.util  # noqa: PLC0415 - only where sys.path does not tell
-
-        spec = importlib.util.find_spec(module)
-    if spec is None or spec.origin is None:
-        return None
-    return os.path.dirname(spec.origin)  # noqa: PTH120 - strings, no pathlib
-
-
-__all__ = ["BUNDLED_MODULES", "PREFIX", "bundled_folders", "provided_names"]
+__all__ = ["PREFIX", "bundled_folders", "provided_names"]

@@ -9,8 +9,7 @@ The packages rosx ships are data files of the wheel, under one prefix laid out a
 ``/opt/ros/noetic`` (`PREFIX`): ``share/<package>/`` holds a package's ``package.xml`` (with
 Noetic's dependency facts), its ``msg/`` and ``srv/`` files (the original texts, comments
 included) and its scripts; ``lib/<package>/`` holds the programs rosrun finds there, as catkin's
-``libexec`` folders. turtlesim's package directory is the ``rosx_turtle`` Python package itself,
-beside its code. `rosx.packages.bundled` finds them; here they are paths.
+``libexec`` folders. `rosx.packages.bundled` finds them; here they are paths.
 """
 
 from __future__ import annotations
@@ -109,7 +108,7 @@ def _crawl(directory: str, found: dict[str, Path], seen: Seen | None) -> None:
 
 @cache
 def bundled_packages() -> dict[str, Path]:
-    """The ROS package directories shipped with rosx (`PREFIX`'s and turtlesim's), by name."""
+    """The ROS package directories shipped with rosx (`PREFIX`'s ``share/``), by name."""
     return {name: Path(folder) for name, folder in bundled.bundled_folders().items()}
 
 

@@ -30,7 +30,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
 from rosx.packages import crawl
-from rosx.packages.bundled import BUNDLED_MODULES, provided_names
+from rosx.packages.bundled import provided_names
 from rosx.packages.crawl import bundled_libexec, bundled_packages
 from rosx.workspace.executables import executable_names, find_executables, is_python_script
 
@@ -89,20 +89,13 @@ def is_provided(package: str) -> bool:
 
 
 @cache
-def _bundled_roots() -> tuple[str, ...]:
-    import importlib.util  # noqa: PLC0415 - only to run a bundled program in-process
-
-    roots = [str(crawl.PREFIX.resolve())]
-    for module in BUNDLED_MODULES:
-        spec = importlib.util.find_spec(module)
-        if spec is not None and spec.origin is not None:
-            roots.append(str(Path(spec.origin).resolve().parent))
-    return tuple(root + os.sep for root in roots)
+def _bundled_root() -> str:
+    return str(crawl.PREFIX.resolve()) + os.sep
 
 
 def is_bundled_file(path: Path) -> bool:
     """Whether ``path`` is one of the files rosx ships (not a user's or a system's program)."""
-    return str(path.resolve()).startswith(_bundled_roots())
+    return str(path.resolve()).startswith(_bundled_root())
 
 
 class Counterpart(NamedTuple):

@@ -99,4 +99,4 @@ def test_turtlesims_multisim_launch_comes_with_rosx() -> None:
     )
     assert args.status == 0
     assert args.out.startswith('ROS_NAMESPACE="/turtlesim2" ')
-    assert args.out.endswith("/bin/turtlesim_node __name:=sim\n")
+    assert args.out.endswith("/lib/turtlesim/turtlesim_node __name:=sim\n")  # as Noetic's

@@ -21,7 +21,7 @@ from tests.support.pilot import run, until
 from tests.support.procs import free_port, port_open, running, wait_for
 from tests.support.pty_terminal import BLUE_BACKGROUND, on_a_terminal
 
-MULTISIM = Path(__file__).resolve().parents[2] / "turtle" / "rosx_turtle" / "launch"
+MULTISIM = Path(__file__).resolve().parents[2] / "rosx/packages/noetic/share/turtlesim/launch"
 
 
 def test_ponds_come_and_go_as_the_graph_says() -> None:

@@ -146,7 +146,7 @@ def prefix(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
 
 def _forget_the_tree() -> None:
     """What a new process knows: the tree as it is now (a process reads it once)."""
-    for cached in (crawl.bundled_packages, programs.provided_packages, programs._bundled_roots):
+    for cached in (crawl.bundled_packages, programs.provided_packages, programs._bundled_root):
         cached.cache_clear()
 
 

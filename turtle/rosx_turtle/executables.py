@@ -1,7 +1,7 @@
 """``python -m rosx_turtle [PACKAGE/]NAME [ARGS…]``: run one of the programs rosx ships.
 
 The programs are the files rosrun and roslaunch start (`rosx.workspace.programs`): turtlesim's
-in ``bin/`` beside this code, roscpp_tutorials' in rosx's ``lib/roscpp_tutorials``. ``NAME``
+in rosx's ``lib/turtlesim``, roscpp_tutorials' in ``lib/roscpp_tutorials``. ``NAME``
 alone is turtlesim's (``python -m rosx_turtle turtlesim_node __name:=sim``), another package's
 is named with it (``python -m rosx_turtle roscpp_tutorials/talker``).
 """
