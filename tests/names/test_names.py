@@ -10,7 +10,6 @@ import json
 import random
 import subprocess
 import sys
-from pathlib import Path
 from typing import Any
 
 import pytest
@@ -39,6 +38,7 @@ from rosx.names import (
     strip_remap_args,
     validate,
 )
+from tests.support.ros1 import ros1_python_imports
 
 # ---------------------------------------------------------------------------------------------
 # Validation
@@ -484,18 +484,10 @@ def test_anonymous_node_name() -> None:
 ROS_PYTHON = "/usr/bin/python3"
 
 
-def _ros1_available() -> bool:
-    if not Path(ROS_PYTHON).exists():
-        return False
-    probe = subprocess.run(
-        [ROS_PYTHON, "-c", "import rosgraph.names, rospy.names"],
-        capture_output=True,
-        check=False,
-    )
-    return probe.returncode == 0
-
-
-ros1 = pytest.mark.skipif(not _ros1_available(), reason="ROS 1's rospy/rosgraph not importable")
+ros1 = pytest.mark.skipif(
+    not ros1_python_imports("rosgraph.names", "rospy.names"),
+    reason="ROS 1's rospy/rosgraph not importable",
+)
 
 _ROS1_DRIVER = r"""
 import json, os, random, socket, sys

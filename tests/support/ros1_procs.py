@@ -13,6 +13,8 @@ from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from pathlib import Path
 
+from tests.support.ros1 import ros1_python_imports
+
 ROS1_PYTHON = Path("/usr/bin/python3")
 ROSMASTER = Path("/usr/bin/rosmaster")
 ROSCORE = Path("/usr/bin/roscore")
@@ -20,10 +22,9 @@ ROSCORE = Path("/usr/bin/roscore")
 
 def ros1_available() -> bool:
     """Whether ROS 1's master, tools and rospy are installed."""
-    if not (ROS1_PYTHON.exists() and ROSMASTER.exists() and ROSCORE.exists()):
+    if not (ROSMASTER.exists() and ROSCORE.exists()):
         return False
-    probe = [str(ROS1_PYTHON), "-c", "import rospy, rosmaster, std_msgs.msg"]
-    return subprocess.run(probe, capture_output=True, check=False).returncode == 0
+    return ros1_python_imports("rospy", "rosmaster", "std_msgs.msg")
 
 
 def free_port() -> int:

@@ -32,19 +32,14 @@ from rosx.wire.tcpros import (
     publisher_header,
     subscriber_header,
 )
+from tests.support.ros1 import ros1_python_imports
 
 ROS1_PYTHON = Path("/usr/bin/python3")
 
 
-def _ros1_available() -> bool:
-    if not ROS1_PYTHON.exists():
-        return False
-    probe = [str(ROS1_PYTHON), "-c", "import rospy, rosgraph, std_msgs.msg, std_srvs.srv"]
-    return subprocess.run(probe, capture_output=True, check=False).returncode == 0
-
-
 pytestmark = pytest.mark.skipif(
-    not _ros1_available(), reason="ROS 1 (rospy for /usr/bin/python3) is not installed"
+    not ros1_python_imports("rospy", "rosgraph", "std_msgs.msg", "std_srvs.srv"),
+    reason="ROS 1 (rospy for /usr/bin/python3) is not installed",
 )
 
 HEADERS: list[dict[str, str]] = [
