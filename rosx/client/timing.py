@@ -204,10 +204,14 @@ class Timer(threading.Thread):
         while not self._halt.is_set() and not state.CLIENT.is_shutdown():
             try:
                 rate.sleep()
-            except ROSInterruptException:
+            except ROSTimeMovedBackwardsException:
                 if state.CLIENT.is_shutdown() or self._halt.is_set():
                     break
                 raise  # simulated time went back: the timer ends, as rospy's
+            except ROSInterruptException:
+                # The node the timer sleeps on shut down: the timer ends quietly, even where
+                # the client already names another node (a process that starts a second one).
+                break
             if self._halt.is_set():
                 break
             current_real = get_rostime()

@@ -10,6 +10,7 @@ from typing import Any
 
 import pytest
 
+from rosx.client import state
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from tests.support.procs import wait_for
@@ -137,6 +138,24 @@ def test_timer_calls_back_periodically(rospy: ModuleType) -> None:
     wait_for(lambda: len(events) >= 3, what="three timer events")
     timer.shutdown()
     assert events[1].last_real is not None
+
+
+def test_a_timer_ends_quietly_when_its_node_shuts_down(
+    rospy: ModuleType, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Even when the client already names another node (a process that starts a second one,
+    as each test here does): the timer's thread ends without an exception."""
+    rospy.init_node("timed_then_gone", disable_signals=True)
+    timer = rospy.Timer(rospy.Duration(5), lambda event: None)
+    wait_for(timer.is_alive, what="the timer's thread")
+    raised: list[BaseException | None] = []
+    monkeypatch.setattr(threading, "excepthook", lambda args: raised.append(args.exc_value))
+    first = state.CLIENT
+    monkeypatch.setattr(state, "CLIENT", state.Client())
+    first.signal_shutdown("over")
+    timer.join(10)
+    assert not timer.is_alive()
+    assert raised == []
 
 
 def _nodes(rospy: ModuleType) -> set[str]:
