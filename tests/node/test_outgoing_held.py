@@ -18,6 +18,7 @@ import pytest
 from rosx.node import outgoing, unixros
 from rosx.node.outgoing import HOLD_RUN, OutgoingStream
 from rosx.transport.loop_thread import LoopThread
+from tests.support.frames import read_frames
 from tests.support.procs import wait_for
 
 pytestmark = pytest.mark.skipif(
@@ -69,24 +70,6 @@ def stream_of(mine: socket.socket, io: LoopThread, queue_size: int | None = 0) -
 def twist_frame(number: int, size: int = 48) -> bytes:
     """A small frame (a Twist's size) naming ``number``."""
     return struct.pack("<II", size, number) + bytes(size - 4)
-
-
-def read_frames(peer: socket.socket, count: int) -> list[bytes]:
-    """``count`` whole frames from the stream (length prefix included)."""
-    data = bytearray()
-    frames: list[bytes] = []
-    peer.settimeout(10)
-    while len(frames) < count:
-        while len(data) >= 4 and len(data) >= 4 + int.from_bytes(data[:4], "little"):
-            size = 4 + int.from_bytes(data[:4], "little")
-            frames.append(bytes(data[:size]))
-            del data[:size]
-        if len(frames) < count:
-            chunk = peer.recv(1 << 20)
-            assert chunk, "the stream ended"
-            data += chunk
-    assert not data
-    return frames
 
 
 def test_a_flood_to_a_peer_behind_is_held_then_arrives_whole_and_in_order(

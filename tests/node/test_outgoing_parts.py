@@ -12,6 +12,7 @@ import pytest
 
 from rosx.node.outgoing import OutgoingStream, frame_size
 from rosx.transport.loop_thread import LoopThread
+from tests.support.frames import read_frames
 from tests.support.procs import wait_for
 
 
@@ -37,24 +38,6 @@ def frame(number: int, size: int, *, parts: bool) -> bytes | tuple[bytes, ...]:
     head = struct.pack("<II", size, number)
     body = bytes([number % 251]) * (size - 4 - len(tail))
     return (head, body, tail) if parts else head + body + tail
-
-
-def read_frames(peer: socket.socket, count: int) -> list[bytes]:
-    """``count`` frames from the stream, each whole (length prefix included)."""
-    data = bytearray()
-    frames: list[bytes] = []
-    peer.settimeout(10)
-    while len(frames) < count:
-        while len(data) >= 4 and len(data) >= 4 + int.from_bytes(data[:4], "little"):
-            size = 4 + int.from_bytes(data[:4], "little")
-            frames.append(bytes(data[:size]))
-            del data[:size]
-        if len(frames) < count:
-            chunk = peer.recv(1 << 20)
-            assert chunk, "the stream ended"
-            data += chunk
-    assert not data
-    return frames
 
 
 def whole(value: bytes | tuple[bytes, ...]) -> bytes:
