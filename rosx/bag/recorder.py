@@ -58,6 +58,8 @@ FLUSH_PERIOD = 1.0
 #: Seconds `Recorder.stop` waits for messages already read to reach the queue.
 DRAIN_TIMEOUT = 30.0
 _WARN_PERIOD = 5.0
+#: Wall seconds without ``/clock`` under ``/use_sim_time`` before ROS 1's warning (as its own).
+CLOCK_WAIT = 2.0
 
 
 class RecordOptions:
@@ -176,7 +178,11 @@ class Recorder:
         """
         from rosx.node.simtime import follow_sim_time  # noqa: PLC0415 - with the recording
 
-        follow_sim_time(self.node)
+        if follow_sim_time(self.node):
+            waiter = threading.Thread(target=self._warn_without_clock, name="rosx-record-clock")
+            waiter.daemon = True
+            self._threads.append(waiter)
+            waiter.start()
         if self.options.publish:
             from rosx.msg.codec.classes import get_message_class  # noqa: PLC0415 - message classes load on first use
 
@@ -410,6 +416,17 @@ class Recorder:
             elapsed = (now - self._file_start) / 1e9 if now and self._file_start else 0.0
         if elapsed > limit:
             self.request_stop()
+
+    def _warn_without_clock(self) -> None:
+        """ROS 1's warning when ``/use_sim_time`` is set and ``/clock`` has said nothing for
+        `CLOCK_WAIT` s: a parameter left over from a simulator otherwise records nothing,
+        silently."""
+        if not self._stopping.wait(CLOCK_WAIT) and not self._now_ns():
+            self.log(
+                "WARN",
+                "/use_sim_time set to true and no clock published.  "
+                "Still waiting for valid time...",
+            )
 
     def _now_ns(self) -> int:
         """ROS time in nanoseconds (0 in simulated time before the first /clock)."""

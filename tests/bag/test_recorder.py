@@ -136,6 +136,32 @@ def _wait_for_count(recorder: Recorder, count: int) -> None:
     wait_for(lambda: recorder.written + len(recorder._queue) >= count, what=f"{count} messages")
 
 
+def test_under_sim_time_without_a_clock_it_says_so(
+    make_node: Callable[..., Node], tmp_path: Path
+) -> None:
+    """A /use_sim_time left true by a simulator that has gone: nothing can be stamped, and
+    rosbag record says why in ROS 1's words instead of writing an empty bag in silence."""
+    setter = make_node("simulator")
+    setter.params.set("/use_sim_time", True)
+    lines: list[tuple[str, str]] = []
+    try:
+        recorder = Recorder(
+            make_node("record"),
+            RecordOptions(prefix=str(tmp_path / "sim"), append_date=False, topics=["/chatter"]),
+            lambda level, text: lines.append((level, text)),
+        )
+        recorder.start()
+        warning = (
+            "WARN",
+            "/use_sim_time set to true and no clock published.  Still waiting for valid time...",
+        )
+        wait_for(lambda: warning in lines, what="the warning")
+        recorder.stop()
+    finally:
+        setter.params.delete("/use_sim_time")  # the master is the module's
+    assert lines.count(warning) == 1
+
+
 def test_under_sim_time_messages_carry_the_clocks_time(
     make_node: Callable[..., Node], tmp_path: Path
 ) -> None:
