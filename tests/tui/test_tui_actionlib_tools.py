@@ -11,6 +11,7 @@ from typing import Any
 import pytest
 from textual.pilot import Pilot
 from textual.widgets import Button, Static, TextArea
+from textual.widgets._footer import FooterKey
 
 from rosx.actionlib import SimpleActionClient, SimpleActionServer
 from rosx.actionlib.states import Status
@@ -61,6 +62,22 @@ def _server(name: str) -> SimpleActionServer:
     server = SimpleActionServer(name, TYPES.action, execute, auto_start=False)
     server.start()
     return server
+
+
+def test_axclient_footer_names_a_quit_key_while_the_goal_is_edited(rospy: ModuleType) -> None:
+    """``q`` types into the goal, so textual drops it from the footer; Ctrl-C is named instead."""
+    app = make_client_app(TYPES, "/ax_quiet", SimpleActionClient("/ax_quiet", TYPES.action))
+
+    async def drive() -> None:
+        async with app.run_test(size=(80, 30)) as pilot:
+            await pilot.pause()
+            assert isinstance(app.focused, TextArea)
+            keys = {(k.key, k.description) for k in app.query(FooterKey)}
+            assert ("ctrl+c", "Quit") in keys
+            await pilot.press("ctrl+c")
+        assert app.return_code == 0
+
+    run(drive())
 
 
 def test_axclient_sends_the_edited_goal_and_shows_what_comes_back(rospy: ModuleType) -> None:

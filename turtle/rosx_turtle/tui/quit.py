@@ -34,9 +34,19 @@ def _is_quit(widget: object) -> bool:
 
 
 class QuitFooter(Footer):
-    """textual's footer with the quit key first."""
+    """textual's footer with the quit key first.
+
+    textual leaves out a key that the focused widget types (``q`` in a text editor, such as
+    axclient's goal), so the footer then names Ctrl-C, which quits from anywhere.
+    """
 
     @override
     def compose(self) -> ComposeResult:
         keys = list(super().compose())
+        if keys and not any(_is_quit(widget) for widget in keys):
+            ctrl_c = self.screen.active_bindings.get("ctrl+c")
+            if ctrl_c is not None and ctrl_c.binding.action in ("quit", "app.quit"):
+                self.styles.grid_size_columns = len(keys) + 1
+                key = FooterKey("ctrl+c", self.app.get_key_display(ctrl_c.binding), "Quit", "quit")
+                keys.append(key.data_bind(compact=Footer.compact))
         yield from sorted(keys, key=lambda widget: not _is_quit(widget))
