@@ -194,8 +194,14 @@ class FoxgloveServer:
 
     def _read_graph(self) -> tuple[dict[str, str], dict[str, str]]:
         master = self.node.master
-        topics = dict(master.topic_types())
-        names = set(registrations(master).services)
+        state = registrations(master, types=True)
+        # Topics someone publishes or subscribes to: the master keeps the type of a topic
+        # whose nodes are all gone, which is no channel. (foxglove_bridge offers published
+        # topics only; a subscribed one, a turtle's cmd_vel, gives a client its schema to
+        # publish with.)
+        live = {*state.publishers, *state.subscribers}
+        topics = {name: kind for name, kind in state.topic_types.items() if name in live}
+        names = set(state.services)
         for name in names - set(self._service_types):
             with contextlib.suppress(Exception):  # a service that does not answer: not offered
                 self._service_types[name] = self.node.probe_service(name, timeout=2.0).get(

@@ -20,6 +20,7 @@ from rosx.bridge import foxglove as fx
 from rosx.bridge.app import Bridge
 from rosx.bridge.outgoing import serialize
 from rosx.msg.codec.classes import get_message_class, get_service_class
+from rosx.node import Node
 from rosx_turtle.node.turtlesim import TurtlesimNode
 from rosx_turtle.roscpp import NodeArgs
 from tests.support.bridge import NodeScript, start_bridge
@@ -235,3 +236,29 @@ def test_foxglove_s_own_client(
     assert client.step("turning") == 1.5
     assert client.finish() == 0
     assert "status" not in client.steps
+
+
+def test_a_topic_whose_publishers_left_is_unadvertised(
+    foxglove: tuple[Bridge, str], make_node: Callable[..., Node]
+) -> None:
+    _, url = foxglove
+    talker = make_node("/fleeting_talker")
+    publisher = talker.advertise("/fleeting", get_message_class("std_msgs/String"))
+    with connect(url, subprotocols=[Subprotocol(fx.SUBPROTOCOL)], max_size=None) as ws:
+        receive = Reader(ws).receive
+
+        def fleeting(message: Any) -> Any:
+            if isinstance(message, dict) and message["op"] == "advertise":
+                return next((c for c in message["channels"] if c["topic"] == "/fleeting"), None)
+            return None
+
+        channel = receive(fleeting)
+        publisher.unregister()
+
+        def unadvertised(message: Any) -> Any:
+            if isinstance(message, dict) and message["op"] == "unadvertise":
+                return channel["id"] in message["channelIds"] or None
+            return None
+
+        # the master still knows the topic's type; foxglove_bridge offers published topics only
+        assert receive(unadvertised, timeout=15.0)
