@@ -13,8 +13,10 @@ TurtleBot3-shaped arena (or WORLD), its map on ``/map`` (or ``--map MAP.yaml``'s
 ``--tf-demo`` adds turtle_tf2's demo (a broadcaster per turtle, the listener that spawns
 turtle2 and makes it follow turtle1), as ``roslaunch turtle_tf2 turtle_tf2_demo.launch`` does.
 
-With ``--join`` it starts no core: turtlesim and teleop (and the screen) join the master already
-running at ``ROS_MASTER_URI`` (or, with ``--port``, the one on that port of this host). When the
+Its master listens on ``--port``, else on the port of ``ROS_MASTER_URI`` when that names this
+machine (as roslaunch starts its core), else on 11311. With ``--join`` it starts no core:
+turtlesim and teleop (and the screen) join the master already running at ``ROS_MASTER_URI`` (or,
+with ``--port``, the one on that port of this host). When the
 port is taken by a master, it says which nodes run there and how to join it or pick another
 port. Exit status 0; 1 when the port is taken, the master to join does not answer, or the
 robot lab's world or map cannot be read; 2 for a bad option.
@@ -31,7 +33,8 @@ from rosx.master.client import MasterError, MasterUnreachable
 from rosx.master.defaults import DEFAULT_MASTER_PORT, master_uri
 from rosx.signals import stop_on_signals
 from rosx.terminal import is_terminal
-from rosx.transport.address import advertised_host, http_uri
+from rosx.transport.address import advertised_host, http_uri, is_local_host
+from rosx.wire.xmlrpc_http import parse_http_uri
 from rosx_turtle.console import Console
 from rosx_turtle.env import ProcessEnv
 from rosx_turtle.sim.host import SimHost
@@ -39,7 +42,7 @@ from rosx_turtle.stage.lab.plan import LabError, plan_lab
 from rosx_turtle.tui.running import run_app
 
 if TYPE_CHECKING:
-    from collections.abc import Sequence
+    from collections.abc import Mapping, Sequence
 
     from _typeshed import SupportsWrite
 
@@ -87,7 +90,11 @@ def port(text: str) -> int:
 def _parse(argv: Sequence[str], env: Env) -> argparse.Namespace:
     parser = _Parser(env)
     parser.add_argument(
-        "-p", "--port", type=port, default=None, help=f"the master's port ({DEFAULT_MASTER_PORT})"
+        "-p",
+        "--port",
+        type=port,
+        default=None,
+        help=f"the master's port (ROS_MASTER_URI's on this machine, else {DEFAULT_MASTER_PORT})",
     )
     parser.add_argument(
         "--join",
@@ -127,7 +134,7 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
         return done.status
     headless = options.headless or not is_terminal(env.stdout)
     console = Console(env.stdout, env.stderr, env.environ) if headless else None
-    port_number = DEFAULT_MASTER_PORT if options.port is None else options.port
+    port_number = _own_port(env.environ) if options.port is None else options.port
     join = _join_uri(options.port, env) if options.join else None
     if options.map and options.robot is None:
         env.stderr.write("rosx sim: error: --map goes with --robot\n")
@@ -179,6 +186,17 @@ def run_sim(argv: Sequence[str], env: Env | None = None, *, seed: int | None = N
     finally:
         host.stop()
     return 0
+
+
+def _own_port(environ: Mapping[str, str]) -> int:
+    """The port of the master ``rosx sim`` starts without ``--port``: that of
+    ``ROS_MASTER_URI`` when it names this machine, as roslaunch starts its core there (so
+    the other terminals, which follow the variable, find it), else 11311."""
+    try:
+        host, port, _ = parse_http_uri(master_uri(environ))
+    except ValueError:
+        return DEFAULT_MASTER_PORT
+    return port if is_local_host(host) else DEFAULT_MASTER_PORT
 
 
 def _join_uri(port_option: int | None, env: Env) -> str:
