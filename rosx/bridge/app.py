@@ -81,7 +81,7 @@ class Bridge:
                     "rosapi", master_uri=options.master_uri, environ=options.environ
                 ).start()
                 RosApi(self.rosapi_node).advertise()
-            self.graph = GraphSide(self.node)
+            self.graph = GraphSide(self.node, log=self.log)
             self.server = BridgeServer(
                 self.graph,
                 host=options.address,

@@ -30,7 +30,7 @@ from rosx.node import ServiceError
 from rosx.node.clock import now
 
 if TYPE_CHECKING:
-    from collections.abc import Sequence
+    from collections.abc import Callable, Sequence
 
     from rosx.bridge.protocol import Session
     from rosx.msg.codec.message import Message
@@ -96,9 +96,17 @@ class _Served:
 class GraphSide:
     """The graph as the clients reach it, through ``node`` (started, owned by the caller)."""
 
-    def __init__(self, node: Node, *, default_queue: int = 100) -> None:
+    def __init__(
+        self,
+        node: Node,
+        *,
+        default_queue: int = 100,
+        log: Callable[[str], object] | None = None,
+    ) -> None:
         self.node = node
         self.default_queue = default_queue
+        #: Where what a client was refused is logged (the bridge's terminal).
+        self.log = log
         self._lock = threading.Lock()
         self._advertised: dict[str, _Advertised] = {}
         self._subscribed: dict[str, _Subscribed] = {}
@@ -114,9 +122,12 @@ class GraphSide:
         self.react(client, reaction)
 
     def react(self, client: Client, reaction: ops.Reaction) -> None:
-        """Send a reaction's frames and carry out its events."""
+        """Send a reaction's frames, log its errors and carry out its events."""
         if reaction.frames:
             client.send(reaction.frames)
+        if reaction.errors and self.log is not None:
+            for text in reaction.errors:
+                self.log(f"[Client {client.session.client}] {text}")
         for event in reaction.events:
             try:
                 self._carry_out(client, event)
@@ -280,14 +291,15 @@ class GraphSide:
                 request = client.session.service_request_message(call, service_class, now())
             response = self.node.service_client(call.service, service_class).call(request)
         except ConversionError as exc:
-            frames = client.session.service_failed(call, str(exc))
+            failed = client.session.service_failed(call, str(exc))
         except ServiceError as exc:
-            frames = client.session.service_failed(call, str(exc))
+            failed = client.session.service_failed(call, str(exc))
         except Exception as exc:  # whatever failed, the client gets its answer
-            frames = client.session.service_failed(call, f"{type(exc).__name__}: {exc}")
+            failed = client.session.service_failed(call, f"{type(exc).__name__}: {exc}")
         else:
-            frames = client.session.service_done(call, response)
-        client.send(frames)
+            client.send(client.session.service_done(call, response))
+            return
+        self.react(client, failed)
 
     # -- services the clients serve --------------------------------------------------------------
 

@@ -130,15 +130,19 @@ Event = (
 
 @dataclass(slots=True)
 class Reaction:
-    """Frames for the client and events for the shell, from one input."""
+    """Frames for the client, events for the shell and errors for the server's log, from one
+    input."""
 
     frames: list[Frame] = field(default_factory=list)
     events: list[Event] = field(default_factory=list)
+    #: What the client was told is wrong (whatever its status level), for the server's log.
+    errors: list[str] = field(default_factory=list)
 
     def extend(self, other: Reaction) -> None:
-        """Append ``other``'s frames and events after this one's."""
+        """Append ``other``'s frames, events and errors after this one's."""
         self.frames += other.frames
         self.events += other.events
+        self.errors += other.errors
 
 
 __all__ = [

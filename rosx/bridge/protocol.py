@@ -160,8 +160,11 @@ class Session:
         return reaction
 
     def error(self, text: str, rid: object = None) -> ops.Reaction:
-        """An ``error`` status."""
-        return self.status("error", text, rid)
+        """An ``error`` status, and the error for the server's log (rosbridge_suite logs what
+        it refuses, and only that)."""
+        reaction = self.status("error", text, rid)
+        reaction.errors.append(text if rid is None else f"[id: {rid}] {text}")
+        return reaction
 
     # -- topics ------------------------------------------------------------------------------
 
@@ -350,9 +353,11 @@ class Session:
             frame["id"] = call.id
         return [json.dumps(frame, allow_nan=False)]
 
-    def service_failed(self, call: ops.CallService, error: str) -> list[ops.Frame]:
-        """A failed call: an error status, then ``service_response`` with result false."""
-        frames = self.error(f"call_service {call.service}: {error}", call.id).frames
+    def service_failed(self, call: ops.CallService, error: str) -> ops.Reaction:
+        """A failed call: an error status, then ``service_response`` with result false (and
+        the error for the server's log)."""
+        reaction = self.error(f"call_service {call.service}: {error}", call.id)
+        frames = reaction.frames
         frame: dict[str, Any] = {
             "op": "service_response",
             "service": call.service,
@@ -362,7 +367,7 @@ class Session:
         if call.id is not None:
             frame["id"] = call.id
         frames.append(json.dumps(frame))
-        return frames
+        return reaction
 
     # -- services the client serves ------------------------------------------------------------
 

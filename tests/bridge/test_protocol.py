@@ -362,8 +362,10 @@ def test_call_service_args_as_list_or_object() -> None:
         "id": "c1",
     }
     failed = session.service_failed(call, "service [/spawn] unavailable")
-    assert statuses(failed) == [("error", "call_service /spawn: service [/spawn] unavailable")]
-    assert json.loads(failed[1])["result"] is False
+    text = "call_service /spawn: service [/spawn] unavailable"
+    assert statuses(failed.frames) == [("error", text)]
+    assert json.loads(failed.frames[1])["result"] is False
+    assert failed.errors == [f"[id: c1] {text}"]
 
 
 def test_a_service_the_client_serves() -> None:

@@ -75,8 +75,21 @@ def test_bad_input_gets_a_status_and_the_connection_goes_on(
                 continue
             status = next_op(ws, "status")
             assert (status["level"], status["msg"][: len(text)]) == ("error", text)
+        ws.send('{"op": "set_level", "level": "none"}')  # told nothing, logged all the same
+        ws.send('{"op": "dance", "id": "d1"}')
         pose_arrives(ws)
         pose_arrives(other)
+    # the bridge's terminal says what it refused, as rosbridge_suite's log does
+    logged = [text for _, text in BAD if text] + ["[id: d1] Unknown operation: dance."]
+
+    def all_logged() -> bool:
+        client = [line for line in running.lines if line.startswith("[Client 127.0.0.1] ")]
+        return all(any(want in line for line in client) for want in logged)
+
+    deadline = time.monotonic() + 10
+    while not all_logged():
+        assert time.monotonic() < deadline, running.lines
+        time.sleep(0.01)
 
 
 def test_an_oversized_frame_closes_with_1009_after_a_status(master: str) -> None:
