@@ -43,16 +43,13 @@ from __future__ import annotations
 
 import argparse
 import asyncio
-import base64
 import contextlib
-import hashlib
 import json
 import os
 import shutil
 import signal
 import socket
 import statistics
-import struct
 import subprocess
 import sys
 import tempfile
@@ -61,6 +58,11 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
+
+from websockets.client import ClientProtocol
+from websockets.frames import Frame, Opcode
+from websockets.http11 import Response
+from websockets.uri import parse_uri
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
@@ -389,92 +391,66 @@ async def _read(ws: Any, until: float, on_message: Callable[[Any], None]) -> Non
 
 class LeanClient:
     """A WebSocket client that takes the time the moment a message's bytes arrive: a thread of
-    its own, blocked in ``recv`` on a plain socket, that parses the server's frames and notes
-    `time.time` right after the ``recv`` that completed each message, and nothing else (the
-    messages are decoded after the run). The websockets client's own reading (the event
-    loop's wake-up, its frame parser, its queue) is time every bridge's figure would include
-    and none of them spends.
-
-    The opening handshake is a local tool's (RFC 6455, 4.1): no ``Origin``, as programs that are
-    not browsers send none; the client's frames are masked, the server's are not.
+    its own, blocked in ``recv`` on a plain socket, that notes `time.time` right after each
+    ``recv`` and only then hands the bytes to websockets' sans-I/O client protocol; the
+    messages are decoded after the run. The websockets asyncio client's own reading (the event
+    loop's wake-up, its queue) is time every bridge's figure would include and none of them
+    spends. No ``Origin`` is sent, as programs that are not browsers send none.
     """
 
     def __init__(self, port: int) -> None:
+        self.protocol = ClientProtocol(parse_uri(f"ws://127.0.0.1:{port}/"))
         self.sock = socket.create_connection(("127.0.0.1", port), timeout=10)
         self.sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-        key = base64.b64encode(os.urandom(16))
-        self.sock.sendall(
-            b"GET / HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nUpgrade: websocket\r\n"
-            b"Connection: Upgrade\r\nSec-WebSocket-Key: %s\r\nSec-WebSocket-Version: 13\r\n\r\n"
-            % (port, key)
-        )
-        answer = b""
-        while b"\r\n\r\n" not in answer:
+        self.protocol.send_request(self.protocol.connect())
+        self._flush()
+        #: Frames that came with the handshake's answer.
+        self._pending: list[Frame] = []
+        answered = False
+        while not answered:
             chunk = self.sock.recv(4096)
             if not chunk:
                 raise ConnectionError("the server closed the connection in the handshake")
-            answer += chunk
-        head, _, rest = answer.partition(b"\r\n\r\n")
-        accept = base64.b64encode(hashlib.sha1(key + _WS_GUID).digest())
-        lines = head.split(b"\r\n")
-        if lines[0].split(b" ")[1:2] != [b"101"] or not any(
-            line.lower().startswith(b"sec-websocket-accept:")
-            and line.split(b":", 1)[1].strip() == accept
-            for line in lines[1:]
-        ):
-            raise ConnectionError(f"the handshake failed: {lines[0].decode(errors='replace')}")
+            self.protocol.receive_data(chunk)
+            for event in self.protocol.events_received():
+                if isinstance(event, Response):
+                    answered = True
+                elif isinstance(event, Frame):
+                    self._pending.append(event)
+        if self.protocol.handshake_exc is not None:
+            raise ConnectionError(f"the handshake failed: {self.protocol.handshake_exc}")
         self.sock.settimeout(None)
-        self._buffer = bytearray(rest)
         #: (time.time() when the message was complete, its payload), in order.
         self.arrivals: list[tuple[float, bytes]] = []
-        self._closing = False
         self._thread = threading.Thread(target=self._run, name="lean-client", daemon=True)
 
-    def send_text(self, text: str) -> None:
-        self._send(0x1, text.encode())
+    def _flush(self) -> None:
+        for data in self.protocol.data_to_send():
+            if data:
+                self.sock.sendall(data)
 
-    def _send(self, opcode: int, payload: bytes) -> None:
-        """One final frame, masked as a client's must be."""
-        mask = os.urandom(4)
-        n = len(payload)
-        if n < 126:
-            head = struct.pack("!BB", 0x80 | opcode, 0x80 | n)
-        elif n < 1 << 16:
-            head = struct.pack("!BBH", 0x80 | opcode, 0x80 | 126, n)
-        else:
-            head = struct.pack("!BBQ", 0x80 | opcode, 0x80 | 127, n)
-        masked = bytes(b ^ mask[i & 3] for i, b in enumerate(payload))
-        self.sock.sendall(head + mask + masked)
+    def send_text(self, text: str) -> None:
+        self.protocol.send_text(text.encode())
+        self._flush()
 
     def start(self) -> None:
         self._thread.start()
 
     def _run(self) -> None:
-        sock, buffer, arrivals = self.sock, self._buffer, self.arrivals
+        sock, protocol, arrivals = self.sock, self.protocol, self.arrivals
         parts: list[bytes] = []  # a fragmented message so far
-        now = time.time()
+        frames, now = list(self._pending), time.time()
         while True:
-            # Frames already buffered (several per read, or after the handshake) first.
-            offset = 0
-            while True:
-                frame = _server_frame(buffer, offset)
-                if frame is None:
-                    break
-                fin, opcode, payload, offset = frame
-                if opcode == 0x8:  # close: answer it (unless this side began), and stop
-                    if not self._closing:
-                        with contextlib.suppress(OSError):
-                            self._send(0x8, payload[:2])
-                    return
-                if opcode == 0x9:  # ping
-                    with contextlib.suppress(OSError):
-                        self._send(0xA, payload)
-                elif opcode in (0x0, 0x1, 0x2):
-                    parts.append(payload)
-                    if fin:
+            for frame in frames:
+                if frame.opcode in (Opcode.TEXT, Opcode.BINARY, Opcode.CONT):
+                    parts.append(bytes(frame.data))
+                    if frame.fin:
                         arrivals.append((now, b"".join(parts)))
                         parts = []
-            del buffer[:offset]
+            with contextlib.suppress(OSError):
+                self._flush()  # pongs, the answer to a close
+            if protocol.close_expected():  # the server closes
+                return
             try:
                 chunk = sock.recv(1 << 16)
             except OSError:
@@ -482,15 +458,12 @@ class LeanClient:
             now = time.time()  # the moment the bytes arrived, before any work on them
             if not chunk:
                 return
-            buffer += chunk
+            protocol.receive_data(chunk)
+            frames = [e for e in protocol.events_received() if isinstance(e, Frame)]
 
     def stop(self) -> list[tuple[float, bytes]]:
-        """Close the connection (the server's answering close frame ends the reading; the
-        floor's relay sends none: a second later the socket is shut); what came."""
-        self._closing = True
-        with contextlib.suppress(OSError):
-            self._send(0x8, struct.pack("!H", 1000))
-        self._thread.join(1)
+        """End the connection (the socket shut down: the protocol object is the reading
+        thread's alone); what came."""
         self.close()
         return self.arrivals
 
@@ -500,38 +473,6 @@ class LeanClient:
                 self.sock.shutdown(socket.SHUT_RDWR)
             self._thread.join(5)
         self.sock.close()
-
-
-#: The GUID of RFC 6455's handshake.
-_WS_GUID = b"258EAFA5-E914-47DA-95CA-C5AB0DC85B11"
-
-
-def _server_frame(buffer: bytearray, offset: int) -> tuple[bool, int, bytes, int] | None:
-    """The frame of a server (unmasked) at ``offset`` of ``buffer``: FIN, opcode, payload and
-    the offset after it; None until it is all there."""
-    if len(buffer) - offset < 2:
-        return None
-    first, second = buffer[offset], buffer[offset + 1]
-    length, start = second & 0x7F, offset + 2
-    if length == 126:
-        if len(buffer) - offset < 4:
-            return None
-        length, start = int.from_bytes(buffer[offset + 2 : offset + 4], "big"), offset + 4
-    elif length == 127:
-        if len(buffer) - offset < 10:
-            return None
-        length, start = int.from_bytes(buffer[offset + 2 : offset + 10], "big"), offset + 10
-    if second & 0x80:  # a masked frame (no server sends one): its key comes first
-        mask, start = bytes(buffer[start : start + 4]), start + 4
-    else:
-        mask = b""
-    end = start + length
-    if len(buffer) < end:
-        return None
-    payload = bytes(buffer[start:end])
-    if mask:
-        payload = bytes(b ^ mask[i & 3] for i, b in enumerate(payload))
-    return bool(first & 0x80), first & 0x0F, payload, end
 
 
 def _tag(bridge: Bridge) -> str:
