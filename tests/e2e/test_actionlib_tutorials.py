@@ -26,7 +26,7 @@ from rosx.msg.codec.classes import get_message_class
 from tests.support.cli import rosx
 from tests.support.client import fresh_rospy
 from tests.support.fetched import fetched_tree
-from tests.support.procs import stop, wait_for
+from tests.support.procs import wait_for
 from tests.support.tutorial_nodes import ROSCPP_LINE, ROSPY_LINE, Runs, lines
 
 FibonacciAction = get_message_class("actionlib_tutorials/FibonacciAction")
@@ -142,18 +142,9 @@ def _said_text(text: str) -> list[str]:
     return found
 
 
-def test_averaging_launch_averages_the_random_numbers(runs: Runs, tmp_path: Path) -> None:
-    log = tmp_path / "launch.log"
-    with log.open("w") as out:
-        launch = subprocess.Popen(
-            [sys.executable, "-m", "rosx_commands", "roslaunch", "actionlib_tutorials", "averaging.launch"],
-            env=runs.env, stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.STDOUT,
-            start_new_session=True,
-        )  # fmt: skip
-        try:
-            wait_for(lambda: "Action finished: " in log.read_text(), 60, "the client's answer")
-        finally:
-            stop(launch)
+def test_averaging_launch_averages_the_random_numbers(runs: Runs) -> None:
+    with runs.tool("roslaunch", "actionlib_tutorials", "averaging.launch") as log:
+        wait_for(lambda: "Action finished: " in log.read_text(), 60, "the client's answer")
     said = _said(log, ROSCPP_LINE)
     finished = next(line for line in said if line.startswith("Action finished: "))
     verdict = {"Action finished: SUCCEEDED": "Succeeded", "Action finished: ABORTED": "Aborted"}

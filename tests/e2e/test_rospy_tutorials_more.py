@@ -55,19 +55,10 @@ def test_each_subscription_gets_its_own_callback_argument(runs: Runs) -> None:
     )
 
 
-def test_param_talker_launch_reads_sets_and_uses_its_parameters(runs: Runs, tmp_path: Path) -> None:
-    log = tmp_path / "launch.log"
-    with log.open("w") as out:
-        launch = subprocess.Popen(
-            [sys.executable, "-m", "rosx_commands", "roslaunch", "rospy_tutorials", "param_talker.launch"],
-            env=runs.env, stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.STDOUT,
-            start_new_session=True,
-        )  # fmt: skip
-        try:
-            wait_for(lambda: "]: Hello World" in log.read_text(), what="the first utterance")
-            listed = runs_tool(runs, "rosparam", "get", "/foo")
-        finally:
-            stop(launch)
+def test_param_talker_launch_reads_sets_and_uses_its_parameters(runs: Runs) -> None:
+    with runs.tool("roslaunch", "rospy_tutorials", "param_talker.launch") as log:
+        wait_for(lambda: "]: Hello World" in log.read_text(), what="the first utterance")
+        listed = runs_tool(runs, "rosparam", "get", "/foo")
     said = [
         line.partition("]: ")[2]
         for line in log.read_text().splitlines()
@@ -190,20 +181,8 @@ def test_a_subscribe_listener_greets_each_subscriber(runs: Runs) -> None:
         wait_for(lambda: "hello world 0" in lines(talker), what="the talker")
         # Read until both greetings came: the talker's own messages may come between (its
         # listener runs on a thread of its own, as each connection's is in rospy).
-        heard = runs.folder / "echo.log"
-        with heard.open("w") as out:
-            echo = subprocess.Popen(
-                [sys.executable, "-m", "rosx_commands", "rostopic", "echo", "/chatter"],
-                env=runs.env, stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.STDOUT,
-                start_new_session=True,
-            )  # fmt: skip
-            try:
-                wait_for(
-                    lambda: greetings <= set(heard.read_text().splitlines()),
-                    what="both greetings at the echo",
-                )
-            finally:
-                stop(echo)
+        with runs.tool("rostopic", "echo", "/chatter") as heard:
+            wait_for(lambda: greetings <= set(lines(heard)), what="both greetings at the echo")
         wait_for(lambda: "I have no friends" in lines(talker), what="the echo to leave")
     said = [line for line in lines(talker) if not line.startswith("hello world")]
     assert said == [

@@ -31,11 +31,18 @@ class Runs:
     @contextmanager
     def node(self, *argv: str) -> Iterator[Path]:
         """Run ``rosrun ARGV…`` for the block; yields the file its stdout and stderr go to."""
+        with self.tool("rosrun", *argv, name=argv[1]) as log:
+            yield log
+
+    @contextmanager
+    def tool(self, *argv: str, name: str | None = None) -> Iterator[Path]:
+        """Run ``rosx ARGV…`` (``roslaunch``, ``rostopic echo``…) for the block; yields the
+        file its stdout and stderr go to, named after ``name`` (else the tool)."""
         self.count += 1
-        log = self.folder / f"{self.count}-{argv[1].replace('/', '_')}.log"
+        log = self.folder / f"{self.count}-{(name or argv[0]).replace('/', '_')}.log"
         with log.open("w") as out:
             process = subprocess.Popen(
-                self.command(*argv),
+                [sys.executable, "-m", "rosx_commands", *argv],
                 env=self.env,
                 stdin=subprocess.DEVNULL,
                 stdout=out,
