@@ -13,6 +13,10 @@ here installs nothing when called from another thread, and a handler never waits
   Python's, which raises `KeyboardInterrupt`; rospy keeps it from the program).
 - `interrupt_on_sigint`: SIGINT raises `KeyboardInterrupt` even in a process that started with it
   ignored, as ROS 1's tools stop on ``kill -INT``.
+- `wait`: how the main thread waits for an event while other threads run. The kernel may hand a
+  signal to any thread; one that lands on another thread only marks Python's handler as due,
+  and a main thread asleep in an untimed wait never wakes to run it (Ctrl-C then does
+  nothing). The main thread therefore waits in slices, as rospy's ``spin`` does.
 """
 
 from __future__ import annotations
@@ -100,6 +104,24 @@ def install_signal_handlers(
         signal.signal(signum, handler)
 
 
+#: The longest the main thread sleeps in `wait` before it looks for a due signal handler.
+WAIT_SLICE = 0.2
+
+
+def wait(event: threading.Event, timeout: float | None = None) -> bool:
+    """``event.wait(timeout)``, in slices of `WAIT_SLICE` in the main thread, so a signal that
+    the kernel gave another thread still reaches its handler there (see the module's notes)."""
+    if not _main_thread():
+        return event.wait(timeout)
+    import time  # noqa: PLC0415 - as in `_main_thread`
+
+    deadline = None if timeout is None else time.monotonic() + timeout
+    while True:
+        left = WAIT_SLICE if deadline is None else min(WAIT_SLICE, deadline - time.monotonic())
+        if event.wait(max(left, 0.0)) or left <= 0:
+            return event.is_set()
+
+
 def interrupt_on_sigint() -> None:
     """Make SIGINT raise `KeyboardInterrupt` even when this process started with it ignored.
 
@@ -116,4 +138,5 @@ __all__ = [
     "install_signal_handlers",
     "interrupt_on_sigint",
     "stop_on_signals",
+    "wait",
 ]

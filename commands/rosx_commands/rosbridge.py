@@ -101,6 +101,7 @@ def _port(text: str) -> int:
 def _serve(settings: BridgeOptions, env: Environment) -> int:
     from rosx.bridge.app import BadParameterError, Bridge  # noqa: PLC0415 - not for -h or usage errors
     from rosx.node import install_signal_handlers  # noqa: PLC0415 - with the bridge
+    from rosx.signals import wait  # noqa: PLC0415 - with the bridge
 
     bridge = Bridge(settings, log=env.out)
     try:
@@ -120,7 +121,7 @@ def _serve(settings: BridgeOptions, env: Environment) -> int:
     install_signal_handlers(lambda reason: stop.set())
     bridge.node.on_shutdown(lambda reason: stop.set())
     try:
-        stop.wait()
+        wait(stop)
     except KeyboardInterrupt:
         pass
     finally:

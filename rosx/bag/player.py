@@ -29,6 +29,8 @@ import threading
 import time
 from typing import TYPE_CHECKING, Any
 
+from rosx.signals import wait
+
 if TYPE_CHECKING:
     from collections.abc import Callable, Iterator
 
@@ -270,7 +272,7 @@ class Player:
                 if not self.options.loop:
                     break
             if self.options.keep_alive:
-                self._stopped.wait()
+                wait(self._stopped)
         finally:
             self._stopped.set()
             if clock is not None:

@@ -23,6 +23,7 @@ from rosx.core.errors import refusal
 from rosx.core.params import set_core_params
 from rosx.core.rosout import start_rosout
 from rosx.master.server import MasterThread
+from rosx.signals import wait
 from rosx.transport.address import advertised_host, bind_host, http_uri
 
 if TYPE_CHECKING:
@@ -97,7 +98,7 @@ class Core:
         Returns:
             The ``shutdown`` call's message (maybe empty), or None when there was none.
         """
-        self._ended.wait(timeout)
+        wait(self._ended, timeout)
         return self._shutdown_message
 
     def stop(self) -> None:

@@ -22,6 +22,7 @@ import time
 
 from rosx.msg.codec.rostime import Duration, Time
 from rosx.node.errors import NodeShutdownError, TimeMovedBackwardsError
+from rosx.signals import wait
 
 #: Seconds between two looks at the shutdown event while waiting for ``/clock``.
 _SIM_POLL = 0.1
@@ -54,7 +55,7 @@ def sleep(
         if seconds > 0:
             time.sleep(seconds)
         return
-    if shutdown.is_set() or (seconds > 0 and shutdown.wait(seconds)):
+    if shutdown.is_set() or (seconds > 0 and wait(shutdown, seconds)):
         raise NodeShutdownError("shutdown interrupted the sleep")
 
 

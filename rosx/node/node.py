@@ -40,6 +40,7 @@ from rosx.node.startup import set_private_params
 from rosx.node.subscription import RawMessage, Subscription
 from rosx.node.tcpros_server import TcprosServer
 from rosx.node.watchdog import master_watch
+from rosx.signals import wait
 from rosx.transport.aclient import AsyncXmlRpcClient
 from rosx.transport.address import advertised_host, bind_host, foreign_address_warning
 from rosx.transport.client import XmlRpcClient
@@ -203,7 +204,7 @@ class Node:
 
     def wait_for_shutdown(self, timeout: float | None = None) -> bool:
         """Block until the node shuts down; False if ``timeout`` passed first."""
-        return self._shutdown.wait(timeout)
+        return wait(self._shutdown, timeout)
 
     def shutdown(self, reason: str = "") -> None:
         """Unregister everything from the master, close every connection, run the hooks.
