@@ -79,7 +79,7 @@ MIXED = ("roscpp>rosx", "rosx>roscpp")
 
 def cases(scale: float) -> list[Case]:
     small, latency, large = int(200_000 * scale), int(3000 * scale), int(1000 * scale)
-    clouds = max(10, large // 50)
+    clouds = max(10, large // 10)
     return [
         Case("flood", "Twist flood, none lost (queue unbounded / None)", "twist", small, None,
              0.0, "rate", SINGLE + MIXED),
