@@ -66,6 +66,27 @@ def test_a_goal_succeeds_after_its_feedback_in_order(rospy: ModuleType) -> None:
     assert client.get_result().result == 400
 
 
+def test_a_goal_answered_before_send_goal_returns_still_finishes(rospy: ModuleType) -> None:
+    # Noetic's client notes the goal's handle after sending the goal, and drops an answer that
+    # comes first ("Got a transition callback on a goal handle that we're not tracking"): the
+    # goal then never finishes for it (ros/actionlib#206). Here send_goal returns only once the
+    # server's whole answer has been handled.
+    _, client = _pair(rospy, lambda server, goal: server.set_succeeded(Result(result=1), "quick"))
+    manager = client.action_client.manager
+    send = manager.send_goal_fn
+    done = threading.Event()
+
+    def send_then_wait_for_the_answer(action_goal: Any) -> None:
+        send(action_goal)
+        done.wait(10)
+
+    manager.register_send_goal_fn(send_then_wait_for_the_answer)
+    client.send_goal(Goal(goal=1), done_cb=lambda state, result: done.set())
+    assert done.is_set()
+    assert client.wait_for_result(rospy.Duration(10))
+    assert (client.get_state(), client.get_goal_status_text()) == (Status.SUCCEEDED, "quick")
+
+
 def test_a_canceled_goal_is_preempted(rospy: ModuleType) -> None:
     _, client = _pair(rospy, _until_preempted)
     client.send_goal(Goal(goal=7))

@@ -69,6 +69,13 @@ PAIRS = [
     ("mock_simple_server.py", "exercise_simple_client", "exercise_simple_server"),
 ]
 
+#: What Noetic's ``SimpleActionClient`` logs when the server's answer to a goal comes before
+#: ``send_goal`` has noted the goal's handle: it drops the answer and the goal never finishes
+#: for it (ros/actionlib#206, never fixed; rosx's client notes the handle before sending). On a
+#: loaded machine a quick server meets that race now and then; Debian's client running the
+#: tests is then given one more run.
+ROS1_CLIENT_RACE = "Got a transition callback on a goal handle that we're not tracking"
+
 #: (server side, tests side): rosx alone, then each against ROS 1 (Debian's actionlib).
 SIDES = [
     pytest.param("rosx", "rosx", id="rosx"),
@@ -100,7 +107,10 @@ def test_actionlibs_own_tests_pass(
         status = SERVERS[server]
         probe = _environ("rosx", master, tmp_path)
         wait_for(lambda: _published(probe, status), 60, f"{server}'s {status}")
-        done = _run_tests(tests_side, folder, module, node, _environ(tests_side, master, tmp_path))
+        env = _environ(tests_side, master, tmp_path)
+        done = _run_tests(tests_side, folder, module, node, env)
+        if tests_side == "ros1" and done.returncode and ROS1_CLIENT_RACE in done.stderr:
+            done = _run_tests(tests_side, folder, module, node, env)  # once more, see above
     assert done.returncode == 0, done.stderr + log.read_text()
     assert "\nOK" in done.stderr
 
