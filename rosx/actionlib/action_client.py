@@ -182,6 +182,11 @@ class CommStateMachine:
         self.mutex = threading.RLock()
         self.latest_goal_status = msgs().GoalStatus(status=int(Status.PENDING))
         self.latest_result: Any = None
+        #: The stamp (ns, the server's clock) of the feedback that told of the goal's
+        #: acceptance before any status array did (`update_feedback`). A status array stamped
+        #: no later was sent before the acceptance and may arrive after that feedback (another
+        #: topic): that it does not list the goal does not make the goal lost.
+        self._accepted_by_feedback = -1
 
     def __eq__(self, o: object) -> bool:
         if not isinstance(o, CommStateMachine):
@@ -199,15 +204,17 @@ class CommStateMachine:
         """Follow what a ``GoalStatusArray`` says of this goal."""
         own = self.action_goal.goal_id.id
         found = next((s for s in status_array.status_list if s.goal_id.id == own), None)
-        self.update_from(found)
+        self.update_from(found, status_array.header.stamp.to_nsec())
 
-    def update_from(self, status: Any) -> None:
-        """Follow the goal's ``GoalStatus`` as a status array listed it (None: not listed)."""
+    def update_from(self, status: Any, sent: int | None = None) -> None:
+        """Follow the goal's ``GoalStatus`` as a status array listed it (None: not listed);
+        ``sent``: the array's stamp (ns)."""
         with self.mutex:
             if self.state == CommState.DONE:
                 return
             if status is None:
-                if self.state not in UNLISTED_IS_NORMAL:
+                older = sent is not None and sent <= self._accepted_by_feedback
+                if self.state not in UNLISTED_IS_NORMAL and not older:
                     self._mark_as_lost()
                 return
             self.latest_goal_status = status
@@ -258,7 +265,9 @@ class CommStateMachine:
 
         Feedback comes from an accepted goal, and may arrive before the status that says so
         (another topic): its own status moves a goal still waiting for acknowledgement first,
-        so the transition callback hears of the goal going active before any feedback.
+        so the transition callback hears of the goal going active before any feedback. A
+        status array sent before the acceptance may still come after it: its silence about
+        the goal is then no loss (`update_from`).
         """
         status = action_feedback.status
         if self.action_goal.goal_id.id != status.goal_id.id:
@@ -268,6 +277,7 @@ class CommStateMachine:
                 if self.state in _BEFORE_ACKNOWLEDGEMENT and isinstance(
                     comm_next(self.state, status.status), tuple
                 ):
+                    self._accepted_by_feedback = action_feedback.header.stamp.to_nsec()
                     self.update_from(status)
         if self.feedback_cb and self.state != CommState.DONE:
             self.feedback_cb(ClientGoalHandle(self), action_feedback.feedback)
@@ -348,8 +358,9 @@ class GoalManager:
     def update_statuses(self, status_array: Any) -> None:
         """Every followed goal learns what a status array says of it."""
         listed = {status.goal_id.id: status for status in status_array.status_list}
+        sent = status_array.header.stamp.to_nsec()
         for machine in self._get_live_statuses():
-            machine.update_from(listed.get(machine.action_goal.goal_id.id))
+            machine.update_from(listed.get(machine.action_goal.goal_id.id), sent)
 
     def update_results(self, action_result: Any) -> None:
         """Pass a ``result`` message to the state machine of its goal; others' goals are ignored."""
