@@ -69,7 +69,10 @@ if TYPE_CHECKING:
 #: a process hosting many nodes (``rosx sim``, the tests) would keep each node's idle threads.
 #: 8 serves a few slow callers and a nested call or two at once; a ninth call waits its turn.
 WORKERS = 8
-_UNREGISTER_TIMEOUT = 2.0
+#: How long a shutting-down node waits for the master to take its unregistrations (one round
+#: trip). A master that is gone refuses at once; a loaded one may take seconds, and a node that
+#: gave up early would stay listed after it left (rospy waits as long as it takes).
+_UNREGISTER_TIMEOUT = 10.0
 #: How long a second `Node.shutdown` caller waits for the first to finish.
 _FINISH_TIMEOUT = 15.0
 
@@ -245,11 +248,9 @@ class Node:
         calls += [("unregisterPublisher", (t, self.uri)) for t in self.publications]
         calls += [("unregisterSubscriber", (t, self.uri)) for t in self.subscriptions]
         calls += [("unregisterService", (n, s.uri)) for n, s in self.services.items()]
-        for method, params in calls:
-            try:
-                self.master.call(method, *params, timeout=_UNREGISTER_TIMEOUT)
-            except Exception:  # a gone master must not stop the shutdown
-                continue
+        # in one round trip, as rospy unregisters; a gone master must not stop the shutdown
+        with contextlib.suppress(Exception):
+            self.master.multicall(calls, timeout=_UNREGISTER_TIMEOUT)
         self.params.unsubscribe_all()
 
     async def _close_all(self) -> None:

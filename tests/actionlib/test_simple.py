@@ -74,6 +74,7 @@ def test_a_goal_answered_before_send_goal_returns_still_finishes(rospy: ModuleTy
     _, client = _pair(rospy, lambda server, goal: server.set_succeeded(Result(result=1), "quick"))
     manager = client.action_client.manager
     send = manager.send_goal_fn
+    assert send is not None
     done = threading.Event()
 
     def send_then_wait_for_the_answer(action_goal: Any) -> None:
