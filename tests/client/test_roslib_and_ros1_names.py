@@ -14,6 +14,7 @@ import pty
 import select
 import subprocess
 import sys
+import termios
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -56,7 +57,13 @@ def test_teleop_twist_keyboard_publishes_twist_for_its_keys(
 
         return arrived
 
+    def reading_keys() -> bool:
+        # The script puts its terminal in raw mode (discarding what was typed) each time it
+        # waits for a key, and back between keys: a key typed between two waits is lost.
+        return not termios.tcgetattr(terminal_fd)[3] & termios.ICANON
+
     def key(keys: bytes, twist: tuple[float, ...]) -> None:
+        wait_for(reading_keys, what="the script waiting for a key")
         os.write(main_fd, keys)
         wait_for(lambda: twists and _vector(twists[-1]) == twist, what=f"{twist} for {keys!r}")
 
