@@ -290,9 +290,7 @@ class GraphSide:
             with client.lock:
                 request = client.session.service_request_message(call, service_class, now())
             response = self.node.service_client(call.service, service_class).call(request)
-        except ConversionError as exc:
-            failed = client.session.service_failed(call, str(exc))
-        except ServiceError as exc:
+        except (ConversionError, ServiceError) as exc:
             failed = client.session.service_failed(call, str(exc))
         except Exception as exc:  # whatever failed, the client gets its answer
             failed = client.session.service_failed(call, f"{type(exc).__name__}: {exc}")
