@@ -65,6 +65,13 @@ class Publisher:
         if not self.closed:
             self.publication.publish_frame(length_prefix(len(payload)) + payload)
 
+    def flush(self) -> None:
+        """Write out now what a flood of this topic holds back (small messages published
+        microseconds apart go out together), so that no message published after this call,
+        on any topic, reaches a subscriber first: an action's result after its feedback."""
+        if not self.closed:
+            self.publication.flush()
+
     def get_num_connections(self) -> int:
         """Subscribers currently connected."""
         return self.publication.connection_count()
@@ -137,6 +144,11 @@ class Subscriber:
         """What has reached this host for the topic so far (read, or in a socket's buffer):
         its ``done()`` is true once the callbacks have had it all."""
         return self.subscription.drain()
+
+    def make_drains_exact(self) -> None:
+        """Have `drain` also count what a connection's thread is reading at that moment, at a
+        system call more for each read: for a topic that another must not overtake."""
+        self.subscription.make_drains_exact()
 
     def detach(self) -> None:
         """Stop reading the topic's connections; what was read still reaches the callbacks

@@ -153,6 +153,10 @@ class IncomingStream:
         self.retired = False
         self.bytes_received = 0
         self.frames_received = 0
+        #: Whether a read may have taken bytes from the socket that the two counts above do not
+        #: have yet: set around each read by a receiver whose drains are exact
+        #: (`rosx.node.receiver.Receiver.exact`), and waited out by `Drain`.
+        self.in_hand = False
         self._reader = FrameReader(DEFAULT_MAX_HEADER_SIZE)
         #: What each read reads into (`read`, or a receiver's own reads: `whole_frame`,
         #: `read_on`), and a view of it.
@@ -348,8 +352,8 @@ class IncomingStream:
         """The frame of a read of ``size`` bytes into `scratch` that is one whole frame and
         nothing else (the usual read on a topic whose subscriber keeps up), counted."""
         frame = bytes(self.view[4:size])
-        self.bytes_received += size
         self.frames_received += 1
+        self.bytes_received += size
         if self.latching:
             self.latched = frame
         return frame
@@ -383,8 +387,9 @@ class IncomingStream:
                 break  # deliver what came; the next read sees the end
             total += size
             reader.feed(view[:size])
-        self.bytes_received += total
-        return self.take_frames()
+        frames = self.take_frames()
+        self.bytes_received += total  # after the frames: a drain reads the bytes first
+        return frames
 
     @property
     def buffered(self) -> int:
@@ -414,8 +419,8 @@ class IncomingStream:
                 if count == 0:
                     return None
                 got += count
-        self.bytes_received += 4 + size if read else size - head
         self.frames_received += 1
+        self.bytes_received += 4 + size if read else size - head
         self._look = True  # the next may be large too: look at it before reading it
         frame = memoryview(buff) if len(buff) == size else memoryview(buff)[:size]
         if self.latching:
@@ -465,8 +470,8 @@ class IncomingStream:
             return None
         if array is None or tail is None:
             return None
-        self.bytes_received += 4 + length
         self.frames_received += 1
+        self.bytes_received += 4 + length
         frame = FrameInParts(head, array, tail)
         if self.latching:
             self.latched = frame

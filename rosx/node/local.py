@@ -149,6 +149,9 @@ class LocalLink:
         self.closed = False
         self.frames_received = 0
         self.bytes_received = 0
+        #: Never: a message published in this process is counted as it is queued (as for
+        #: streams, what `Drain` looks at).
+        self.in_hand = False
         #: No socket (what code that handles streams and links alike may look at).
         self.sock: None = None
         #: The transport's name in ``getBusInfo`` (as for streams).

@@ -31,8 +31,9 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
   frames if the peer has read what it had, once `HOLD_FRAMES` frames or `HOLD_BYTES` bytes
   wait, with a frame of `HOLD_SIZE` bytes or more, with the first frame after a pause (that
   frame goes at once, and holding stops), by `close`, and at the latest `HOLD_TICK` seconds
-  later (the I/O loop writes it if the publisher has stopped): the same bytes in the same
-  order. A bounded queue holds no more than its size, so holding drops nothing.
+  later (the I/O loop writes it if the publisher has stopped), or by `OutgoingStream.flush`
+  (what another topic's next message must not overtake): the same bytes in the same order. A
+  bounded queue holds no more than its size, so holding drops nothing.
 
 What this module must not know: topics, message types, headers. It moves frames.
 """
@@ -283,6 +284,18 @@ class OutgoingStream:
         elif self._blocking and self._pending_bytes > HIGH_WATER and not self._io.in_loop_thread():
             while not self.closed and self._pending_bytes > HIGH_WATER:
                 self._drained.wait(1.0)
+
+    def flush(self) -> None:
+        """Write the frames held back now, as a pause in the flood would (see the contract):
+        they reach the socket before anything sent after this call, on any stream."""
+        lock = self._lock
+        lock.acquire()
+        try:
+            if self._holding and not self.closed:
+                self._last_ns = 0  # the next frame starts a run, as after a pause
+                self._release_locked(keep=False)
+        finally:
+            lock.release()
 
     @property
     def queued(self) -> int:

@@ -336,6 +336,12 @@ class Publication:
         assert self._handoff is not None
         self._handoff.give_way(release_gil=bool(self.local_links))
 
+    def flush(self) -> None:
+        """Write the frames a flood holds back (`rosx.node.outgoing`) now, so that nothing
+        published after this call, on this topic or another, reaches a subscriber before them."""
+        for link in self.links:
+            link.stream.flush()
+
     def connection_count(self) -> int:
         """Subscribers currently connected (in this process or not)."""
         return len(self.links) + len(self.local_links)

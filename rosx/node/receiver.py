@@ -37,12 +37,19 @@ The contract:
   the next message's publisher writes to without the GIL (it is handled at once). While a
   publisher of this process publishes a burst (`eager`), the thread sleeps on the pipe at once.
 * Every thread that runs callbacks asks for a short time slice (`rosx.node.slices`).
+* A drain (`rosx.node.subscription.Drain`) counts what has reached this host as what the
+  streams have counted plus what their sockets hold, which misses a read that has taken bytes
+  and not yet counted them. With `Receiver.exact` the threads wait for data with the bytes left
+  in the socket, and mark the stream (``in_hand``) from before each read until its frames are
+  counted, for the drain to wait out: a system call more for each read, for topics whose
+  order against other topics matters (an action's feedback against its result).
 """
 
 from __future__ import annotations
 
 import contextlib
 import os
+import select
 import socket
 import threading
 from collections import deque
@@ -134,6 +141,9 @@ class Receiver:
         self.dropped = 0
         #: The callbacks whose locator `_locator` found last, and that locator.
         self._located: tuple[tuple[Entry, ...] | None, Locator | None] = (None, None)
+        #: Whether drains are exact (see the module's contract): read by each thread before
+        #: each read.
+        self.exact = False
 
     # -- callbacks (any thread) --------------------------------------------------------------
 
@@ -386,7 +396,9 @@ class Receiver:
                 frames = ()  # handed over: a large frame's buffer may serve the next read
                 entries = self.entries
                 locate = self._locator(entries)
-                if (
+                if self.exact:
+                    frames = self._read_counted(stream, locate)
+                elif (
                     locate is None
                     and len(entries) == 1
                     and not stream.buffered
@@ -455,6 +467,26 @@ class Receiver:
             self.handled += 1
         return ()
 
+    @staticmethod
+    def _read_counted(stream: IncomingStream, locate: Locator | None) -> Sequence[Received] | None:
+        """`IncomingStream.read` for exact drains (see the module's contract): wait until the
+        socket has data (or has ended) without taking it, then read and count it with the stream
+        marked as holding bytes it has not counted."""
+        sock = stream.sock
+        if sock is None or stream.closed:
+            return None
+        waiting = select.poll()
+        waiting.register(sock, select.POLLIN)
+        try:
+            waiting.poll()
+        except OSError:
+            return None
+        stream.in_hand = True
+        try:
+            return stream.read(locate)
+        finally:
+            stream.in_hand = False
+
     def _read_direct(
         self, stream: IncomingStream, entries: tuple[Entry, ...]
     ) -> Sequence[Received] | None:
@@ -493,8 +525,8 @@ class Receiver:
                 return (stream.whole_frame(size),)
             # `IncomingStream.whole_frame`, `_run` and the decoder (`message_decoder`), inlined.
             frame = bytes(view[4:size])
-            stream.bytes_received += size
             stream.frames_received += 1
+            stream.bytes_received += size
             if stream.latching:
                 stream.latched = frame
             try:

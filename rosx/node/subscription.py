@@ -25,7 +25,9 @@ The contract (ROS wiki ROS/Slave_API ``publisherUpdate``, ROS/TCPROS):
 * Stopping without losing what has arrived (``rosbag record``): `Subscription.drain` notes what
   has reached this host so far (read, or still in each socket's buffer) and says when the
   callbacks have had it all; `Subscription.detach` then stops reading, and
-  `Subscription.caught_up` says when what was read has been handled.
+  `Subscription.caught_up` says when what was read has been handled. A read that has taken
+  bytes and not yet counted them escapes a drain unless `Subscription.make_drains_exact` was
+  asked (an action client's feedback, which its result must not overtake).
 """
 
 from __future__ import annotations
@@ -152,6 +154,9 @@ class Drain:
 
     def __init__(self, subscription: Subscription) -> None:
         self._subscription = subscription
+        # What a stream has counted, then what its socket holds: a read between the two takes
+        # bytes from the second that the first has not counted (`done` waits out such reads
+        # with exact drains, `Subscription.make_drains_exact`), never counts them twice.
         self._targets = [
             (stream, stream.bytes_received + _pending_bytes(stream.sock))
             for stream in list(subscription.streams.values())
@@ -159,9 +164,12 @@ class Drain:
 
     def done(self) -> bool:
         """Whether the callbacks have had everything that had arrived."""
-        return self._subscription.caught_up() and all(
-            stream.closed or stream.bytes_received >= target for stream, target in self._targets
-        )
+        # The streams first: a read counts its frames before its bytes, so `caught_up`, asked
+        # after, compares every frame of the bytes seen here (counts only grow meanwhile).
+        for stream, target in self._targets:
+            if not stream.closed and (stream.in_hand or stream.bytes_received < target):
+                return False
+        return self._subscription.caught_up()
 
 
 class Subscription:
@@ -266,6 +274,11 @@ class Subscription:
     def drain(self) -> Drain:
         """What has reached this host so far, to wait for (`Drain.done`)."""
         return Drain(self)
+
+    def make_drains_exact(self) -> None:
+        """Have `drain` count a read that has taken bytes from a socket and not counted them
+        yet, at a system call more for each read (see `rosx.node.receiver`'s contract)."""
+        self.receiver.exact = True
 
     def detach(self) -> None:
         """Stop reading every connection; what was read still reaches the callbacks."""

@@ -8,9 +8,11 @@ test says they are, however loaded the machine."""
 
 from __future__ import annotations
 
+import fcntl
 import socket
 import struct
 import sys
+import termios
 from collections.abc import Iterator
 
 import pytest
@@ -203,4 +205,33 @@ def test_a_full_socket_behind_held_frames_loses_nothing(
         stream.send(item)
     assert read_frames(peer, len(sent)) == sent
     wait_for(lambda: stream.queued == 0, what="the queue to empty")
+    stream.close()
+
+
+def test_flush_writes_what_is_held_at_once_and_holding_starts_afresh(
+    io: LoopThread,
+    pair: tuple[socket.socket, socket.socket],
+    clock: Clock,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """An action server flushes its feedback before it publishes the goal's result, which
+    travels on another stream: the held feedback must be in the socket by then."""
+    monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)  # only the flush writes them
+    mine, peer = pair
+    stream = stream_of(mine, io)
+    sent = [twist_frame(n) for n in range(30)]
+    for item in sent:
+        stream.send(item)
+    assert stream.queued == len(sent) - HOLD_RUN
+    stream.flush()
+    assert stream.queued == 0
+    waiting = fcntl.ioctl(peer.fileno(), termios.FIONREAD, b"\0\0\0\0")
+    assert int.from_bytes(waiting, "little") == sum(len(item) for item in sent)
+    assert read_frames(peer, len(sent)) == sent
+    # The next frames are a new run: the first HOLD_RUN of them go at once.
+    later = [twist_frame(n) for n in range(100, 100 + HOLD_RUN)]
+    for item in later:
+        stream.send(item)
+        assert stream.queued == 0
+    assert read_frames(peer, len(later)) == later
     stream.close()

@@ -1,0 +1,85 @@
+"""A drain made while a connection's thread holds bytes it has read and not yet counted
+(`Subscription.make_drains_exact`): it waits for them, where a plain drain misses them. An
+action client relies on it so that a result never overtakes the feedback sent before it.
+
+The test holds the thread at that very point: the connection's socket is wrapped so that its
+next read takes everything published, then waits for the test."""
+
+from __future__ import annotations
+
+import socket
+import threading
+from collections.abc import Callable
+from typing import Any
+
+import pytest
+
+from rosx.msg.codec.classes import get_message_class
+from rosx.node import Node, local, unixros
+from tests.support.procs import wait_for
+
+Twist = get_message_class("geometry_msgs/Twist")
+Vector3 = get_message_class("geometry_msgs/Vector3")
+
+
+@pytest.fixture(autouse=True, params=["UNIXROS", "TCPROS"])
+def transport(request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch) -> str:
+    monkeypatch.setattr(local, "ENABLED", False)
+    monkeypatch.setattr(unixros, "ENABLED", request.param == "UNIXROS")
+    return str(request.param)
+
+
+class HeldRead:
+    """A socket whose next ``recv_into`` waits for ``published``, reads, then waits for ``go``
+    before it returns: the reading thread then has bytes that no count has yet."""
+
+    def __init__(self, real: socket.socket) -> None:
+        self.real = real
+        self.published = threading.Event()
+        self.taken = threading.Event()
+        self.go = threading.Event()
+
+    def recv_into(self, *args: Any) -> int:
+        if self.taken.is_set():
+            return self.real.recv_into(*args)
+        self.published.wait(30)
+        size = self.real.recv_into(*args)
+        self.taken.set()
+        self.go.wait(30)
+        return size
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self.real, name)
+
+
+def test_an_exact_drain_waits_for_the_bytes_a_read_holds(
+    make_node: Callable[..., Node],
+) -> None:
+    a, b = make_node("exact_pub"), make_node("exact_sub")
+    got: list[float] = []
+    sub = b.subscribe("/exact", Twist, lambda m: got.append(m.linear.x), queue_size=None)
+    sub.make_drains_exact()
+    pub = a.advertise("/exact", Twist, queue_size=None)
+    wait_for(lambda: pub.get_num_connections() > 0 and sub.get_num_connections() > 0)
+    pub.publish(Twist(linear=Vector3(x=-1.0)))
+    wait_for(lambda: got == [-1.0], what="the first message")  # the thread waits for data
+    stream: Any = next(iter(sub.subscription.streams.values()))
+    real = stream.sock
+    held = HeldRead(real)
+    stream.sock = held
+    try:
+        for number in range(5):
+            pub.publish(Twist(linear=Vector3(x=float(number))))
+        wait_for(lambda: pub.delivered_to() == {"/exact_sub"}, what="the messages sent")
+        held.published.set()
+        assert held.taken.wait(30), "the thread did not read"
+        drain = sub.drain()  # every byte is out of the socket, none counted
+        assert not drain.done()
+        assert got == [-1.0]
+        held.go.set()
+        wait_for(drain.done, what="the drain")
+        assert got == [-1.0, 0.0, 1.0, 2.0, 3.0, 4.0]
+    finally:
+        held.go.set()
+        held.published.set()
+        stream.sock = real
