@@ -12,9 +12,10 @@ Two things differ from ROS 1's rospy actionlib, where its users met races:
 - the goal's machine is tracked, and ``before_send`` sees its handle, before the goal is
   published, so no status, feedback or result of the goal can come first and be missed;
 - feedback is never overtaken by its result: a result is acted on once the feedback that had
-  reached this host when it arrived has been handed to the callbacks (the topics travel on
-  different connections and threads); nor does it come before the goal is seen active: the
-  feedback's own status moves a goal still waiting for acknowledgement.
+  reached this host when it arrived, including what a connection's thread was reading then
+  (`make_drains_exact`), has been handed to the callbacks (the topics travel on different
+  connections and threads); nor does it come before the goal is seen active: the feedback's
+  own status moves a goal still waiting for acknowledgement.
 """
 
 from __future__ import annotations
@@ -422,6 +423,8 @@ class ActionClient:
             callback=self._feedback_cb,
             queue_size=self.sub_queue_size,
         )
+        if self.feedback_sub.impl is not None:  # a result waits for the feedback before it
+            self.feedback_sub.impl.make_drains_exact()
 
     def stop(self) -> None:
         """Close the action's topics."""

@@ -14,7 +14,10 @@ client of the node as a script's code is. Its policy is none: the user's goal ca
 - a goal leaves the status list ``status_list_timeout`` seconds (5 by default, parameter
   ``<ns>/status_list_timeout``) after it ended.
 
-Everything happens under ``lock`` (a reentrant lock the goal handles share).
+Everything happens under ``lock`` (a reentrant lock the goal handles share). Feedback that a
+quick series of messages has held back (`rosx.node.outgoing`) is written out before a result is
+published, so that no result leaves before the feedback sent ahead of it (rosx's client then
+hands that feedback over first: `rosx.actionlib.action_client`).
 """
 
 from __future__ import annotations
@@ -174,6 +177,9 @@ class ActionServer:
             message.status = status
             message.result = result
             if not lifecycle.is_shutdown() and self.result_pub is not None:
+                feedback = None if self.feedback_pub is None else self.feedback_pub.impl
+                if feedback is not None:
+                    feedback.flush()  # the goal's last feedback goes before its result
                 self.result_pub.publish(message)
             self.publish_status()
 
