@@ -24,6 +24,7 @@ import pytest
 from rosx.actionlib import SimpleActionClient, SimpleActionServer
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node, local, outgoing
+from tests.support.frames import FloodClock
 from tests.support.procs import wait_for
 
 Action = get_message_class("actionlib/TestAction")
@@ -40,22 +41,11 @@ pytestmark = pytest.mark.skipif(
 )
 
 
-class Clock:
-    """Each reading a microsecond after the last: every series of messages is a flood."""
-
-    def __init__(self) -> None:
-        self.now = 10**12
-
-    def __call__(self) -> int:
-        self.now += 1_000
-        return self.now
-
-
 def test_the_feedback_held_in_a_flood_leaves_before_the_result(
     rospy: ModuleType, make_node: Callable[..., Node], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.setattr(local, "ENABLED", False)  # the watcher reads a socket
-    monkeypatch.setattr(outgoing, "_clock", Clock())
+    monkeypatch.setattr(outgoing, "_clock", FloodClock())
     monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)  # the loop does not write what is held
 
     def execute(goal: Any) -> None:

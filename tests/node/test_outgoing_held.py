@@ -20,26 +20,13 @@ import pytest
 from rosx.node import outgoing, unixros
 from rosx.node.outgoing import HOLD_RUN, OutgoingStream
 from rosx.transport.loop_thread import LoopThread
+from tests.support.frames import FloodClock as Clock
 from tests.support.frames import read_frames
 from tests.support.procs import wait_for
 
 pytestmark = pytest.mark.skipif(
     not sys.platform.startswith("linux"), reason="a Unix socket's unread bytes: Linux only"
 )
-
-
-class Clock:
-    """The stream's clock: each reading is a microsecond after the last, unless moved."""
-
-    def __init__(self) -> None:
-        self.now = 10**12
-
-    def __call__(self) -> int:
-        self.now += 1_000
-        return self.now
-
-    def pause(self, seconds: float) -> None:
-        self.now += int(seconds * 1e9)
 
 
 @pytest.fixture
@@ -72,6 +59,14 @@ def stream_of(mine: socket.socket, io: LoopThread, queue_size: int | None = 0) -
 def twist_frame(number: int, size: int = 48) -> bytes:
     """A small frame (a Twist's size) naming ``number``."""
     return struct.pack("<II", size, number) + bytes(size - 4)
+
+
+def send_flood(stream: OutgoingStream, count: int) -> list[bytes]:
+    """Send ``count`` small frames (numbered from 0) as a flood; returns them."""
+    sent = [twist_frame(n) for n in range(count)]
+    for item in sent:
+        stream.send(item)
+    return sent
 
 
 def test_a_flood_to_a_peer_behind_is_held_then_arrives_whole_and_in_order(
@@ -119,9 +114,7 @@ def test_a_frame_after_a_pause_goes_at_once_with_what_was_held(
     monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)  # only the pause writes them
     mine, peer = pair
     stream = stream_of(mine, io)
-    sent = [twist_frame(n) for n in range(30)]
-    for item in sent:
-        stream.send(item)
+    sent = send_flood(stream, 30)
     assert stream.queued
     clock.pause(0.001)
     sent.append(twist_frame(30))
@@ -219,9 +212,7 @@ def test_flush_writes_what_is_held_at_once_and_holding_starts_afresh(
     monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)  # only the flush writes them
     mine, peer = pair
     stream = stream_of(mine, io)
-    sent = [twist_frame(n) for n in range(30)]
-    for item in sent:
-        stream.send(item)
+    sent = send_flood(stream, 30)
     assert stream.queued == len(sent) - HOLD_RUN
     stream.flush()
     assert stream.queued == 0

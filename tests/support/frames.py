@@ -1,4 +1,5 @@
-"""TCPROS frames read back from a socket, for tests of what a stream sends."""
+"""TCPROS frames read back from a socket, for tests of what a stream sends, and a clock for the
+stream that makes a series of frames a flood however loaded the machine."""
 
 from __future__ import annotations
 
@@ -21,3 +22,18 @@ def read_frames(peer: socket.socket, count: int) -> list[bytes]:
             data += chunk
     assert not data
     return frames
+
+
+class FloodClock:
+    """A stream's clock (`rosx.node.outgoing._clock`, ns): each reading a microsecond after the
+    last, so every series of frames is a flood, unless the test pauses it."""
+
+    def __init__(self) -> None:
+        self.now = 10**12
+
+    def __call__(self) -> int:
+        self.now += 1_000
+        return self.now
+
+    def pause(self, seconds: float) -> None:
+        self.now += int(seconds * 1e9)
