@@ -521,7 +521,13 @@ class Receiver:
                 return None
             if not (4 <= size < whole and unpack(scratch)[0] == size - 4):
                 return stream.read_on(sock, size)
-            if queue or self.entries is not entries or self._stopped or not lock.acquire(False):
+            if (
+                queue
+                or self.entries is not entries
+                or self._stopped
+                or self.exact  # asked meanwhile: the reads after this one are counted
+                or not lock.acquire(False)
+            ):
                 return (stream.whole_frame(size),)
             # `IncomingStream.whole_frame`, `_run` and the decoder (`message_decoder`), inlined.
             frame = bytes(view[4:size])

@@ -277,7 +277,8 @@ class Subscription:
 
     def make_drains_exact(self) -> None:
         """Have `drain` count a read that has taken bytes from a socket and not counted them
-        yet, at a system call more for each read (see `rosx.node.receiver`'s contract)."""
+        yet, at a system call more for each read (see `rosx.node.receiver`'s contract); a
+        connection already being read is, from its next message on."""
         self.receiver.exact = True
 
     def detach(self) -> None:
