@@ -24,8 +24,9 @@ The contract (ROS wiki ROS/Slave_API ``publisherUpdate``, ROS/TCPROS):
   header says about their type.
 * Stopping without losing what has arrived (``rosbag record``): `Subscription.drain` notes what
   has reached this host so far (read, or still in each socket's buffer) and says when the
-  callbacks have had it all; `Subscription.detach` then stops reading, and
-  `Subscription.caught_up` says when what was read has been handled. A read that has taken
+  callbacks have had it all; `Subscription.detach` then stops reading, and once
+  `Subscription.detach_finished` says the connections have ended, `Subscription.caught_up`
+  says when what was read has been handled. A read that has taken
   bytes and not yet counted them escapes a drain unless `Subscription.make_drains_exact` was
   asked (an action client's feedback, which its result must not overtake).
 """
@@ -208,6 +209,8 @@ class Subscription:
         #: Streams of publishers no longer listed, read until they end (see the contract),
         #: and the timer that closes each one at the latest.
         self._retired: dict[IncomingStream, asyncio.TimerHandle] = {}
+        #: The connections `detach` stopped.
+        self._detached: list[IncomingStream | local.LocalLink] = []
         self.receiver = Receiver(
             io,
             workers,
@@ -283,11 +286,22 @@ class Subscription:
 
     def detach(self) -> None:
         """Stop reading every connection; what was read still reaches the callbacks."""
-        for stream in list(self.streams.values()):
+        streams = list(self.streams.values())
+        # Those connected: one still connecting has read nothing, and may never end.
+        self._detached = [stream for stream in streams if stream.connected]
+        for stream in streams:
             if isinstance(stream, local.LocalLink):
                 self.io.call_soon(stream.close)  # what it delivered is queued already
             else:
                 self.receiver.detach(stream)
+
+    def detach_finished(self) -> bool:
+        """Whether every connection `detach` stopped has ended: its thread has counted all it
+        read (a read in progress when it was stopped included), for `caught_up` to compare."""
+        return all(
+            stream.closed if isinstance(stream, local.LocalLink) else stream.receiver is None
+            for stream in self._detached  # a stream's thread lets go of it last of all
+        )
 
     def caught_up(self) -> bool:
         """Whether the callbacks have run for every message read so far (or a bounded queue

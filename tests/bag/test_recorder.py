@@ -16,7 +16,8 @@ from rosx.bag.reader import BagReader
 from rosx.bag.recorder import Recorder, RecordOptions
 from rosx.msg.codec.classes import get_message_class
 from rosx.msg.codec.rostime import Time
-from rosx.node import Node
+from rosx.node import Node, local
+from tests.support.frames import HeldRead
 from tests.support.procs import wait_for
 
 String = get_message_class("std_msgs/String")
@@ -192,3 +193,51 @@ def test_under_sim_time_messages_carry_the_clocks_time(
     with BagReader(tmp_path / "sim.bag") as bag:
         seen = [(String().deserialize(d).data, t) for _, t, d in bag.messages()]
     assert seen == [("at 1000", 1000 * 10**9), ("at 1001", 1001 * 10**9)]
+
+
+def test_a_stop_keeps_what_a_connection_was_reading_when_it_came(
+    make_node: Callable[..., Node], tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Messages a connection's thread has just read when the recording stops are counted only
+    when that read returns: the stop waits for the connection to end before it looks."""
+    monkeypatch.setattr(local, "ENABLED", False)  # the recorder reads a socket
+    pub = make_node("held_talker").advertise("/held", String, queue_size=None)
+    recorder = _record(make_node("record"), tmp_path / "held", topics=["/held"])
+    wait_for(lambda: pub.get_num_connections() == 1, what="the recorder on /held")
+    stream: Any = next(iter(recorder._subscribers["/held"].subscription.streams.values()))
+    held = HeldRead(stream.sock, armed=False)
+    stream.sock = held
+    sent: list[str] = []
+
+    def publish(text: str) -> None:
+        sent.append(text)
+        pub.publish(String(data=text))
+
+    def queued() -> int:
+        return recorder.written + len(recorder._queue)
+
+    try:
+        # The thread may be waiting in a read that began before the swap: a first message
+        # ends it, a second one the read after it, which began unarmed too (or armed: then
+        # the second message is held with the rest).
+        publish("m0")
+        wait_for(lambda: queued() == 1, what="m0 queued")
+        held.armed.set()
+        publish("m1")
+        wait_for(held.entered.is_set, what="a read begun armed")
+        for i in range(2, 7):
+            publish(f"m{i}")
+        wait_for(lambda: pub.delivered_to() == {"/record"}, what="the messages sent")
+        held.published.set()
+        assert held.taken.wait(10), "the thread did not read through the wrapped socket"
+        stopping = threading.Thread(target=recorder.stop)
+        stopping.start()
+        assert held.shut.wait(10), "the recorder did not stop reading"
+        held.go.set()  # the read returns: its messages are counted now
+        stopping.join(60)
+        assert not stopping.is_alive()
+    finally:
+        held.release()
+    with BagReader(tmp_path / "held.bag") as bag:
+        recorded = [String().deserialize(data).data for _, _, data in bag.messages()]
+    assert recorded == sent

@@ -7,8 +7,6 @@ next read takes everything published, then waits for the test."""
 
 from __future__ import annotations
 
-import socket
-import threading
 from collections.abc import Callable
 from typing import Any
 
@@ -16,6 +14,7 @@ import pytest
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node, local, unixros
+from tests.support.frames import HeldRead
 from tests.support.procs import wait_for
 
 Twist = get_message_class("geometry_msgs/Twist")
@@ -27,29 +26,6 @@ def transport(request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch) -
     monkeypatch.setattr(local, "ENABLED", False)
     monkeypatch.setattr(unixros, "ENABLED", request.param == "UNIXROS")
     return str(request.param)
-
-
-class HeldRead:
-    """A socket whose next ``recv_into`` waits for ``published``, reads, then waits for ``go``
-    before it returns: the reading thread then has bytes that no count has yet."""
-
-    def __init__(self, real: socket.socket) -> None:
-        self.real = real
-        self.published = threading.Event()
-        self.taken = threading.Event()
-        self.go = threading.Event()
-
-    def recv_into(self, *args: Any) -> int:
-        if self.taken.is_set():
-            return self.real.recv_into(*args)
-        self.published.wait(30)
-        size = self.real.recv_into(*args)
-        self.taken.set()
-        self.go.wait(30)
-        return size
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self.real, name)
 
 
 def _check_held_read(pub: Any, sub: Any, got: list[float], before: list[float]) -> None:
@@ -72,8 +48,7 @@ def _check_held_read(pub: Any, sub: Any, got: list[float], before: list[float]) 
         wait_for(drain.done, what="the drain")
         assert got == [*before, 0.0, 1.0, 2.0, 3.0, 4.0]
     finally:
-        held.go.set()
-        held.published.set()
+        held.release()
         stream.sock = real
 
 

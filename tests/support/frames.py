@@ -1,9 +1,12 @@
-"""TCPROS frames read back from a socket, for tests of what a stream sends, and a clock for the
-stream that makes a series of frames a flood however loaded the machine."""
+"""TCPROS frames read back from a socket, for tests of what a stream sends; a clock for the
+stream that makes a series of frames a flood however loaded the machine; a socket that holds a
+subscriber's read at the moment it has taken bytes and counted none."""
 
 from __future__ import annotations
 
 import socket
+import threading
+from typing import Any
 
 
 def read_frames(peer: socket.socket, count: int) -> list[bytes]:
@@ -37,3 +40,44 @@ class FloodClock:
 
     def pause(self, seconds: float) -> None:
         self.now += int(seconds * 1e9)
+
+
+class HeldRead:
+    """A connection's socket (put in place of ``stream.sock``) that holds one read: the first
+    ``recv_into`` that starts once ``armed`` is set (at once, unless made unarmed) sets
+    ``entered``, waits for ``published``, reads, sets ``taken`` and waits for ``go`` before it
+    returns; the reading thread then holds bytes that no count has yet. Reads that started
+    before pass through. ``shut`` is set when it is shut down (the subscription detached)."""
+
+    def __init__(self, real: socket.socket, *, armed: bool = True) -> None:
+        self.real = real
+        self.armed = threading.Event()
+        if armed:
+            self.armed.set()
+        self.entered = threading.Event()
+        self.published = threading.Event()
+        self.taken = threading.Event()
+        self.go = threading.Event()
+        self.shut = threading.Event()
+
+    def recv_into(self, *args: Any) -> int:
+        if not self.armed.is_set() or self.entered.is_set():
+            return self.real.recv_into(*args)
+        self.entered.set()
+        self.published.wait(30)
+        size = self.real.recv_into(*args)
+        self.taken.set()
+        self.go.wait(30)
+        return size
+
+    def shutdown(self, how: int) -> None:
+        self.shut.set()
+        self.real.shutdown(how)
+
+    def release(self) -> None:
+        """Let a held read go (at the end of a test, whatever happened)."""
+        self.published.set()
+        self.go.set()
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self.real, name)
