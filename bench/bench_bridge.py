@@ -68,8 +68,9 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from bench import interpreter  # noqa: E402 -- after the path is set
-from bench.bench_pubsub import free_port, start_master  # noqa: E402
+from bench.bench_pubsub import start_master  # noqa: E402
 from bench.interpreter import ROS1_PYTHON  # noqa: E402
+from tests.support.procs import free_port  # noqa: E402
 
 CASES = ("twist", "latency", "image", "clients", "topics")
 RAW_TYPES = "/rosapi/topics_and_raw_types"

@@ -37,6 +37,7 @@ sys.path.insert(0, str(ROOT))
 from rosx.transport.client import XmlRpcClient  # noqa: E402 -- after the path is set
 from rosx.wire.xmlrpc import encode_call  # noqa: E402
 from rosx.wire.xmlrpc_http import build_request  # noqa: E402
+from tests.support.procs import free_port  # noqa: E402
 
 ROS1_PYTHON = os.environ.get("ROS1_PYTHON", "/usr/bin/python3")
 ROSMASTER = "/usr/bin/rosmaster"
@@ -50,12 +51,6 @@ with Core(int(sys.argv[1]), {}) as core:
     except KeyboardInterrupt:
         pass
 """
-
-
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
 
 
 def wait_ready(uri: str) -> None:

@@ -46,6 +46,7 @@ sys.path.insert(0, str(ROOT))
 
 from bench import interpreter, roscpp_program  # noqa: E402 -- after the path is set
 from bench.interpreter import ROS1_PYTHON  # noqa: E402
+from tests.support.procs import free_port  # noqa: E402
 
 # The worker scripts are the same for both libraries: `api` makes a node, a publisher, a
 # subscriber and the message classes, with rospy or with rosx.node.
@@ -389,12 +390,6 @@ span = time.perf_counter() - first
 os.wait()
 print(json.dumps({'bytes_rate': size * (count - 1) / span}))
 """
-
-
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
 
 
 def start_master() -> tuple[subprocess.Popen[bytes], str]:

@@ -34,14 +34,10 @@ from typing import Any
 ROOT = Path(__file__).resolve().parent.parent
 sys.path[:0] = [str(ROOT), str(ROOT / "commands"), str(ROOT / "turtle")]
 
+from tests.support.procs import free_port  # noqa: E402 -- after the path is set
+
 TOPICS = ("/bench_a", "/bench_b", "/bench_c")
 RATE = 1000.0
-
-
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
 
 
 def cpu_seconds(pid: int) -> float:

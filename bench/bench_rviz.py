@@ -26,7 +26,6 @@ import argparse
 import asyncio
 import math
 import os
-import socket
 import subprocess
 import sys
 import time
@@ -38,6 +37,7 @@ sys.path[:0] = [str(ROOT), str(ROOT / "turtle"), str(ROOT / "commands")]
 os.environ.setdefault("TEXTUAL_FPS", "1000")  # textual's own cap on repaints, lifted
 
 from bench import interpreter  # noqa: E402 - after the path is set
+from tests.support.procs import free_port  # noqa: E402
 
 MAP_SIDE = 4000
 BEAMS = 1081
@@ -168,13 +168,6 @@ def publish(master: str, mode: str) -> None:
 
 
 # -- measuring ---------------------------------------------------------------------------------
-
-
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        port: int = sock.getsockname()[1]
-        return port
 
 
 def spawn(argv: list[str], env: dict[str, str]) -> subprocess.Popen[bytes]:

@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import argparse
 import os
-import socket
 import statistics
 import subprocess
 import sys
@@ -34,6 +33,7 @@ from rosx.msg.codec.classes import get_message_class  # noqa: E402 -- after the 
 from rosx.node import Node  # noqa: E402
 from rosx.transport.client import XmlRpcClient  # noqa: E402
 from rosx.transport.errors import ConnectError  # noqa: E402
+from tests.support.procs import free_port  # noqa: E402
 
 TOPICS_PER_NODE = 10
 
@@ -68,12 +68,6 @@ try:
 except KeyboardInterrupt:
     node.shutdown("soak over")
 """
-
-
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
 
 
 def sample(pid: int) -> tuple[float, int, int]:

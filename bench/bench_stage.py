@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import argparse
 import os
-import socket
 import subprocess
 import sys
 import tempfile
@@ -36,6 +35,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path[:0] = [str(ROOT), str(ROOT / "turtle"), str(ROOT / "commands")]
 
 from bench import interpreter  # noqa: E402 - after the path is set
+from tests.support.procs import free_port  # noqa: E402
 
 ROBOT = """\
 define lms ranger ( sensor ( range [ 0.0 30.0 ] fov 270.25 samples 1081 ) update_interval 100 )
@@ -60,13 +60,6 @@ def world_text(robots: int, interval_ms: int) -> str:
     for k in range(robots):
         lines.append(f'bot ( pose [ {-8 + 1.6 * k:.2f} -8 0 90 ] name "r{k}" )\n')
     return "".join(lines)
-
-
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        port: int = sock.getsockname()[1]
-        return port
 
 
 def cpu_seconds(pid: int) -> float:

@@ -32,18 +32,16 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import shutil
-import socket
 import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from bench import interpreter  # noqa: E402 -- after the path is set
+from bench.bench_pubsub import start_master  # noqa: E402
 from bench.interpreter import ROS1_PYTHON  # noqa: E402
 
 # Two arms on a mobile base: (child, parent, Hz), in the order they are sent.
@@ -225,31 +223,6 @@ delays = sorted(delays[10:])
 p50, p99 = delays[len(delays) // 2], delays[len(delays) * 99 // 100]
 print(json.dumps({"p50": p50 * 1e6, "p99": p99 * 1e6}))
 """
-
-
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
-
-def start_master() -> tuple[subprocess.Popen[bytes], str]:
-    port = free_port()
-    uri = f"http://127.0.0.1:{port}/"
-    if shutil.which("rosmaster", path="/usr/bin"):
-        cmd = ["/usr/bin/rosmaster", "--core", "-p", str(port)]
-    else:
-        cmd = [sys.executable, "-m", "rosx_commands.main", "roscore", "-p", str(port)]
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    deadline = time.monotonic() + 15
-    while time.monotonic() < deadline:
-        try:
-            with socket.create_connection(("127.0.0.1", port), timeout=0.2):
-                return proc, uri
-        except OSError:
-            time.sleep(0.1)
-    proc.kill()
-    raise SystemExit("the master did not start")
 
 
 def command(lib: str, script: Path, *argv: object) -> tuple[list[str], dict[str, str]]:
