@@ -15,16 +15,21 @@ under this Python with rosx's (``rosx run-script``, whose ``tf2_ros`` is `rosx.t
   of 50 transforms a hundred times a second, from a rospy publisher in both cases): the CPU
   it uses, in % of one core, over ``--seconds``.
 * ``latency``: a ``TransformBroadcaster`` in one process, a ``Buffer`` and listener in
-  another: from ``sendTransform`` to the transform being found by ``lookup_transform``, p50
-  and p99 over ``--messages`` transforms at 50 Hz, in each of ``--rounds``. The waiting
-  process asks every ``--poll`` µs (20), with a timer slack of 1 ns: what it measures is the
-  libraries' path, not its own sleep (Linux stretches each sleep by the thread's timer slack,
-  50 µs by default, so a 0.1 ms poll found a stored transform about 86 µs late, more than
-  half of rosx's whole figure).
+  another: from the stamp ``sendTransform`` sends to the transform being there for a lookup,
+  p50 and p99 over ``--messages`` transforms at 50 Hz, in each of ``--rounds``, three ways
+  (``--way``; each round the libraries take turns, the other first every other round):
+  ``wait``, as the tutorials wait, a ``lookup_transform`` with a timeout (1 s) for the
+  transform at a time not sent yet (1 ms after the last one's stamp), the time taken when it
+  returns; ``stored``, the moment the listener's callback has stored it (its
+  ``TransformListener.callback`` wrapped the same way in both libraries), when any lookup
+  would find it; ``polled``, lookups at the latest time every ``--poll`` µs (20, with a timer
+  slack of 1 ns) until one finds it, which adds the poll's own delay to both (a 20 µs sleep
+  takes about 42 µs on this machine).
 
 Targets (DESIGN.md): lookup p50 ≤ 1 x Debian's; listener ≤ 10 % of one core; latency p50 ≤
 0.5 x ROS 1's. Run: ``python bench/bench_tf.py [--only lookup|listener|latency]
-[--tree arms|robot] [--seconds N] [--messages N] [--rounds N] [--poll µs]``.
+[--tree arms|robot] [--seconds N] [--messages N] [--rounds N] [--way wait|stored|polled]
+[--poll µs]``.
 """
 
 from __future__ import annotations
@@ -193,32 +198,56 @@ for k in range(count + 20):
 """
 
 WAITER = r"""
-import ctypes, json, sys, time, rospy, tf2_ros
-count = int(sys.argv[1])
-poll = float(sys.argv[2])
+import ctypes, json, sys, threading, time, rospy, tf2_ros
+count, way, poll = int(sys.argv[1]), sys.argv[2], float(sys.argv[3])
 try:  # sleep as asked: Linux's default 50 µs timer slack would stretch each poll
     ctypes.CDLL(None).prctl(29, 1, 0, 0, 0)  # PR_SET_TIMERSLACK, 1 ns
 except (OSError, AttributeError):
     pass
 rospy.init_node("bench_tf_waiter", disable_signals=True)
+delays = []
+if way == "stored":  # the moment the listener's callback has stored it
+    done = threading.Event()
+    plain = tf2_ros.TransformListener.callback
+    def callback(self, data):
+        plain(self, data)
+        now = time.time()
+        delays.append(now - data.transforms[0].header.stamp.to_sec())
+        if len(delays) >= count + 10:
+            done.set()
+    tf2_ros.TransformListener.callback = callback
 buffer = tf2_ros.Buffer()
 listener = tf2_ros.TransformListener(buffer)
 print("ready", flush=True)
-seen = -1
-delays = []
 zero = rospy.Time()
 deadline = time.time() + 60
-while len(delays) < count + 10 and time.time() < deadline:
-    try:
-        t = buffer.lookup_transform("world", "mover", zero)
-    except tf2_ros.TransformException:
+if way == "stored":
+    done.wait(60)
+elif way == "wait":  # as the tutorials wait: for the transform at a time not yet sent
+    # 1 ms after the last stamp (tf2_py takes times as doubles, 0.2 µs apart at today's
+    # stamps), which only the next transform, 20 ms later, answers
+    step = rospy.Duration(0, 1000000)
+    seen = buffer.lookup_transform("world", "mover", zero, rospy.Duration(30)).header.stamp
+    while len(delays) < count + 10 and time.time() < deadline:
+        buffer.lookup_transform("world", "mover", seen + step, rospy.Duration(1))
+        now = time.time()
+        stamp = buffer.lookup_transform("world", "mover", zero).header.stamp
+        if stamp != seen:
+            delays.append(now - stamp.to_sec())
+            seen = stamp
+else:  # polled: lookups every `poll` seconds until a new one is found
+    seen = -1
+    while len(delays) < count + 10 and time.time() < deadline:
+        try:
+            t = buffer.lookup_transform("world", "mover", zero)
+        except tf2_ros.TransformException:
+            time.sleep(poll)
+            continue
+        k = int(t.transform.translation.x)
+        if k != seen:
+            delays.append(time.time() - t.header.stamp.to_sec())
+            seen = k
         time.sleep(poll)
-        continue
-    k = int(t.transform.translation.x)
-    if k != seen:
-        delays.append(time.time() - t.header.stamp.to_sec())
-        seen = k
-    time.sleep(poll)
 delays = sorted(delays[10:])
 p50, p99 = delays[len(delays) // 2], delays[len(delays) * 99 // 100]
 print(json.dumps({"p50": p50 * 1e6, "p99": p99 * 1e6}))
@@ -311,37 +340,53 @@ def bench_listener(folder: Path, seconds: float, master: str) -> None:
     print(f"  (each frame's rate in the buffer: ROS 1 {rates[0]:.1f} Hz, rosx {rates[1]:.1f} Hz)")
 
 
-def bench_latency(folder: Path, messages: int, master: str, rounds: int, poll: float) -> None:
+#: How the latency's waiting process learns of each transform (`WAITER`), and what each
+#: figure is called.
+WAYS = {
+    "wait": "a lookup waiting for the next transform (the tutorials' timeout)",
+    "stored": "stored by the listener (its callback returned)",
+    "polled": "lookups polled every {poll:g} µs at the latest time",
+}
+
+
+def bench_latency(
+    folder: Path, messages: int, master: str, rounds: int, poll: float, ways: list[str]
+) -> None:
     broadcaster = folder / "broadcaster.py"
     broadcaster.write_text(BROADCASTER)
     waiter = folder / "waiter.py"
     waiter.write_text(WAITER)
-    runs: dict[str, list[dict[str, float]]] = {"ros1": [], "rosx": []}
-    for _ in range(rounds):
-        for lib in ("ros1", "rosx"):
-            listening = spawn(lib, waiter, master, messages, poll / 1e6)
-            assert listening.stdout is not None
-            listening.stdout.readline()  # ready
-            sending = spawn(lib, broadcaster, master, messages)
-            try:
-                out, _ = listening.communicate(timeout=120)
-            finally:
-                stop(sending)
-                stop(listening)
-            runs[lib].append(json.loads(out.strip().splitlines()[-1]))
+    runs: dict[str, dict[str, list[dict[str, float]]]] = {
+        way: {"ros1": [], "rosx": []} for way in ways
+    }
+    for round_ in range(rounds):
+        for way in ways:
+            for lib in ("ros1", "rosx") if round_ % 2 == 0 else ("rosx", "ros1"):
+                listening = spawn(lib, waiter, master, messages, way, poll / 1e6)
+                assert listening.stdout is not None
+                listening.stdout.readline()  # ready
+                sending = spawn(lib, broadcaster, master, messages)
+                try:
+                    out, _ = listening.communicate(timeout=120)
+                finally:
+                    stop(sending)
+                    stop(listening)
+                runs[way][lib].append(json.loads(out.strip().splitlines()[-1]))
     print(
-        f"\nsendTransform -> lookup_transform finds it, {messages} transforms at 50 Hz,"
-        f" polled every {poll:g} µs (µs, median of rounds)"
+        f"\nsendTransform -> the transform found, {messages} transforms at 50 Hz"
+        " (µs, median of rounds)"
     )
-    for name in ("p50", "p99"):
-        theirs = sorted(r[name] for r in runs["ros1"])[rounds // 2]
-        mine = sorted(r[name] for r in runs["rosx"])[rounds // 2]
-        pairs = zip(runs["rosx"], runs["ros1"], strict=True)
-        each = sorted(r[name] / o[name] for r, o in pairs)
-        print(
-            f"  {name}: ROS 1 {theirs:.0f}   rosx {mine:.0f}   rosx/ROS 1 {ratio(mine, theirs)}"
-            f"   each round {each[0]:.2f}-{each[-1]:.2f} x"
-        )
+    for way in ways:
+        print(f"  {WAYS[way].format(poll=poll)}:")
+        for name in ("p50", "p99"):
+            theirs = sorted(r[name] for r in runs[way]["ros1"])[rounds // 2]
+            mine = sorted(r[name] for r in runs[way]["rosx"])[rounds // 2]
+            pairs = zip(runs[way]["rosx"], runs[way]["ros1"], strict=True)
+            each = sorted(r[name] / o[name] for r, o in pairs)
+            print(
+                f"    {name}: ROS 1 {theirs:.0f}   rosx {mine:.0f}"
+                f"   rosx/ROS 1 {ratio(mine, theirs)}   each round {each[0]:.2f}-{each[-1]:.2f} x"
+            )
 
 
 def main() -> None:
@@ -351,7 +396,10 @@ def main() -> None:
     parser.add_argument("--messages", type=int, default=500)
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument(
-        "--poll", type=float, default=20.0, help="µs the latency's waiter sleeps between lookups"
+        "--poll", type=float, default=20.0, help="µs the latency's polling waiter sleeps"
+    )
+    parser.add_argument(
+        "--way", choices=tuple(WAYS), action="append", help="one way of waiting (all by default)"
     )
     parser.add_argument("--lookups", type=int, default=20000)
     parser.add_argument("--tree", choices=tuple(TREES), help="one lookup tree (both by default)")
@@ -369,7 +417,14 @@ def main() -> None:
                 if args.only in (None, "listener"):
                     bench_listener(folder, args.seconds, master)
                 if args.only in (None, "latency"):
-                    bench_latency(folder, args.messages, master, args.rounds, args.poll)
+                    bench_latency(
+                        folder,
+                        args.messages,
+                        master,
+                        args.rounds,
+                        args.poll,
+                        args.way or list(WAYS),
+                    )
             finally:
                 master_process.terminate()
                 master_process.wait()
