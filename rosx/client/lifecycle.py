@@ -150,6 +150,7 @@ def _make_node(
         log_level=log_level,
         console=_console,
         private_params=dict(args.params),
+        warn_refusals=True,
     )
     # The rospy API logs through Python's ``rosout`` logger: its level is the node's.
     node.log_sink.levels = LoggerLevels(node.log_sink.levels)

@@ -96,6 +96,7 @@ class Node:
         console: Callable[[int, str], None] | None = None,
         io: LoopThread | None = None,
         private_params: Mapping[str, str] | None = None,
+        warn_refusals: bool = False,
     ) -> None:
         env = os.environ if environ is None else environ
         self.environ = env
@@ -133,6 +134,9 @@ class Node:
         self.shutdown_reason = ""
         #: ``_name:=value`` arguments (name without ``_`` → YAML text), set as ``~name`` on start.
         self.private_params = dict(private_params or {})
+        #: Whether a refused subscriber or service client is logged as a warning: rospy's nodes
+        #: warn (a subscriber of another type, say), roscpp's say nothing.
+        self.warn_refusals = warn_refusals
         #: The node's ROS time: the wall clock, or ``/clock`` (`rosx.node.simtime`).
         self.clock = Clock()
 
@@ -530,15 +534,21 @@ class Node:
             infos = {name: pub.info for name, pub in self.publications.items()}
             verdict = accept_subscriber(header, callerid=self.name, publications=infos)
             if isinstance(verdict, Refused):
-                return verdict.reason
+                return self._refused(verdict.reason, header)
             self.publications[verdict.publication.topic].accept(sock, verdict)
             return None
         services = {name: srv.info for name, srv in self.services.items()}
         answer = accept_client(header, callerid=self.name, services=services)
         if isinstance(answer, Refused):
-            return answer.reason
+            return self._refused(answer.reason, header)
         await self.services[answer.service.service].serve(sock, answer, header, reader)
         return None
+
+    def _refused(self, reason: str, header: dict[str, str]) -> str:
+        """``reason`` for the refused peer, said as rospy's warning says it (`warn_refusals`)."""
+        if self.warn_refusals:
+            self.log(rosout.WARN, f"Could not process inbound connection: {reason}{header}")
+        return reason
 
     # -- logging -----------------------------------------------------------------------------
 

@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+import contextlib
 import re
 import subprocess
+import sys
+import threading
 import xmlrpc.client
 from collections.abc import Iterator
 from typing import Any
@@ -205,11 +208,12 @@ def test_ros1_pub_once_reaches_rosx_echo(graph: str) -> None:
     assert "does not appear to be published yet" in ours.err or ours.err == ""
 
 
-def pub_once_to_rospy(graph: str, listener_script: str, *pub_args: str) -> tuple[Result, str]:
-    """Start a rospy listener, wait for its ``ready`` line, run ``rosx rostopic pub -1
-    PUB_ARGS…``; return that run and what the listener printed until it ended."""
+@contextlib.contextmanager
+def rospy_listener(graph: str, script: str) -> Iterator[subprocess.Popen[str]]:
+    """A rospy node running ``script`` on ``graph``, once it has printed ``ready``; stopped
+    after the block."""
     with subprocess.Popen(
-        [ROS1_PYTHON, "-c", listener_script],
+        [ROS1_PYTHON, "-c", script],
         env=ros1_environ(ROS_MASTER_URI=graph),
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
@@ -219,12 +223,17 @@ def pub_once_to_rospy(graph: str, listener_script: str, *pub_args: str) -> tuple
         try:
             assert listener.stdout is not None
             assert listener.stdout.readline() == "ready\n"
-            ours = rosx(
-                "rostopic", "pub", "-1", *pub_args, environ=clean_environ(ROS_MASTER_URI=graph)
-            )
-            out, _ = listener.communicate(timeout=20)
+            yield listener
         finally:
             stop(listener)
+
+
+def pub_once_to_rospy(graph: str, listener_script: str, *pub_args: str) -> tuple[Result, str]:
+    """Start a rospy listener, wait for its ``ready`` line, run ``rosx rostopic pub -1
+    PUB_ARGS…``; return that run and what the listener printed until it ended."""
+    with rospy_listener(graph, listener_script) as listener:
+        ours = rosx("rostopic", "pub", "-1", *pub_args, environ=clean_environ(ROS_MASTER_URI=graph))
+        out, _ = listener.communicate(timeout=20)
     return ours, out
 
 
@@ -365,3 +374,43 @@ def test_rosx_pub_once_reaches_the_rosout_node(graph: str) -> None:
         "",
     )
     assert out == "got to rosout\n"
+
+
+#: A rospy subscriber of Twists that says when it is subscribed.
+TWIST_LISTENER = """
+import rospy
+from geometry_msgs.msg import Twist
+rospy.init_node('twist_listener')
+rospy.Subscriber('/mismatch', Twist, lambda msg: None)
+print('ready', flush=True)
+rospy.spin()
+"""
+
+
+def refusal_warning(command: list[str], env: dict[str, str]) -> str:
+    """Run ``command`` (a ``rostopic pub`` of Poses on ``/mismatch``) until it prints a
+    warning on stderr; that warning without its time."""
+    lines: list[str] = []
+    with running(command, env, stderr=subprocess.PIPE, text=True) as pub:
+        stream: Any = pub.stderr  # lines of text (``text=True``)
+        reader = threading.Thread(target=lambda: lines.extend(stream), daemon=True)
+        reader.start()
+        wait_for(lambda: any("[WARN]" in line for line in lines), what=f"{command[0]}'s warning")
+    warning = next(line for line in lines if "[WARN]" in line)
+    return re.sub(r"^\[WARN\] \[[0-9.]+\]: ", "", warning.rstrip("\n"))
+
+
+def test_a_subscriber_of_another_type_is_refused_with_ros1s_warning(graph: str) -> None:
+    """rospy's publisher warns when it refuses a subscriber of another type (the rospy
+    listener's header follows, as a dict); a student publishing the wrong type sees why."""
+    with rospy_listener(graph, TWIST_LISTENER):
+        pub = ["rostopic", "pub", "-r", "2", "/mismatch", "geometry_msgs/Pose", "{}"]
+        theirs = refusal_warning(pub, ros1_environ(ROS_MASTER_URI=graph))
+        ours = refusal_warning(
+            [sys.executable, "-m", "rosx_commands", *pub], clean_environ(ROS_MASTER_URI=graph)
+        )
+    assert theirs.startswith(
+        "Could not process inbound connection: topic types do not match: "
+        "[geometry_msgs/Twist] vs. [geometry_msgs/Pose]{'callerid': '/twist_listener', "
+    )
+    assert ours == theirs

@@ -7,6 +7,7 @@ the Unix sockets rosx nodes of one machine use (``rosx.node.local.ENABLED`` off)
 
 from __future__ import annotations
 
+import ast
 import contextlib
 import os
 import re
@@ -721,3 +722,32 @@ def test_drain_then_detach_hands_over_all_that_arrived(make_node: Callable[..., 
     wait_for(sub.caught_up, what="the callbacks")
     assert got == [float(i) for i in range(50)]
     wait_for(lambda: sub.get_num_connections() == 0, what="the connection to end")
+
+
+def test_a_node_asked_to_warns_as_rospy_when_it_refuses_a_subscriber_of_another_type(
+    make_node: Callable[..., Node],
+) -> None:
+    """rospy's publishers warn of a subscriber refused, with its header (`rosx.client`'s and
+    `rostopic`'s nodes ask for it); roscpp's, and rosx's other nodes, say nothing."""
+    lines: list[tuple[int, str]] = []
+    publisher = make_node(
+        "/pose_talker", console=lambda level, line: lines.append((level, line)), warn_refusals=True
+    )
+    publisher.advertise("/mismatch", Vector3, queue_size=1)
+    make_node("/twist_listener").subscribe("/mismatch", Twist, lambda _msg: None)
+    wait_for(lambda: lines, what="the publisher's warning")
+    [(level, line)] = lines
+    assert level == 4  # WARN
+    match = re.fullmatch(
+        r"\[WARN\] \[\d+\.\d+\]: Could not process inbound connection: topic types do not "
+        r"match: \[geometry_msgs/Twist\] vs\. \[geometry_msgs/Vector3\](\{.*\})",
+        line,
+        flags=re.DOTALL,
+    )
+    assert match is not None, line
+    header = ast.literal_eval(match[1])
+    assert (header["callerid"], header["topic"], header["type"]) == (
+        "/twist_listener",
+        "/mismatch",
+        "geometry_msgs/Twist",
+    )

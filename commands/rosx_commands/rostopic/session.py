@@ -83,6 +83,8 @@ class Session:
             master_uri=self.master.uri,
             environ=self.env.environ,
             rosout_enabled=rosout,
+            console=self._console,
+            warn_refusals=True,
         )
         self.node = node
         # A master lost from here on raises MasterUnreachable, which the CLI reports.
@@ -92,6 +94,14 @@ class Session:
 
         follow_sim_time(node)
         return node
+
+    def _console(self, level: int, line: str) -> None:
+        """The node's warnings and errors on the tool's stderr, as rospy's console shows them
+        (a subscriber of another type refused, say)."""
+        from rosx.node.rosout import WARN, print_console  # noqa: PLC0415 - with the node runtime
+
+        if level >= WARN:
+            print_console(level, line, stderr=self.env.stderr)
 
     def is_shutdown(self) -> bool:
         """Whether the node was shut down (``rosnode kill``); False before it starts."""
