@@ -751,3 +751,37 @@ def test_a_node_asked_to_warns_as_rospy_when_it_refuses_a_subscriber_of_another_
         "/mismatch",
         "geometry_msgs/Twist",
     )
+
+
+def test_the_bytes_published_count_each_message_once_as_subscribers_come_and_go(
+    make_node: Callable[..., Node], transport: str
+) -> None:
+    """``getBusStats``' messageDataSent: the bytes of every message published, once, whether
+    one subscriber's stream counted them (the one-subscriber way), a subscriber since gone,
+    or none was connected."""
+    if transport == "INTRAPROCESS":
+        pytest.skip("nothing is serialized in one process")
+    talker = make_node("talker")
+    pub = talker.advertise("/count", String, queue_size=None)
+    first: list[str] = []
+    sub = make_node("first").subscribe("/count", String, lambda m: first.append(m.data))
+    wait_for(connected(pub, sub))
+    sent = []
+    for text in ("one", "two"):
+        pub.publish(String(data=text))
+        sent.append(String(data=text)._frame())
+    wait_for(lambda: first == ["one", "two"])
+    sub.unregister()
+    wait_for(lambda: pub.get_num_connections() == 0)
+    pub.publish(String(data="to nobody"))
+    sent.append(String(data="to nobody")._frame())
+    second: list[str] = []
+    sub = make_node("second").subscribe("/count", String, lambda m: second.append(m.data))
+    wait_for(connected(pub, sub))
+    pub.publish(String(data="four"))
+    sent.append(String(data="four")._frame())
+    wait_for(lambda: second == ["four"])
+    _, _, (publications, _, _) = call(talker.uri, "getBusStats", "/test")
+    assert [p[:2] for p in publications if p[0] == "/count"] == [
+        ["/count", sum(len(frame) for frame in sent)]
+    ]
