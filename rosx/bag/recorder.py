@@ -217,10 +217,7 @@ class Recorder:
             time.sleep(0.01)
         for sub in subscribers:
             sub.detach()
-        # Each connection ended first: a read in progress when it was stopped is counted then.
-        while time.monotonic() < deadline and not all(
-            sub.detach_finished() and sub.caught_up() for sub in subscribers
-        ):
+        while time.monotonic() < deadline and not all(sub.caught_up() for sub in subscribers):
             time.sleep(0.01)
         for sub in subscribers:
             with contextlib.suppress(Exception):

@@ -155,12 +155,6 @@ class Subscriber:
         (`caught_up` says when), and `unregister` follows."""
         self.subscription.detach()
 
-    def detach_finished(self) -> bool:
-        """Whether the connections `detach` stopped have all ended, so that everything read
-        from them is counted (a read in progress when it was called included): ask it before
-        `caught_up`."""
-        return self.subscription.detach_finished()
-
     def caught_up(self) -> bool:
         """Whether the callbacks have run for every message of the topic read so far (but
         those the subscriber's queue dropped, which never will be)."""

@@ -24,9 +24,9 @@ The contract (ROS wiki ROS/Slave_API ``publisherUpdate``, ROS/TCPROS):
   header says about their type.
 * Stopping without losing what has arrived (``rosbag record``): `Subscription.drain` notes what
   has reached this host so far (read, or still in each socket's buffer) and says when the
-  callbacks have had it all; `Subscription.detach` then stops reading, and once
-  `Subscription.detach_finished` says the connections have ended, `Subscription.caught_up`
-  says when what was read has been handled. A read that has taken
+  callbacks have had it all; `Subscription.detach` then stops reading, and
+  `Subscription.caught_up` says when what was read has been handled (the connections stopped
+  having ended, a read in progress then counted). A read that has taken
   bytes and not yet counted them escapes a drain unless `Subscription.make_drains_exact` was
   asked (an action client's feedback, which its result must not overtake).
 """
@@ -295,9 +295,9 @@ class Subscription:
             else:
                 self.receiver.detach(stream)
 
-    def detach_finished(self) -> bool:
+    def _detach_finished(self) -> bool:
         """Whether every connection `detach` stopped has ended: its thread has counted all it
-        read (a read in progress when it was stopped included), for `caught_up` to compare."""
+        read (a read in progress when it was stopped included)."""
         return all(
             stream.closed if isinstance(stream, local.LocalLink) else stream.receiver is None
             for stream in self._detached  # a stream's thread lets go of it last of all
@@ -305,8 +305,9 @@ class Subscription:
 
     def caught_up(self) -> bool:
         """Whether the callbacks have run for every message read so far (or a bounded queue
-        dropped it: dropped messages will never be handled)."""
-        return self.receiver.caught_up()
+        dropped it: dropped messages will never be handled); after `detach`, once the
+        connections it stopped have ended, so that a read in progress then is counted."""
+        return self._detach_finished() and self.receiver.caught_up()
 
     def _callback_failed(self, exc: BaseException, callback: Callable[[Any], object]) -> None:
         if self._on_error is not None:
