@@ -224,7 +224,7 @@ deadline = time.time() + 60
 if way == "stored":
     done.wait(60)
 elif way == "wait":  # as the tutorials wait: for the transform at a time not yet sent
-    # 1 ms after the last stamp (tf2_py takes times as doubles, 0.2 µs apart at today's
+    # 1 ms after the last stamp (tf2_py takes times as doubles, 0.24 µs apart at today's
     # stamps), which only the next transform, 20 ms later, answers
     step = rospy.Duration(0, 1000000)
     seen = buffer.lookup_transform("world", "mover", zero, rospy.Duration(30)).header.stamp
