@@ -19,7 +19,7 @@ The contract:
   callbacks of a topic never run concurrently, and run in the order the frames were queued.
   Frames read when nothing is queued and no callback is running skip the queue (same order, one
   hand-off less on the latency path, and in a flood a few calls less per message). With one
-  typed callback the thread does that in one Python frame, from the read to the callback
+  callback (typed or raw) the thread does that in one Python frame, from the read to the callback
   (`Receiver._read_direct`): after a pause that code runs with the CPU's caches cold, where
   each call costs microseconds. A latched
   message for a callback added late is queued by the loop and run by one of the node's worker
@@ -449,10 +449,10 @@ class Receiver:
                     return frames[index:]
                 self._run(frame, header, entries)
             return ()
-        # One typed callback: `_run` and the decoder (`message_decoder`) inlined.
+        # One callback: `_run` and the decoder (`message_decoder`, or a raw one) inlined.
         callback, decode = entries[0]
         fresh = decode.fresh  # type: ignore[attr-defined]
-        cls = decode.msg_class  # type: ignore[attr-defined]
+        cls = decode.instance_class  # type: ignore[attr-defined]
         new = object.__new__
         for index, frame in enumerate(frames):
             if self._stopped or self.entries is not entries:
@@ -510,9 +510,9 @@ class Receiver:
         header = stream.header
         callback, decode = entries[0]
         fresh = decode.fresh  # type: ignore[attr-defined]
-        cls = decode.msg_class  # type: ignore[attr-defined]
+        cls = decode.instance_class  # type: ignore[attr-defined]
         new = object.__new__
-        while True:
+        while stream.sock is sock:  # else the stream's socket changed: read that one
             try:
                 size = recv_into(scratch)
             except (BlockingIOError, InterruptedError):
@@ -529,7 +529,7 @@ class Receiver:
                 or not lock.acquire(False)
             ):
                 return (stream.whole_frame(size),)
-            # `IncomingStream.whole_frame`, `_run` and the decoder (`message_decoder`), inlined.
+            # `IncomingStream.whole_frame`, `_run` and the decoder, inlined.
             frame = bytes(view[4:size])
             stream.frames_received += 1
             stream.bytes_received += size
@@ -546,6 +546,7 @@ class Receiver:
             lock.release()
             if queue:
                 self._dispatch_all()
+        return ()
 
     @property
     def received(self) -> int:

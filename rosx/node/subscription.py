@@ -101,6 +101,18 @@ def _raw(frame: Received, header: dict[str, str]) -> RawMessage:
     return RawMessage(frame if isinstance(frame, bytes) else bytes(frame), header)
 
 
+def _raw_fresh(msg: RawMessage, frame: bytes) -> RawMessage:
+    """`_raw` in the receiver's two lines (see `message_decoder`): ``msg`` a bare instance."""
+    msg._buff = frame if frame.__class__ is bytes else bytes(frame)
+    return msg
+
+
+# A reader runs the two lines of a decoder itself where it can (`rosx.node.receiver`): a raw
+# subscriber's too (a bridge's, a recorder's), on the same quick path as a typed one's.
+setattr(_raw, "fresh", _raw_fresh)  # noqa: B010 - an attribute on a function
+setattr(_raw, "instance_class", RawMessage)  # noqa: B010 - an attribute on a function
+
+
 def message_decoder(cls: type[Message]) -> Callable[[Received, dict[str, str]], Message]:
     """Decode frames of ``cls``: a fresh instance per frame, ``_connection_header`` set."""
     from rosx.msg.codec.codegen import variant  # noqa: PLC0415 - generated on first use
@@ -128,6 +140,7 @@ def message_decoder(cls: type[Message]) -> Callable[[Received, dict[str, str]], 
     # How: a reader may run the two lines of `decode` itself (`rosx.node.receiver`), and read
     # large frames in parts for it (`rosx.node.incoming`).
     setattr(decoder, "fresh", fresh)  # noqa: B010 - an attribute on a function
+    setattr(decoder, "instance_class", cls)  # noqa: B010 - an attribute on a function
     setattr(decoder, "locate", locate)  # noqa: B010 - an attribute on a function
     return decoder
 

@@ -288,6 +288,27 @@ def test_raw_subscription_learns_the_type(make_node: Callable[..., Node]) -> Non
     assert b.subscriptions["/raw"].type == "*"
 
 
+def test_a_raw_subscriber_takes_a_flood_in_order_each_message_its_own(
+    make_node: Callable[..., Node],
+) -> None:
+    """A raw subscriber reads a flood on the reader's quick paths as a typed one does: every
+    message in order, each a `RawMessage` of its own with its bytes and the publisher's type."""
+    a, b = make_node("flooder"), make_node("raw_taker")
+    got: list[RawMessage] = []
+    sub = b.subscribe("/raw_flood", None, got.append)
+    pub = a.advertise("/raw_flood", Twist, queue_size=None)
+    wait_for(connected(pub, sub))
+    for i in range(3000):
+        pub.publish(twist(float(i)))
+    wait_for(lambda: len(got) == 3000, what="the flood")
+    assert [Twist().deserialize(raw._buff).linear.x for raw in got] == [
+        float(i) for i in range(3000)
+    ]
+    assert {raw.type for raw in got} == {"geometry_msgs/Twist"}
+    assert {type(raw._buff) for raw in got} == {bytes}
+    assert len({id(raw) for raw in got}) == 3000
+
+
 def test_publisher_update_connects_a_new_publisher(make_node: Callable[..., Node]) -> None:
     listener = make_node("waiting")
     got: list[str] = []
