@@ -10,13 +10,14 @@ publisher (a rosx node in a process of its own) feeds both, and the same WebSock
 * ``twist``: ``geometry_msgs/Twist`` published as fast as the publisher can; the messages per
   second one subscribed JSON client receives;
 * ``latency``: Twist at 200 Hz, each carrying its publishing time; publish → client p50 and
-  p99 (the first half second ignored), measured twice, each with a publishing run of its own:
-  with a lean client (`LeanClient`: a thread of its own blocked in ``recv`` on a plain socket,
-  taking the time as a message's last bytes arrive and decoding it after the run), the figure
-  checked against the target, then with the websockets client, as the earlier runs in
-  bench/README.md were. The websockets client's own reading (its event loop's wake-up, frame
-  parser and queue: 35-80 µs a message on this machine, idle) is in every contender's figure
-  and is no bridge's latency: it pushes every ratio toward 1;
+  p99 (the first half second ignored), measured twice: with a lean client (`LeanClient`: a
+  thread of its own blocked in ``recv`` on a plain socket, taking the time as a message's last
+  bytes arrive and decoding it after the run), the figure checked against the target, every
+  bridge and the floor in the same window (`latency_together`: their publishers run at once,
+  their messages interleaved), then with the websockets client, one bridge after the other,
+  as the earlier runs in bench/README.md were. The websockets client's own reading (its event
+  loop's wake-up, frame parser and queue: 35-80 µs a message on this machine, idle) is in
+  every contender's figure and is no bridge's latency: it pushes every ratio toward 1;
 * ``image``: 1 MiB ``sensor_msgs/Image`` as fast as the publisher can, to a ``cbor-raw``
   client: MiB/s received;
 * ``clients``: Twist at 200 Hz to 100 clients at once: messages per second delivered in all,
@@ -29,12 +30,14 @@ take turns (each round the other first, each case once both are idle). The laten
 measures its floor, with the same publishing loop and the same clients: a bare relay process
 (the standard library only, a thread blocked in ``recv``) that frames each JSON text it is fed
 over a Unix socket (as two rosx processes talk) as a WebSocket frame to its clients, so two
-process hops with no ROS work in them. ``--compare DIR`` runs the rosx bridge of another
-checkout beside this one (before and after a change, in one run). Each bridge has topics
-of its own, so that a subscription one of them keeps for a while cannot slow
-down the publisher feeding the other. rosbridge_suite's source is a directory holding its
-``ros1`` branch, prepared as bench/README.md says (``--rosbridge-suite DIR``, else
-``$ROSBRIDGE_SUITE``); without it, its side is skipped with one line. Run:
+process hops with no ROS work in them; and what each bridge adds to it (its p50 less the
+floor's, round by round), the part of the latency that is the bridge's own work.
+``--compare DIR`` runs the rosx bridge of another checkout beside this one (before and after
+a change, in one run). Each bridge has topics of its own, so that a subscription one of them
+keeps for a while cannot slow down the publisher feeding the other. rosbridge_suite's source
+is a directory holding its ``ros1`` branch, prepared as bench/README.md says
+(``--rosbridge-suite DIR``, else ``$ROSBRIDGE_SUITE``); without it, its side is skipped with
+one line. Run:
 ``python bench/bench_bridge.py [--seconds S] [--rounds N] [--only CASE] [--rosbridge-suite DIR]
 [--compare DIR]``.
 """
@@ -82,7 +85,7 @@ import os, sys, time
 from rosx.node import Node
 from rosx.msg.codec.classes import get_message_class
 mode, topic, seconds = sys.argv[1], sys.argv[2], float(sys.argv[3])
-node = Node("bench_publisher", master_uri=os.environ["ROS_MASTER_URI"]).start()
+node = Node(f"bench_publisher_{os.getpid()}", master_uri=os.environ["ROS_MASTER_URI"]).start()
 if mode == "topics":
     String = get_message_class("std_msgs/String")
     pubs = [node.advertise(f"/many/topic_{i}", String, queue_size=1) for i in range(1200)]
@@ -102,11 +105,13 @@ deadline = time.monotonic() + 15
 while pub.get_num_connections() == 0 and time.monotonic() < deadline:
     time.sleep(0.01)
 print("ready", flush=True)
-sys.stdin.readline()
+line = sys.stdin.readline().strip()
+# "go", or the instant (time.monotonic(), the machine's clock) of the first message
+next_at = float(line) if line.replace(".", "", 1).isdigit() else time.monotonic()
+time.sleep(max(0.0, next_at - time.monotonic()))
 period = {"latency": 1 / 200, "clients": 1 / 200}.get(mode, 0.0)
-end = time.monotonic() + seconds
+end = next_at + seconds
 sent = 0
-next_at = time.monotonic()
 while time.monotonic() < end:
     if mode in ("latency", "clients"):
         msg.linear.x = time.time()
@@ -128,12 +133,13 @@ path, seconds = sys.argv[1], float(sys.argv[2])
 sock = socket.socket(socket.AF_UNIX)
 sock.connect(path)
 print("ready", flush=True)
-sys.stdin.readline()
+line = sys.stdin.readline().strip()
+next_at = float(line) if line.replace(".", "", 1).isdigit() else time.monotonic()
+time.sleep(max(0.0, next_at - time.monotonic()))
 text = ('{"op":"publish","topic":"/bench_floor_latency","msg":{"linear":{"x":%r,"y":0.0,'
         '"z":0.0},"angular":{"x":0.0,"y":0.0,"z":0.0}}}\n')
-end = time.monotonic() + seconds
+end = next_at + seconds
 sent = 0
-next_at = time.monotonic()
 while time.monotonic() < end:
     sock.sendall((text % time.time()).encode())
     sent += 1
@@ -498,43 +504,58 @@ def case_twist(bridge: Bridge, seconds: float) -> float:
     return asyncio.run(run())
 
 
-def case_latency(bridge: Bridge, seconds: float) -> tuple[float, float, float, float]:
-    """p50 and p99 in ms with the lean client (`LeanClient`: what is checked against the
-    target), then with the websockets client (the figure of the earlier runs), each with a
-    publishing run and a topic of its own."""
-    lean = _latency_lean(bridge, seconds)
-    with_websockets = _latency_websockets(bridge, seconds)
-    return (*lean, *with_websockets)
+def latency_together(bridges: list[Bridge], seconds: float) -> dict[str, tuple[float, float]]:
+    """p50 and p99 in ms with the lean client, every bridge in the same window: their
+    publishers run at once, each at 200 Hz, their messages interleaved (the n-th bridge's
+    ``n / len(bridges)`` of a period after the first's), so that what else the machine does
+    meets each alike and no two messages are on their way at once."""
+    clients: dict[str, LeanClient] = {}
+    procs: dict[str, subprocess.Popen[str]] = {}
+    try:
+        for bridge in bridges:
+            topic = f"/bench_{_tag(bridge)}_latency"
+            client = clients[bridge.name] = LeanClient(bridge.port)
+            client.send_text(json.dumps({"op": "subscribe", "topic": topic, "type": TWIST}))
+            client.start()
+            procs[bridge.name] = bridge.publisher("latency", topic, seconds + 0.5)
+        for proc in procs.values():
+            assert proc.stdout is not None
+            proc.stdout.readline()  # ready: its subscriber found
+        time.sleep(0.3)
+        first = time.monotonic() + 0.2
+        begin = time.time() + 0.2 + 0.5  # the first half second ignored
+        for index, proc in enumerate(procs.values()):
+            assert proc.stdin is not None
+            proc.stdin.write(f"{first + index / 200 / len(procs):.6f}\n")
+            proc.stdin.flush()
+        time.sleep(0.2 + seconds + 0.5)
+        arrivals = {name: client.stop() for name, client in clients.items()}
+        for proc in procs.values():
+            _finish(proc)
+    finally:
+        for client in clients.values():
+            client.close()
+        for proc in procs.values():
+            if proc.poll() is None:
+                proc.kill()
+                proc.wait()
+    found: dict[str, tuple[float, float]] = {}
+    for name, came in arrivals.items():
+        lags = [
+            arrived - json.loads(payload)["msg"]["linear"]["x"]
+            for arrived, payload in came
+            if begin <= arrived < begin + seconds
+        ]
+        if not lags:
+            raise RuntimeError(f"{name}: no message came ({len(came)} in all)")
+        found[name] = _percentiles(lags)
+    return found
 
 
 def _percentiles(lags: list[float]) -> tuple[float, float]:
     """p50 and p99 of ``lags`` (seconds), in ms."""
     lags.sort()
     return lags[len(lags) // 2] * 1000, lags[int(len(lags) * 0.99)] * 1000
-
-
-def _latency_lean(bridge: Bridge, seconds: float) -> tuple[float, float]:
-    topic = f"/bench_{_tag(bridge)}_latency"
-    client = LeanClient(bridge.port)
-    try:
-        client.send_text(json.dumps({"op": "subscribe", "topic": topic, "type": TWIST}))
-        client.start()
-        proc = bridge.publisher("latency", topic, seconds + 0.5)
-        _go(proc)
-        begin = time.time() + 0.5  # the first half second ignored
-        time.sleep(seconds + 0.5)
-        arrivals = client.stop()
-        _finish(proc)
-    finally:
-        client.close()
-    # Decoded only now: the time was taken as the bytes came.
-    return _percentiles(
-        [
-            arrived - json.loads(payload)["msg"]["linear"]["x"]
-            for arrived, payload in arrivals
-            if begin <= arrived < begin + seconds
-        ]
-    )
 
 
 def _latency_websockets(bridge: Bridge, seconds: float) -> tuple[float, float]:
@@ -662,7 +683,6 @@ def _finish(proc: subprocess.Popen[str]) -> int:
 
 RUNS: dict[str, Callable[[Bridge, float], Any]] = {
     "twist": case_twist,
-    "latency": case_latency,
     "image": case_image,
     "clients": case_clients,
     "topics": case_topics,
@@ -776,6 +796,42 @@ def report(found: dict[str, dict[str, list[Any]]]) -> None:
                 print(f"{label:50} {a}/{b} by round: {', '.join(rounds)}")
 
 
+def report_added(found: dict[str, dict[str, list[Any]]]) -> None:
+    """What each bridge adds to the floor's latency (p50 with the lean client), round by
+    round: its own work, the two process hops the floor has too taken away."""
+    floors = found.get("floor", {}).get("latency", [])
+    if not floors:
+        return
+    added: dict[str, list[float | None]] = {}
+    for name, by_case in found.items():
+        if name == "floor":
+            continue
+        added[name] = [
+            None if mine is None or floor is None else (mine[0] - floor[0]) * 1000
+            for mine, floor in zip(by_case.get("latency", []), floors, strict=False)
+        ]
+    suite = added.get("rosbridge_suite", [])
+    print()
+    print("what each bridge adds to the floor's p50 (its own work, the hops taken away), µs:")
+    for name, values in added.items():
+        known = [v for v in values if v is not None]
+        if not known:
+            continue
+        rounds = ", ".join("-" if v is None else f"{v:.0f}" for v in values)
+        line = f"  {name:24} {statistics.median(known):6.1f}  (rounds {rounds})"
+        if name != "rosbridge_suite" and suite:
+            ratios = [
+                "-" if a is None or not b else f"{a / b:.2f}x"
+                for a, b in zip(values, suite, strict=False)
+            ]
+            theirs = [v for v in suite if v is not None]
+            if theirs:
+                share = statistics.median(known) / statistics.median(theirs)
+                line += f"  / rosbridge_suite's: {share:.2f}x"
+                line += f" (by round: {', '.join(ratios)})"
+        print(line)
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=3.0, help="each case's measuring window")
@@ -815,8 +871,19 @@ def main() -> int:
         found: dict[str, dict[str, list[Any]]] = {b.name: {c: [] for c in cases} for b in bridges}
         for round_ in range(args.rounds):
             for case in cases:
-                for bridge in bridges if round_ % 2 == 0 else bridges[::-1]:
-                    if bridge.name == "floor" and case != "latency":
+                order = bridges if round_ % 2 == 0 else bridges[::-1]
+                if case == "latency":
+                    settle(bridges)
+                    together = latency_together(order, args.seconds)
+                    for bridge in order:
+                        settle(bridges)
+                        found[bridge.name][case].append(
+                            (*together[bridge.name], *_latency_websockets(bridge, args.seconds))
+                        )
+                        print(f"  {bridge.name} latency: {found[bridge.name][case][-1]}")
+                    continue
+                for bridge in order:
+                    if bridge.name == "floor":
                         continue
                     settle(bridges)
                     found[bridge.name][case].append(measure_once(bridge, case, args.seconds))
@@ -830,6 +897,7 @@ def main() -> int:
             master_proc.kill()
             master_proc.wait()
     report(found)
+    report_added(found)
     return 0
 
 
