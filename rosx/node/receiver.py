@@ -512,7 +512,7 @@ class Receiver:
         fresh = decode.fresh  # type: ignore[attr-defined]
         cls = decode.instance_class  # type: ignore[attr-defined]
         new = object.__new__
-        while stream.sock is sock:  # else the stream's socket changed: read that one
+        while True:
             try:
                 size = recv_into(scratch)
             except (BlockingIOError, InterruptedError):
@@ -546,7 +546,6 @@ class Receiver:
             lock.release()
             if queue:
                 self._dispatch_all()
-        return ()
 
     @property
     def received(self) -> int:

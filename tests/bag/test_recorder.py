@@ -202,11 +202,15 @@ def test_a_stop_keeps_what_a_connection_was_reading_when_it_came(
     when that read returns: the stop waits for the connection to end before it looks."""
     monkeypatch.setattr(local, "ENABLED", False)  # the recorder reads a socket
     pub = make_node("held_talker").advertise("/held", String, queue_size=None)
-    recorder = _record(make_node("record"), tmp_path / "held", topics=["/held"])
+    node = make_node("record")
+    recorder = _record(node, tmp_path / "held", topics=["/held"])
     wait_for(lambda: pub.get_num_connections() == 1, what="the recorder on /held")
     stream: Any = next(iter(recorder._subscribers["/held"].subscription.streams.values()))
     held = HeldRead(stream.sock, armed=False)
     stream.sock = held
+    # A second callback on the topic: the thread's quick loop for one callback keeps the
+    # socket it began with; with two, each read takes the stream's socket, the wrapped one.
+    node.subscribe("/held", None, lambda raw: None)
     sent: list[str] = []
 
     def publish(text: str) -> None:
