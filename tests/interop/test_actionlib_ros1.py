@@ -90,10 +90,10 @@ rospy.init_node("scenario_client")
 client = actionlib.ActionClient("goals", TestAction)
 assert client.wait_for_server(rospy.Duration(30))
 
-def wait(predicate):
+def wait(predicate, what):
     deadline = time.monotonic() + 30
     while not predicate():
-        assert time.monotonic() < deadline, "timed out"
+        assert time.monotonic() < deadline, f"timed out waiting for {what()}"
         time.sleep(0.005)
 
 report = {}
@@ -104,10 +104,12 @@ for number, cancel_in in [(1, None), (2, 2), (3, 1), (4, None), (5, None)]:
         lambda h, states=states: states.append(h.get_comm_state()),
         lambda h, f, feedback=feedback: feedback.append(f.feedback),
     )
+    def at(state, number=number, handle=handle):
+        return lambda: f"goal {number} in comm state {state}, at {handle.get_comm_state()}"
     if cancel_in is not None:
-        wait(lambda: handle.get_comm_state() == cancel_in)  # PENDING or ACTIVE
+        wait(lambda: handle.get_comm_state() == cancel_in, at(cancel_in))  # PENDING or ACTIVE
         handle.cancel()
-    wait(lambda: handle.get_comm_state() == 7)
+    wait(lambda: handle.get_comm_state() == 7, at(7))
     result = handle.get_result()
     report[str(number)] = {
         "states": states,
@@ -126,7 +128,8 @@ first.send_goal(TestGoal(1), lambda s, r: calls.append(["done", s, r.result]),
 first.wait_for_result(rospy.Duration(30))
 first.send_goal(TestGoal(2), lambda s, r: calls.append(["done", s, r.result]),
                 lambda: calls.append(["active"]))
-wait(lambda: first.get_state() == GoalStatus.ACTIVE)
+wait(lambda: first.get_state() == GoalStatus.ACTIVE,
+     lambda: f"the simple client's goal 2 active, at {first.get_state()}")
 second.send_goal(TestGoal(3))
 second.wait_for_result(rospy.Duration(30))
 first.wait_for_result(rospy.Duration(30))
@@ -192,7 +195,9 @@ def reports(
                     timeout=120,
                     check=False,
                 )
-                assert done.returncode == 0, (server_side, client_side, done.stderr)
+                # The end of the client's traceback says which goal stuck, and where.
+                tail = done.stderr.strip().splitlines()[-3:]
+                assert done.returncode == 0, (server_side, client_side, tail)
                 found[server_side, client_side] = json.loads(done.stdout.splitlines()[-1])
     yield found
 
