@@ -25,8 +25,8 @@ The contract (ROS wiki ROS/Slave_API ``publisherUpdate``, ROS/TCPROS):
 * Stopping without losing what has arrived (``rosbag record``): `Subscription.drain` notes what
   has reached this host so far (read, or still in each socket's buffer) and says when the
   callbacks have had it all; `Subscription.detach` then stops reading, and
-  `Subscription.caught_up` says when what was read has been handled (the connections stopped
-  having ended, a read in progress then counted). A read that has taken
+  `Subscription.caught_up` says when what was read has been handled (once the connections it
+  stopped have ended, so that a read in progress then is counted). A read that has taken
   bytes and not yet counted them escapes a drain unless `Subscription.make_drains_exact` was
   asked (an action client's feedback, which its result must not overtake).
 """
