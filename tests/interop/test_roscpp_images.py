@@ -1,6 +1,7 @@
 """A rosx publisher and a roscpp subscriber (over TCPROS): large images, which rosx sends from
 the message itself in parts (`rosx.msg.codec.parts`), reach roscpp as the same bytes, in order,
-latched ones too; a slow roscpp subscriber loses only the oldest, with the publisher's queue.
+latched ones too; a slow roscpp subscriber loses only the oldest, with the publisher's queue,
+and none from an unbounded one, however far behind it fell.
 
 The roscpp node is `roscpp/image_listener.cpp`, compiled here against Debian's libroscpp-dev
 (`bench.roscpp_program.build`, cached); skipped where a compiler, roscpp or the message headers
@@ -11,6 +12,7 @@ from __future__ import annotations
 
 import os
 import queue
+import signal
 import subprocess
 import threading
 import zlib
@@ -138,3 +140,29 @@ def test_a_slow_roscpp_subscriber_loses_only_the_oldest(
     assert numbers == sorted(set(numbers))  # in order, none twice
     assert len(numbers) < 30  # 30 MiB at once: the oldest were dropped on the way
     assert got == [images[name] for name, _, _ in got]  # the rest arrived whole
+
+
+def test_a_roscpp_subscriber_far_behind_an_unbounded_queue_gets_every_message_in_order(
+    make_node: Callable[..., Node], start_listener: Callable[[str, int, int], Listener]
+) -> None:
+    node = make_node("flood_camera")
+    pub = node.advertise("/flood", Image, queue_size=0)  # unbounded: nothing dropped
+    listener = start_listener("/flood", 0, 0)
+    wait_for(lambda: pub.get_num_connections() == 1)
+    image = Image(width=1000, height=1, step=1000, encoding="mono8")
+    sent: list[tuple[str, int, int]] = []
+
+    def publish(first: int, count: int) -> None:
+        for number in range(first, first + count):
+            image.header.frame_id = str(number)
+            image.data = bytes([number % 251]) * 1000
+            pub.publish(image)
+            sent.append(expected(str(number), image.data))
+
+    listener.proc.send_signal(signal.SIGSTOP)  # it reads nothing: 10 MB wait, most in rosx
+    try:
+        publish(0, 10_000)
+    finally:
+        listener.proc.send_signal(signal.SIGCONT)
+    publish(10_000, 10_000)  # more come while it catches up
+    assert listener.until("19999") == sent

@@ -1,0 +1,85 @@
+"""A publisher's stream ahead of its peer (`rosx.node.outgoing`): while the socket has no room
+the frames wait, and `send` does not offer the waiting queue to the socket (one gathered
+``sendmsg`` refused every few frames was most of a publisher's time next to a slow roscpp
+subscriber); once the peer reads, every frame a queue of its size keeps arrives, whole and in
+order, the newest kept where a bounded queue dropped."""
+
+from __future__ import annotations
+
+import socket
+import struct
+from collections.abc import Iterator
+from typing import Any
+
+import pytest
+
+from rosx.node.outgoing import FLUSH_EVERY, OutgoingStream
+from rosx.transport.loop_thread import LoopThread
+from tests.support.frames import read_frames
+from tests.support.procs import wait_for
+
+
+class CountingSocket(socket.socket):
+    """A stream's socket that counts the gathered writes it is offered."""
+
+    offers = 0
+
+    def sendmsg(self, *args: Any, **kwargs: Any) -> int:
+        self.offers += 1
+        return super().sendmsg(*args, **kwargs)
+
+
+@pytest.fixture
+def io() -> Iterator[LoopThread]:
+    loop = LoopThread("test-backlog").start()
+    yield loop
+    loop.stop()
+
+
+@pytest.fixture
+def pair() -> Iterator[tuple[CountingSocket, socket.socket]]:
+    mine, peer = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
+    counting = CountingSocket(mine.family, mine.type, fileno=mine.detach())
+    yield counting, peer
+    counting.close()
+    peer.close()
+
+
+def twist_frame(number: int) -> bytes:
+    """A Twist-sized frame naming ``number``."""
+    return struct.pack("<II", 48, number) + bytes(44)
+
+
+def number_of(frame: bytes) -> int:
+    return int(struct.unpack_from("<I", frame, 4)[0])
+
+
+@pytest.mark.parametrize("queue_size", [0, 10], ids=["unbounded", "queue_size=10"])
+def test_a_full_socket_is_not_offered_the_queue_and_the_peer_gets_what_is_kept(
+    io: LoopThread, pair: tuple[CountingSocket, socket.socket], queue_size: int
+) -> None:
+    mine, peer = pair
+    stream = OutgoingStream(mine, io, queue_size)
+    sent: list[bytes] = []
+    while not stream.queued:  # the peer reads nothing: the kernel's buffer fills
+        sent.append(twist_frame(len(sent)))
+        stream.send(sent[-1])
+    for _ in range(20 * FLUSH_EVERY):
+        sent.append(twist_frame(len(sent)))
+        stream.send(sent[-1])
+    assert mine.offers == 0
+    if queue_size:  # no more wait than the queue's size (and the frame half on the wire)
+        assert stream.dropped and stream.queued <= queue_size + 1
+    else:
+        assert not stream.dropped and stream.queued > 20 * FLUSH_EVERY
+    kept = len(sent) - stream.dropped
+    frames = read_frames(peer, kept)
+    numbers = [number_of(frame) for frame in frames]
+    assert frames == [sent[n] for n in numbers]  # whole
+    assert numbers == sorted(numbers)  # in order
+    if queue_size:
+        assert numbers[-queue_size:] == list(range(len(sent) - queue_size, len(sent)))
+    else:
+        assert numbers == list(range(len(sent)))
+    wait_for(lambda: stream.frames_sent == kept, what="the stream's count")
+    stream.close()
