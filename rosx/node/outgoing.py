@@ -7,9 +7,9 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
   thread, so an idle connection adds no thread hand-off to a message's latency. Whatever the
   kernel does not take is queued; the queue is flushed, as many frames as are waiting in one
   ``sendmsg``, when the socket is writable (``POLLOUT``, the room roscpp's publisher waits
-  for too): by the I/O loop, and by `send` every `FLUSH_EVERY` frames and before a bounded
-  queue would drop one, which asks the socket first, so a publisher ahead of a slow peer does
-  not gather and offer its whole queue to a socket that has no room.
+  for too), by the I/O loop, and by `send` every `FLUSH_EVERY` frames, which asks the socket
+  first: a publisher ahead of a slow peer does not gather and offer its whole queue to a
+  socket without room. Before a bounded queue drops a frame, `send` offers the queue as it is.
 * A frame is one ``bytes`` object, or a tuple of its parts in order (`Frame`): a large field is
   then sent from the message itself (`rosx.msg.codec.parts`), each part a buffer of the same
   ``sendmsg``, never joined into a copy. The parts must not change while the frame is queued
@@ -268,15 +268,19 @@ class OutgoingStream:
         # Whatever the peer has read since makes room now, not when the loop next gets
         # the GIL (up to a switch interval, 5 ms, behind a publishing thread): the queue
         # goes out in one ``sendmsg``, coalesced (a Unix socket's buffer counts each
-        # ``send`` of a small frame as a whole kernel buffer). Once every `FLUSH_EVERY`
-        # frames, or before a frame would be dropped, and only if the socket is writable: a
-        # peer slower than the publisher keeps the socket full, and gathering the queue's
-        # buffers for a ``sendmsg`` the socket refuses cost the publisher more than its
-        # messages did (next to a roscpp subscriber over TCP: 60 % of the publisher's time,
-        # 0.85 of a CPU), taken from the subscriber when they share the machine.
+        # ``send`` of a small frame as a whole kernel buffer). Before a frame would be
+        # dropped (a frame the socket takes is not lost), and once every `FLUSH_EVERY` frames
+        # if the socket is writable: a peer slower than the publisher keeps the socket full,
+        # and gathering the queue's buffers for a ``sendmsg`` the socket refuses cost the
+        # publisher more than its messages did (next to a roscpp subscriber over TCP: 60 % of
+        # the publisher's time, 0.85 of a CPU), taken from the subscriber when they share
+        # the machine.
         limit = self._limit
         self._queued_since += 1
-        if self._queued_since >= FLUSH_EVERY or (limit and len(pending) > limit):
+        if limit and len(pending) > limit:
+            self._queued_since = 0
+            self._flush_locked()  # whatever the socket takes is not dropped
+        elif self._queued_since >= FLUSH_EVERY:
             self._queued_since = 0
             if self._room.poll(0):
                 self._flush_locked()
