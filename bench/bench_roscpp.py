@@ -212,6 +212,15 @@ def keep_busy() -> subprocess.Popen[bytes]:
     return subprocess.Popen([sys.executable, "-c", "while True: pass"])
 
 
+def stop_run(master: subprocess.Popen[bytes], busy: subprocess.Popen[bytes] | None) -> None:
+    """Stop a run's master and its busy loop, if it had one."""
+    master.terminate()
+    master.wait()
+    if busy is not None:
+        busy.kill()
+        busy.wait()
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     names = [case.name for case in cases(1.0)]
@@ -261,11 +270,7 @@ def main() -> None:
             sys.stdout.flush()
             everything[case.name] = {"loads": loads, "runs": runs}
     finally:
-        proc.terminate()
-        proc.wait()
-        if busy is not None:
-            busy.kill()
-            busy.wait()
+        stop_run(proc, busy)
     if args.json is not None:
         args.json.write_text(json.dumps({"when": when, "busy": args.busy, **everything}))
 

@@ -133,7 +133,7 @@ def run(contender: str, master: str, count: int, number: int) -> dict[str, float
 def main() -> None:
     from bench import interpreter, roscpp_program
     from bench.bench_pubsub import median, start_master
-    from bench.bench_roscpp import keep_busy
+    from bench.bench_roscpp import keep_busy, stop_run
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=3, help="rounds of every contender")
@@ -165,11 +165,7 @@ def main() -> None:
             for index, contender in enumerate(contenders[turn:] + contenders[:turn]):
                 runs[contender].append(run(contender, master, args.messages, number * 10 + index))
     finally:
-        proc.terminate()
-        proc.wait()
-        if busy is not None:
-            busy.kill()
-            busy.wait()
+        stop_run(proc, busy)
     base = median([r["rate"] for r in runs["roscpp"]])
     for contender, results in runs.items():
         rate = median([r["rate"] for r in results])

@@ -30,13 +30,6 @@ class CountingSocket(socket.socket):
 
 
 @pytest.fixture
-def io() -> Iterator[LoopThread]:
-    loop = LoopThread("test-backlog").start()
-    yield loop
-    loop.stop()
-
-
-@pytest.fixture
 def pair() -> Iterator[tuple[CountingSocket, socket.socket]]:
     mine, peer = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
     counting = CountingSocket(mine.family, mine.type, fileno=mine.detach())

@@ -37,13 +37,6 @@ def clock(monkeypatch: pytest.MonkeyPatch) -> Clock:
 
 
 @pytest.fixture
-def io() -> Iterator[LoopThread]:
-    loop = LoopThread("test-held").start()
-    yield loop
-    loop.stop()
-
-
-@pytest.fixture
 def pair() -> Iterator[tuple[socket.socket, socket.socket]]:
     mine, peer = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
     yield mine, peer

@@ -17,13 +17,6 @@ from tests.support.procs import wait_for
 
 
 @pytest.fixture
-def io() -> Iterator[LoopThread]:
-    loop = LoopThread("test-outgoing").start()
-    yield loop
-    loop.stop()
-
-
-@pytest.fixture
 def pair() -> Iterator[tuple[socket.socket, socket.socket]]:
     mine, peer = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
     mine.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, 64 * 1024)  # fills at once

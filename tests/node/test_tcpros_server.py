@@ -42,15 +42,6 @@ class Taker:
 
 
 @pytest.fixture
-def io() -> Iterator[LoopThread]:
-    loop = LoopThread("test-tcpros-server").start()
-    try:
-        yield loop
-    finally:
-        loop.stop()
-
-
-@pytest.fixture
 def taker() -> Iterator[Taker]:
     handler = Taker()
     try:
