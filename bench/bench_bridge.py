@@ -74,6 +74,7 @@ sys.path.insert(0, str(ROOT))
 from bench import interpreter  # noqa: E402 -- after the path is set
 from bench.bench_pubsub import start_master  # noqa: E402
 from bench.interpreter import ROS1_PYTHON  # noqa: E402
+from bench.procstat import cpu_seconds  # noqa: E402
 from tests.support.procs import free_port  # noqa: E402
 
 CASES = ("twist", "latency", "image", "clients", "topics")
@@ -727,12 +728,11 @@ def measure_once(bridge: Bridge, case: str, seconds: float) -> Any:
 
 
 def _cpu_seconds(pids: list[int]) -> float:
-    total = 0
+    total = 0.0
     for pid in pids:
         with contextlib.suppress(OSError, IndexError, ValueError):
-            fields = Path(f"/proc/{pid}/stat").read_text().rpartition(")")[2].split()
-            total += int(fields[11]) + int(fields[12])  # utime + stime, in clock ticks
-    return total / os.sysconf("SC_CLK_TCK")
+            total += cpu_seconds(pid)
+    return total
 
 
 def settle(bridges: list[Bridge], timeout: float = 30.0) -> None:

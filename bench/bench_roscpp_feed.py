@@ -70,18 +70,18 @@ def feed(master: str, count: int, chunk: int, name: str) -> None:
     conn.recv(1)  # until the subscriber leaves
 
 
-def cpu_ticks(pid: int) -> int | None:
-    """User and system clock ticks of process ``pid`` (all its threads), None once gone."""
+def cpu_or_none(pid: int) -> float | None:
+    """The CPU seconds process ``pid`` has used, None once it is gone."""
+    from bench.procstat import cpu_seconds
+
     try:
-        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+        return cpu_seconds(pid)
     except OSError:
         return None
-    return int(fields[11]) + int(fields[12])
 
 
 def run(contender: str, master: str, count: int, number: int) -> dict[str, float]:
     """One flood from ``contender`` to a roscpp subscriber: its rate and the CPU used."""
-    from bench import roscpp_program
     from bench.bench_pubsub import spawn_worker
     from bench.interpreter import ROS1_PYTHON
 
@@ -94,39 +94,29 @@ def run(contender: str, master: str, count: int, number: int) -> dict[str, float
         chunk = contender.removeprefix("bare-")
         argv = [ROS1_PYTHON, __file__, "--feed", master, str(count), chunk, f"/{name}_pub"]
         pub: subprocess.Popen[str] = subprocess.Popen(argv, env=env, text=True)
-    elif contender == "roscpp":
-        program = roscpp_program.program()
-        assert program is not None
-        pub = subprocess.Popen(
-            [str(program), "pub", str(count), "null", "0", "twist", "1", f"{name}_pub"],
-            env=env,
-            stdout=subprocess.DEVNULL,
-            text=True,
-        )
-    else:
+    else:  # roscpp's publisher or rosx's
         pub = spawn_worker(contender, "pub", master, count, "null", 0, "twist", 1, f"{name}_pub")
     samples = []
     while sub.poll() is None:
-        samples.append((time.monotonic(), cpu_ticks(pub.pid), cpu_ticks(sub.pid)))
+        samples.append((time.monotonic(), cpu_or_none(pub.pid), cpu_or_none(sub.pid)))
         time.sleep(0.05)
     out = sub.communicate()[0]
     pub.kill()
     pub.communicate()
     result: dict[str, float] = json.loads(out.strip().splitlines()[-1])
-    hertz = os.sysconf("SC_CLK_TCK")
     live = [(t, p, s) for t, p, s in samples if p is not None and s is not None]
     # The flood: from the first to the last interval in which the subscriber used half a CPU.
     busy = [
         i
         for i in range(1, len(live))
-        if (live[i][2] - live[i - 1][2]) / hertz > 0.5 * (live[i][0] - live[i - 1][0])
+        if live[i][2] - live[i - 1][2] > 0.5 * (live[i][0] - live[i - 1][0])
     ]
     if busy and busy[-1] - busy[0] >= 4:
         first, last = busy[0], busy[-1]
         quarter = (last - first) // 4
         (t0, p0, s0), (t1, p1, s1) = live[first + quarter], live[last - quarter]
-        result["pub_cpu"] = (p1 - p0) / hertz / (t1 - t0)
-        result["sub_cpu"] = (s1 - s0) / hertz / (t1 - t0)
+        result["pub_cpu"] = (p1 - p0) / (t1 - t0)
+        result["sub_cpu"] = (s1 - s0) / (t1 - t0)
     return result
 
 

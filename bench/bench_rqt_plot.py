@@ -34,15 +34,11 @@ from typing import Any
 ROOT = Path(__file__).resolve().parent.parent
 sys.path[:0] = [str(ROOT), str(ROOT / "commands"), str(ROOT / "turtle")]
 
-from tests.support.procs import free_port  # noqa: E402 -- after the path is set
+from bench.procstat import cpu_seconds  # noqa: E402 -- after the path is set
+from tests.support.procs import free_port  # noqa: E402
 
 TOPICS = ("/bench_a", "/bench_b", "/bench_c")
 RATE = 1000.0
-
-
-def cpu_seconds(pid: int) -> float:
-    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
 def measure(pid: int, window: float) -> float:

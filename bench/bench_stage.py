@@ -35,6 +35,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path[:0] = [str(ROOT), str(ROOT / "turtle"), str(ROOT / "commands")]
 
 from bench import interpreter  # noqa: E402 - after the path is set
+from bench.procstat import cpu_seconds  # noqa: E402
 from tests.support.procs import free_port  # noqa: E402
 
 ROBOT = """\
@@ -60,11 +61,6 @@ def world_text(robots: int, interval_ms: int) -> str:
     for k in range(robots):
         lines.append(f'bot ( pose [ {-8 + 1.6 * k:.2f} -8 0 90 ] name "r{k}" )\n')
     return "".join(lines)
-
-
-def cpu_seconds(pid: int) -> float:
-    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
 def start(argv: list[str], env: dict[str, str], cwd: Path = ROOT) -> subprocess.Popen[bytes]:
