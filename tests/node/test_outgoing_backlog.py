@@ -7,7 +7,6 @@ still offers the socket its queue before it drops a frame (`test_outgoing_parts.
 from __future__ import annotations
 
 import socket
-import struct
 from collections.abc import Iterator
 from typing import Any
 
@@ -15,7 +14,7 @@ import pytest
 
 from rosx.node.outgoing import FLUSH_EVERY, OutgoingStream
 from rosx.transport.loop_thread import LoopThread
-from tests.support.frames import read_frames
+from tests.support.frames import read_frames, twist_frame
 from tests.support.procs import wait_for
 
 
@@ -36,11 +35,6 @@ def pair() -> Iterator[tuple[CountingSocket, socket.socket]]:
     yield counting, peer
     counting.close()
     peer.close()
-
-
-def twist_frame(number: int) -> bytes:
-    """A Twist-sized frame naming ``number``."""
-    return struct.pack("<II", 48, number) + bytes(44)
 
 
 def test_a_full_socket_is_not_offered_the_queue_and_the_peer_gets_every_frame_in_order(

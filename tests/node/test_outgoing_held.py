@@ -21,7 +21,7 @@ from rosx.node import outgoing, unixros
 from rosx.node.outgoing import HOLD_RUN, OutgoingStream
 from rosx.transport.loop_thread import LoopThread
 from tests.support.frames import FloodClock as Clock
-from tests.support.frames import read_frames
+from tests.support.frames import read_frames, twist_frame
 from tests.support.procs import wait_for
 
 pytestmark = pytest.mark.skipif(
@@ -47,11 +47,6 @@ def stream_of(mine: socket.socket, io: LoopThread, queue_size: int | None = 0) -
     unread = unixros.unread_probe(mine)
     assert unread is not None
     return OutgoingStream(mine, io, queue_size, unread=unread)
-
-
-def twist_frame(number: int, size: int = 48) -> bytes:
-    """A small frame (a Twist's size) naming ``number``."""
-    return struct.pack("<II", size, number) + bytes(size - 4)
 
 
 def send_flood(stream: OutgoingStream, count: int) -> list[bytes]:

@@ -1,12 +1,19 @@
-"""TCPROS frames read back from a socket, for tests of what a stream sends; a clock for the
+"""TCPROS frames read back from a socket, for tests of what a stream sends, and a small one to
+send; a clock for the
 stream that makes a series of frames a flood however loaded the machine; a socket that holds a
 subscriber's read at the moment it has taken bytes and counted none."""
 
 from __future__ import annotations
 
 import socket
+import struct
 import threading
 from typing import Any
+
+
+def twist_frame(number: int, size: int = 48) -> bytes:
+    """A small frame (a Twist's size) whose body starts with ``number``."""
+    return struct.pack("<II", size, number) + bytes(size - 4)
 
 
 def read_frames(peer: socket.socket, count: int) -> list[bytes]:
