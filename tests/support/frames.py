@@ -1,7 +1,6 @@
 """TCPROS frames read back from a socket, for tests of what a stream sends, and a small one to
-send; a clock for the
-stream that makes a series of frames a flood however loaded the machine; a socket that holds a
-subscriber's read at the moment it has taken bytes and counted none."""
+send; a clock for the stream that makes a series of frames a flood however loaded the machine;
+a socket that holds a subscriber's read at the moment it has taken bytes and counted none."""
 
 from __future__ import annotations
 
