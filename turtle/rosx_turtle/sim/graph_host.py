@@ -2,11 +2,13 @@
 
 The core to start (`rosx.core.Core`), or the master to join; the stops to run, in reverse
 order; the graph's feed and the log lines' feed for a screen; and the details a screen asks
-for (``rostopic info``, ``rosnode info``, echo) through one `Inspector` made when first asked.
+for (``rostopic info``, ``rosnode info``, echo) through one `Inspector` made when first asked;
+and `await_subscriber`, with which a host's ``start`` returns only once its teleop is heard.
 """
 
 from __future__ import annotations
 
+import time
 from typing import TYPE_CHECKING
 
 from rosx.core import Core
@@ -15,6 +17,7 @@ from rosx.master.client import MasterClient
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
 
+    from rosx.node import Publisher
     from rosx_turtle.console import Console
     from rosx_turtle.sim.inspect import Inspector
     from rosx_turtle.tui.feed import Feed
@@ -23,6 +26,23 @@ if TYPE_CHECKING:
 
 #: Seconds the master to join has to answer.
 JOIN_TIMEOUT = 3.0
+
+#: Seconds a host's ``start`` waits, at most, for its simulator to subscribe to the teleop.
+LINK_TIMEOUT = 10.0
+
+
+def await_subscriber(publisher: Publisher, callerid: str) -> None:
+    """Return once ``callerid`` subscribes to ``publisher``, or after `LINK_TIMEOUT`.
+
+    A subscriber connects when the master tells it of the publisher, a few milliseconds after
+    ``advertise`` returns; a Twist published before then would reach no one, so the first key
+    pressed on a screen that came up quickly would be lost.
+    """
+    deadline = time.monotonic() + LINK_TIMEOUT
+    while callerid not in publisher.publication.subscriber_ids():
+        if time.monotonic() > deadline:
+            return
+        time.sleep(0.002)
 
 
 class GraphHost:

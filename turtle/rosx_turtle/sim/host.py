@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any
 
 from rosx.msg.codec.classes import get_message_class
 from rosx_turtle.roscpp import NodeArgs
-from rosx_turtle.sim.graph_host import GraphHost
+from rosx_turtle.sim.graph_host import GraphHost, await_subscriber
 from rosx_turtle.teleop import DEFAULT_NAME as TELEOP_NAME
 from rosx_turtle.teleop import param_double
 
@@ -78,7 +78,7 @@ class SimHost(GraphHost):
         return self._scenes
 
     def start(self) -> SimHost:
-        """Start everything; returns self.
+        """Start everything; returns self once turtlesim listens to the teleop.
 
         Raises:
             PortInUseError: the master's port is taken.
@@ -111,6 +111,7 @@ class SimHost(GraphHost):
             param_double(teleop, "scale_angular", 2.0),
         )
         self.cmd_vel = teleop.advertise(CMD_VEL, self._twist, queue_size=1)
+        await_subscriber(self.cmd_vel, turtlesim.node.name)
         if self.tf_demo:
             from rosx_turtle.tutorials.tf_demo import TfDemo  # noqa: PLC0415 - with the demo
 

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 from rosx.msg.codec.classes import get_message_class
 from rosx.tf.broadcaster import StaticTransformBroadcaster
 from rosx_turtle.roscpp import NodeArgs
-from rosx_turtle.sim.graph_host import GraphHost
+from rosx_turtle.sim.graph_host import GraphHost, await_subscriber
 from rosx_turtle.stage.lab.plan import LabError, driven_topics, odom_origin
 
 if TYPE_CHECKING:
@@ -151,6 +151,8 @@ class LabHost(GraphHost):
             stage.node, stage.prefixes
         )
         self.cmd_vel = teleop.advertise(self.drive_topic, self._twist, queue_size=1)
+        if self.world.robots:  # stageros listens on each robot's cmd_vel
+            await_subscriber(self.cmd_vel, stage.node.name)
         if self.watch:
             self._stops.append(stage.add_step_listener(self.steps.offer))
             self._watch_graph()
