@@ -362,27 +362,29 @@ def shear_matrix(angle: float, direction: Any, point: Any, normal: Any) -> Any:
 
 
 def shear_from_matrix(matrix: Any) -> tuple[float, Any, Any, Any]:
-    """The angle, direction, plane point and plane normal of a shear matrix."""
+    """The angle, direction, plane point and plane normal of a shear matrix.
+
+    A shear's matrix is defective (its eigenvalues are all 1, its unit eigenvectors span only
+    the plane), so LAPACK may give two of them nearly parallel, and a normal crossed from them
+    is then off by a tenth of a radian. `shear_matrix` adds ``tan(angle) * direction ⊗ normal``
+    to the identity: the normal is that product's first right singular vector, and a point of
+    the plane the fixed point of the whole matrix with the largest ``w``, both found stably.
+    """
     m = _floats(matrix)
     m33 = m[:3, :3]
-    values, vectors = np.linalg.eig(m33)
-    unit = np.where(abs(np.real(values) - 1.0) < 1e-4)[0]
-    if len(unit) < 2:
+    values = np.linalg.eigvals(m33)
+    if np.count_nonzero(abs(np.real(values) - 1.0) < 1e-4) < 2:
         raise ValueError(f"No two linear independent eigenvectors found {values}")
-    rows = np.real(vectors[:, unit]).squeeze().T
-    longest = -1.0
-    normal: Any = None
-    for a, b in ((0, 1), (0, 2), (1, 2)):
-        cross = np.cross(rows[a], rows[b])
-        length = vector_norm(cross)
-        if length > longest:
-            longest = length
-            normal = cross
-    normal /= longest
-    direction = np.dot(m33 - np.identity(3), normal)
+    sheared = m33 - np.identity(3)
+    normal = np.linalg.svd(sheared)[2][0]
+    direction = np.dot(sheared, normal)
     slope = vector_norm(direction)
     direction /= slope
-    point = _eigenvector(m, 1.0, True, "no eigenvector corresponding to eigenvalue 1")
+    _, singular, rows = np.linalg.svd(m - np.identity(4))
+    fixed = rows[singular < 1e-8 * max(1.0, singular[0])]
+    if not len(fixed):
+        raise ValueError("no eigenvector corresponding to eigenvalue 1")
+    point = np.dot(fixed[:, 3], fixed)  # the fixed points' projection of (0, 0, 0, 1)
     return math.atan(slope), direction, _dehomogenized(point), normal
 
 
