@@ -14,7 +14,9 @@ libraries taking turns in each round:
   msgs/s delivered and messages lost (roscpp's publisher queues each message for its I/O
   thread and drops the oldest when its queue is full; rosx writes on the publishing thread);
 * ``latency``: Twists at 1 kHz, ``time.time()`` (the wall clock) before ``publish`` to the
-  callback, p50 and p99, the first sixth left out;
+  callback, p50 and p99, the first sixth left out; and the floor under them, a bare Python
+  sender and receiver over a Unix socket, the receiver with rosx's short time slice
+  (`bench_pubsub.run_floor`, ``unix-slice``): what this machine's wake-ups cost any library;
 * ``pingpong``: a Twist bounced between two nodes, each publishing from its callback: half of
   each round trip, p50 and p99;
 * ``image``: 1 MiB ``sensor_msgs/Image`` and ``cloud``: 10 MiB ``sensor_msgs/PointCloud2``,
@@ -54,6 +56,7 @@ from bench.bench_pubsub import (  # noqa: E402
     median,
     run_bulk_floor,
     run_case,
+    run_floor,
     spawn_worker,
     start_master,
 )
@@ -86,7 +89,7 @@ def cases(scale: float) -> list[Case]:
         Case("flood100", "Twist flood, queue_size=100", "twist", small, 100, 0.0, "rate",
              ("roscpp", "rosx", "rosx-tcp", *MIXED)),
         Case("latency", "Twist at 1 kHz, publish -> callback", "twist", latency, 100, 0.001,
-             "p50", SINGLE),
+             "p50", (*SINGLE, "floor")),
         Case("pingpong", "Twist ping-pong, one way (half a round trip)", "pingpong", latency,
              100, 0.0, "p50", SINGLE),
         Case("image", "1 MiB Image flood (queue unbounded / None)", "image", large // 5, None,
@@ -126,6 +129,8 @@ def with_checkout(contender: str, checkout: Path) -> str:
 def run_one(case: Case, contender: str, master: str) -> dict[str, float]:
     """One round of one contender in ``case``."""
     warmup = case.messages // 6 if case.key == "p50" else 0
+    if contender == "floor" and case.key == "p50":
+        return run_floor("unix-slice", case.messages, case.period, warmup)
     if contender == "floor":
         return run_bulk_floor(case.kind, case.messages)
     if case.kind == "pingpong":
