@@ -80,7 +80,9 @@ rospy.spin()
 
 CLIENT = """
 import json
+import os
 import time
+import xmlrpc.client
 import rospy
 import actionlib
 from actionlib.msg import TestAction, TestGoal
@@ -95,6 +97,17 @@ def wait(predicate, what):
     while not predicate():
         assert time.monotonic() < deadline, f"timed out waiting for {what()}"
         time.sleep(0.005)
+
+# wait_for_server trusts this side's view of the result topic; rospy's publisher lists the
+# connection a moment later (16 ms seen on a loaded machine), and a result published in
+# between is lost. So wait until the server itself lists this client as a subscriber.
+master = xmlrpc.client.ServerProxy(os.environ["ROS_MASTER_URI"])
+server = xmlrpc.client.ServerProxy(master.lookupNode("/scenario_client", "/scenario_server")[2])
+def served(ns):
+    rows = server.getBusInfo("/scenario_client")[2]
+    topics = {row[4] for row in rows if row[1] == "/scenario_client" and row[2] == "o"}
+    return {ns + "/result", ns + "/feedback"} <= topics
+wait(lambda: served("/goals"), lambda: "the server to list this client on /goals")
 
 report = {}
 for number, cancel_in in [(1, None), (2, 2), (3, 1), (4, None), (5, None)]:
@@ -122,6 +135,7 @@ for number, cancel_in in [(1, None), (2, 2), (3, 1), (4, None), (5, None)]:
 first = actionlib.SimpleActionClient("simple", TestAction)
 second = actionlib.SimpleActionClient("simple", TestAction)
 assert first.wait_for_server(rospy.Duration(30)) and second.wait_for_server(rospy.Duration(30))
+wait(lambda: served("/simple"), lambda: "the server to list this client on /simple")
 calls = []
 first.send_goal(TestGoal(1), lambda s, r: calls.append(["done", s, r.result]),
                 lambda: calls.append(["active"]))
