@@ -169,7 +169,7 @@ def test_left_and_right_turn_in_place(host: SimHost, make_node: Callable[[str], 
 def test_the_first_twist_after_start_moves_turtle1(host: SimHost) -> None:
     # start() returned (the fixture): turtlesim already listens, so nothing sent now is lost.
     assert host.cmd_vel is not None
-    assert "/turtlesim" in host.cmd_vel.publication.subscriber_ids()
+    assert "/turtlesim" in host.cmd_vel.subscriber_ids()
     wait_for(lambda: host.scenes.value is not None, what="the first scene")
     before = turtle1(host)
     host.drive(-2.0, 0.0)

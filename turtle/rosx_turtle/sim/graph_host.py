@@ -39,7 +39,7 @@ def await_subscriber(publisher: Publisher, callerid: str) -> None:
     pressed on a screen that came up quickly would be lost.
     """
     deadline = time.monotonic() + LINK_TIMEOUT
-    while callerid not in publisher.publication.subscriber_ids():
+    while callerid not in publisher.subscriber_ids():
         if time.monotonic() > deadline:
             return
         time.sleep(0.002)
