@@ -149,13 +149,16 @@ class OutgoingStream:
         self._head_sent = 0  # bytes of _pending[0] already written
         self._queued_since = 0  # frames queued since a queued frame last tried to write
         #: Holding frames back (see the contract): the question to the peer's socket, the
-        #: time of the last frame and the frames of its run, whether what `_pending` holds is
-        #: held (the socket is not full) and how many frames, whether the loop's timer runs.
+        #: time of the last frame and the frames of its run, how many frames are held, whether
+        #: the loop's timer runs.
         self._can_hold = unread is not None and HOLD_ENABLED
         self._unread = unread or _nothing_unread
         self._last_ns = 0
         self._run = 0
-        self._holding = False
+        #: Whether what `_pending` holds is held back (the socket is not full): the frame
+        #: last sent came less than `FLOOD_GAP_NS` after the one before, in a run of more
+        #: than `HOLD_RUN` such frames. Read without the lock by the publication.
+        self.holding = False
         self._held = 0
         self._hold_frames = min(HOLD_FRAMES, self._limit) if self._limit else HOLD_FRAMES
         self._ticking = False
@@ -170,8 +173,10 @@ class OutgoingStream:
 
     # -- any thread --------------------------------------------------------------------------
 
-    def send(self, frame: Frame) -> None:
-        """Queue ``frame`` for the peer (written at once when nothing else is waiting)."""
+    def send(self, frame: Frame, now: int = 0) -> None:
+        """Queue ``frame`` for the peer (written at once when nothing else is waiting);
+        ``now``, when given, is the time of its publishing (`time.perf_counter_ns`), read
+        once for this and the publication's hand-off (`rosx.node.slices.Handoff`)."""
         # acquire/release, not ``with``: a burst's first message runs this with the CPU's
         # caches cold, when less code is quicker (see `rosx.node.publication`).
         lock = self._lock
@@ -179,9 +184,9 @@ class OutgoingStream:
         try:
             if self.closed:
                 return
-            if self._holding:
+            if self.holding:
                 # A flood's usual frame, held with those before it (`_hold_locked`, inlined).
-                now = _clock()
+                now = now or _clock()
                 gap = now - self._last_ns
                 self._last_ns = now
                 if gap < FLOOD_GAP_NS:
@@ -197,7 +202,7 @@ class OutgoingStream:
                 # A pause: what was held goes, then this frame at once.
                 self._run = 0
                 self._release_locked(keep=False)
-            elif self._can_hold and self._hold_locked(frame):
+            elif self._can_hold and self._hold_locked(frame, now or _clock()):
                 return
             if self._pending:
                 self._enqueue_locked(frame)
@@ -224,10 +229,10 @@ class OutgoingStream:
         finally:
             lock.release()
 
-    def _hold_locked(self, frame: Frame) -> bool:
-        """Whether to start holding frames back with ``frame`` (see the module's contract):
-        a flood's run is long enough, and the peer has not read what it was sent."""
-        now = _clock()
+    def _hold_locked(self, frame: Frame, now: int) -> bool:
+        """Whether to start holding frames back with ``frame``, sent at ``now`` (see the
+        module's contract): a flood's run is long enough, and the peer has not read what it
+        was sent."""
         gap = now - self._last_ns
         self._last_ns = now
         if gap >= FLOOD_GAP_NS:
@@ -241,7 +246,7 @@ class OutgoingStream:
             return False
         self._pending.append(frame)
         self._pending_bytes += size
-        self._holding = True
+        self.holding = True
         self._held = 1
         if not self._ticking:
             self._ticking = True
@@ -255,10 +260,10 @@ class OutgoingStream:
         if self._pending and not self.closed:
             # The socket is full: the loop writes the rest when it can, as for any frames
             # the socket did not take.
-            self._holding = False
+            self.holding = False
             self._io.call_soon(self._start_writing)
         else:
-            self._holding = keep and not self.closed
+            self.holding = keep and not self.closed
 
     def _enqueue_locked(self, frame: Frame) -> None:
         # Frames already wait: this one joins them, then whatever the socket takes now goes.
@@ -304,7 +309,7 @@ class OutgoingStream:
         lock = self._lock
         lock.acquire()
         try:
-            if self._holding and not self.closed:
+            if self.holding and not self.closed:
                 self._last_ns = 0  # the next frame starts a run, as after a pause
                 self._release_locked(keep=False)
         finally:
@@ -368,7 +373,7 @@ class OutgoingStream:
         # after a tick without any (the next frame held starts it again).
         with self._lock:
             active = _clock() - self._last_ns < _HOLD_TICK_NS
-            if self._holding and not self.closed:
+            if self.holding and not self.closed:
                 self._release_locked(keep=active)
             self._ticking = active and not self.closed
         if self._ticking:

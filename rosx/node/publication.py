@@ -38,6 +38,7 @@ from __future__ import annotations
 import ipaddress
 import socket
 import threading
+import time
 from typing import TYPE_CHECKING
 
 from rosx.msg.codec.clone import clone
@@ -69,6 +70,9 @@ if TYPE_CHECKING:
 
         def unsubscribed(self, remaining: int) -> None:
             """A subscriber left; ``remaining`` are still connected."""
+
+
+_clock = time.perf_counter_ns
 
 
 def _on_this_machine(sock: socket.socket, peer: str) -> bool:
@@ -222,27 +226,39 @@ class Publication:
         # after it is sent (only what follows the send depends on it): a burst's first
         # message reaches the socket with one call less, cold.
         sole = self._sole
-        if sole is not None:
-            # One subscriber, no latch: `_frame_of` and `_send_frame` inlined, the bytes
-            # counted after the send.
-            if msg.__class__ is self._whole:
-                frame: Frame = msg._frame()
-                size = len(frame)
-            else:
-                frame = self._frame_of(msg)
-                size = frame_size(frame)
-            sole.send(frame)
-            lock = self._lock
-            lock.acquire()
-            try:
-                self.bytes_published += size
-            finally:
-                lock.release()
-        else:
+        if sole is None:
             self._send_frame(self._frame_of(msg))
+            handoff = self._handoff
+            if handoff is not None and self._nearby and handoff.start():
+                self._give_way()
+            return
+        # One subscriber, no latch: `_frame_of` and `_send_frame` inlined, the bytes counted
+        # after the send. For a subscriber on this machine the clock is read once, for the
+        # stream and the hand-off. A stream holding frames back after the send has had this
+        # frame less than `FLOOD_GAP_NS` after the one before, in a run of more than
+        # `HOLD_RUN` frames so spaced: the hand-off's run is past its burst, and the hand-off
+        # only notes the time (as `Handoff.start` would, minus a call a message in a flood).
+        if msg.__class__ is self._whole:
+            frame: Frame = msg._frame()
+            size = len(frame)
+        else:
+            frame = self._frame_of(msg)
+            size = frame_size(frame)
+        nearby = self._nearby
+        now = _clock() if nearby else 0
+        sole.send(frame, now)
+        lock = self._lock
+        lock.acquire()
+        try:
+            self.bytes_published += size
+        finally:
+            lock.release()
         handoff = self._handoff
-        if handoff is not None and self._nearby and handoff.start():
-            self._give_way()
+        if handoff is not None and nearby:
+            if sole.holding:
+                handoff.last = now
+            elif handoff.start(now=now):
+                self._give_way()
 
     def _publish_with_local(self, msg: Message) -> None:
         burst = self._burst()

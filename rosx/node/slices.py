@@ -150,21 +150,25 @@ class Handoff:
     count; nothing worse.
     """
 
-    __slots__ = ("_credit", "_last", "_run")
+    __slots__ = ("_credit", "_run", "last")
 
     def __init__(self) -> None:
-        self._last = _clock() - RUN_GAP_NS  # the first message starts a run
+        #: When the last message was counted, or the readers last had the CPU: a publisher
+        #: that knows its run goes on past `HANDOFF_RUN` (a stream holding a flood's frames,
+        #: `rosx.node.outgoing`) sets it instead of calling `start`.
+        self.last = _clock() - RUN_GAP_NS  # the first message starts a run
         self._run = 0
         self._credit = CREDIT_CAP_NS
 
-    def start(self, caught_up: Callable[[], bool] | None = None) -> bool:
+    def start(self, caught_up: Callable[[], bool] | None = None, now: int = 0) -> bool:
         """Count a message about to be published; whether it is one of the first
         `HANDOFF_RUN` of its run (a burst so far, not a flood). A pause starts a new run only
         if the subscribers have ``caught_up``: a publisher kept from the GIL by a callback of
-        its own process has not paused, its flood goes on."""
-        now = _clock()
-        gap = now - self._last
-        self._last = now
+        its own process has not paused, its flood goes on. ``now`` is the message's time
+        (`time.perf_counter_ns`) if the caller has read it."""
+        now = now or _clock()
+        gap = now - self.last
+        self.last = now
         if gap >= RUN_GAP_NS and (caught_up is None or caught_up()):
             self._run = 1
             self._credit = min(CREDIT_CAP_NS, self._credit + (gap >> _CREDIT_SHIFT))
@@ -188,4 +192,4 @@ class Handoff:
         # Longer than a reader takes: the CPU went to another program, or the callback is
         # slow. Either way the yields stop for a while.
         self._credit = -SLOW_PENALTY_NS if took > SLOW_YIELD_NS else self._credit - took
-        self._last = after  # the time the readers took is not a pause of the publisher's
+        self.last = after  # the time the readers took is not a pause of the publisher's

@@ -11,13 +11,15 @@ import os
 import socket
 import subprocess
 import sys
+import threading
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 
 from rosx.msg.codec.classes import get_message_class
-from rosx.node import Node, local, publication, slices, unixros
+from rosx.node import Node, local, outgoing, publication, slices, unixros
 from tests.support.procs import wait_for
 
 Twist = get_message_class("geometry_msgs/Twist")
@@ -44,7 +46,9 @@ class Scheduler:
 @pytest.fixture
 def sched(monkeypatch: pytest.MonkeyPatch) -> Scheduler:
     fake = Scheduler()
-    monkeypatch.setattr(slices, "_clock", fake.clock)
+    # Publications, streams and hand-offs all read this clock.
+    for module in (slices, publication, outgoing):
+        monkeypatch.setattr(module, "_clock", fake.clock)
     monkeypatch.setattr(slices, "_sched_yield", lambda: fake.sched_yield)
     return fake
 
@@ -151,6 +155,55 @@ def test_a_publication_gives_way_to_subscribers_on_this_machine_in_a_burst(
     assert got == [float(i) for i in range(20)]
     # Only the first 16 of a run are a burst; one of this process needs the GIL let go.
     assert given_way == [transport == "in-process"] * slices.HANDOFF_RUN
+
+
+@pytest.mark.parametrize("transport", ["UNIXROS", "TCPROS"])
+def test_a_flood_held_back_is_one_run_until_a_pause(
+    make_node: Callable[..., Node],
+    monkeypatch: pytest.MonkeyPatch,
+    sched: Scheduler,
+    given_way: list[bool],
+    transport: str,
+) -> None:
+    # Over a Unix socket the stream holds the flood's frames back while the reader is stuck
+    # in its callback, and the hand-off is then only told the time: the runs and bursts are
+    # those of every other link.
+    monkeypatch.setattr(local, "ENABLED", False)
+    monkeypatch.setattr(unixros, "ENABLED", transport == "UNIXROS")
+    talker, listener = make_node("flood_talker"), make_node("flood_listener")
+    got: list[int] = []
+    go_on = threading.Event()
+
+    def stuck(msg: Any) -> None:
+        go_on.wait(30)
+        got.append(int(msg.linear.x))
+
+    sub = listener.subscribe("/flood", Twist, stuck, queue_size=0)
+    pub = talker.advertise("/flood", Twist, queue_size=0)
+    wait_for(lambda: pub.get_num_connections() == 1 and sub.get_num_connections() == 1)
+    (link,) = talker.publications["/flood"].links
+    sent = iter(range(1000))
+
+    def publish(count: int) -> None:
+        for _ in range(count):
+            sched.now += 1_000  # a Python publisher's pace in a flood
+            msg = Twist()
+            msg.linear.x = float(next(sent))
+            pub.publish(msg)
+
+    sched.now += slices.RUN_GAP_NS
+    publish(300)  # 0.3 ms: longer than a pause that ends a run
+    assert link.stream.holding is (transport == "UNIXROS")
+    assert len(given_way) == slices.HANDOFF_RUN
+    sched.now += slices.RUN_GAP_NS - 1_001  # a short pause: the run goes on
+    publish(20)
+    assert len(given_way) == slices.HANDOFF_RUN
+    sched.now += slices.RUN_GAP_NS  # a pause: a new run, whose first messages are a burst
+    publish(20)
+    assert len(given_way) == 2 * slices.HANDOFF_RUN
+    go_on.set()
+    wait_for(lambda: len(got) == 340)
+    assert got == list(range(340))
 
 
 def test_a_subscriber_in_this_process_is_eager_during_a_burst_only(
