@@ -412,6 +412,14 @@ class OutgoingStream:
             return
         self.bytes_sent += sent
         self._pending_bytes -= sent
+        if not self._pending_bytes:
+            # Every byte went (a flood's held frames, usually): nothing to count one by one.
+            self.frames_sent += len(pending)
+            pending.clear()
+            self._head_sent = 0
+            if self._blocking:
+                self._drained.notify_all()
+            return
         sent += self._head_sent
         while pending:
             first = pending[0]
