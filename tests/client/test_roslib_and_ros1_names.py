@@ -41,8 +41,14 @@ def test_teleop_twist_keyboard_publishes_twist_for_its_keys(
     listener = make_node("/base")
     subscriber = listener.subscribe("/cmd_vel", Twist, twists.append)
     main_fd, terminal_fd = pty.openpty()
+    # Its README's own parameters, which make it wait for each key rather than look every
+    # half second (each look starts by discarding what was typed, so a key typed as one look
+    # ends is lost, on a slow machine now and then) and send its twist again ten times a
+    # second (a key read while it was still sending the last twist is otherwise sent only
+    # with the next key).
     process = subprocess.Popen(
-        [sys.executable, "-m", "rosx_commands", "run-script", str(script)],
+        [sys.executable, "-m", "rosx_commands", "run-script", str(script),
+         "_key_timeout:=600", "_repeat_rate:=10.0"],
         stdin=terminal_fd, stdout=terminal_fd, stderr=terminal_fd,
         env=clean_environ(ROS_MASTER_URI=master), start_new_session=True,
     )  # fmt: skip
@@ -59,7 +65,8 @@ def test_teleop_twist_keyboard_publishes_twist_for_its_keys(
 
     def reading_keys() -> bool:
         # The script puts its terminal in raw mode (discarding what was typed) each time it
-        # waits for a key, and back between keys: a key typed between two waits is lost.
+        # waits for a key, and back between keys: a key typed between two waits is lost. The
+        # discarding comes first, so a key typed once the raw mode shows is read.
         return not termios.tcgetattr(terminal_fd)[3] & termios.ICANON
 
     def key(keys: bytes, twist: tuple[float, ...]) -> None:
@@ -80,7 +87,8 @@ def test_teleop_twist_keyboard_publishes_twist_for_its_keys(
         key(b"I", (0.55, 0.0, 0.0, 0.0, 0.0, 0.0))
         os.write(main_fd, b"\x03")
         assert process.wait(15) == 0
-        assert _vector(twists[-1]) == (0.0,) * 6  # it stops the robot as it leaves
+        # it stops the robot as it leaves
+        wait_for(lambda: _vector(twists[-1]) == (0.0,) * 6, what="the stopping twist")
     except TimeoutError as error:
         raise AssertionError(f"the script printed {bytes(seen)!r}") from error
     finally:
