@@ -32,11 +32,12 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
   is asked every `PROBE_EVERY` frames), so a lone message, a ping-pong and a burst the reader
   keeps up with are written at once, as above. What is held goes out every `PROBE_EVERY`
   frames if the peer has read what it had, once `HOLD_FRAMES` frames or `HOLD_BYTES` bytes
-  wait, with a frame of `HOLD_SIZE` bytes or more, with the first frame after a pause (that
-  frame goes at once, and holding stops), by `close`, and at the latest `HOLD_TICK` seconds
-  later (the I/O loop writes it if the publisher has stopped), or by `OutgoingStream.flush`
-  (what another topic's next message must not overtake): the same bytes in the same order. A
-  bounded queue holds no more than its size, so holding drops nothing.
+  wait, with a frame of `HOLD_SIZE` bytes or more, with the first frame after a pause or in
+  parts (that frame goes as it would unheld, and holding stops), by `close`, and at the
+  latest `HOLD_TICK` seconds later (the I/O loop writes it if the publisher has stopped), or
+  by `OutgoingStream.flush` (what another topic's next message must not overtake): the same
+  bytes in the same order. A bounded queue holds no more than its size, so holding drops
+  nothing.
 
 What this module must not know: topics, message types, headers. It moves frames.
 """
@@ -52,7 +53,7 @@ from collections import deque
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from collections.abc import Callable
+    from collections.abc import Callable, Iterable
 
     from rosx.transport.loop_thread import LoopThread
 
@@ -186,12 +187,13 @@ class OutgoingStream:
                 return
             if self.holding:
                 # A flood's usual frame, held with those before it (`_hold_locked`, inlined).
+                # Only whole frames are held: a frame in parts ends the run as a pause does.
                 now = now or _clock()
                 gap = now - self._last_ns
                 self._last_ns = now
-                if gap < FLOOD_GAP_NS:
+                if gap < FLOOD_GAP_NS and frame.__class__ is bytes:
                     self._pending.append(frame)
-                    size = len(frame) if frame.__class__ is bytes else frame_size(frame)
+                    size = len(frame)
                     held_bytes = self._pending_bytes = self._pending_bytes + size
                     held = self._held = self._held + 1
                     if held >= self._hold_frames or held_bytes >= HOLD_BYTES or size >= HOLD_SIZE:
@@ -241,7 +243,9 @@ class OutgoingStream:
         run = self._run = self._run + 1
         if run < HOLD_RUN or run % PROBE_EVERY or self._pending or self._hold_frames < 2:
             return False
-        size = len(frame) if frame.__class__ is bytes else frame_size(frame)
+        if frame.__class__ is not bytes:
+            return False
+        size = len(frame)
         if size >= HOLD_SIZE or not self._unread():
             return False
         self._pending.append(frame)
@@ -255,7 +259,9 @@ class OutgoingStream:
 
     def _release_locked(self, *, keep: bool) -> None:
         """Write the held frames; go on holding if ``keep`` (and the socket took them all)."""
-        self._flush_locked()
+        # While holding, the queue holds only whole frames (`bytes`), none of them half
+        # sent, and fewer than `_MAX_IOV`: `sendmsg` takes the queue as it is.
+        self._flush_locked(held=True)
         self._held = 0
         if self._pending and not self.closed:
             # The socket is full: the loop writes the rest when it can, as for any frames
@@ -390,19 +396,24 @@ class OutgoingStream:
             if self.closed or not self._pending:
                 self._io.loop.remove_writer(self.fileno)
 
-    def _flush_locked(self) -> None:
-        """Write as many queued frames as the socket takes, in one ``sendmsg`` (any thread)."""
+    def _flush_locked(self, *, held: bool = False) -> None:
+        """Write as many queued frames as the socket takes, in one ``sendmsg`` (any thread);
+        ``held``: the queue is frames held back (see `_release_locked`)."""
         pending = self._pending
-        head = self._head_sent
-        buffers: list[bytes | memoryview] = []
-        for frame in pending:
-            if len(buffers) >= _MAX_IOV:
-                break
-            if frame.__class__ is bytes and not head:
-                buffers.append(frame)
-            else:
-                buffers.extend(_unsent(frame, head))
-            head = 0
+        buffers: Iterable[bytes | memoryview]
+        if held:
+            buffers = pending  # type: ignore[assignment]  # whole frames only
+        else:
+            head = self._head_sent
+            buffers = []
+            for frame in pending:
+                if len(buffers) >= _MAX_IOV:
+                    break
+                if frame.__class__ is bytes and not head:
+                    buffers.append(frame)
+                else:
+                    buffers.extend(_unsent(frame, head))
+                head = 0
         try:
             sent = self.sock.sendmsg(buffers)
         except (BlockingIOError, InterruptedError):

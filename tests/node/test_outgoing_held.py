@@ -134,6 +134,41 @@ def test_a_large_frame_is_never_held_and_takes_the_held_ones_along(
     stream.close()
 
 
+def test_a_small_frame_in_parts_is_never_held_and_ends_the_holding(
+    io: LoopThread,
+    pair: tuple[socket.socket, socket.socket],
+    clock: Clock,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)
+    mine, peer = pair
+    stream = stream_of(mine, io)
+    sent: list[bytes | tuple[bytes, ...]] = [twist_frame(n) for n in range(30)]
+    for item in sent:
+        stream.send(item)
+    assert stream.holding
+    whole = twist_frame(30)
+    small = (whole[:8], whole[8:])  # in parts, though small
+    sent.append(small)
+    stream.send(small)
+    assert (stream.holding, stream.queued) == (False, 0)
+    # The flood goes on: holding would start again with the 16th frame of the new run (46),
+    # but not with a frame in parts; it starts later, and each frame in parts ends it.
+    held_again = 0
+    for number in range(31, 80):
+        in_parts = number in (46, 60, 70)
+        item = (twist_frame(number)[:8], bytes(44)) if in_parts else twist_frame(number)
+        sent.append(item)
+        stream.send(item)
+        if isinstance(item, tuple):
+            assert (stream.holding, stream.queued) == (False, 0)
+        held_again += stream.holding
+    assert held_again
+    stream.close()
+    expected = [item if isinstance(item, bytes) else b"".join(item) for item in sent]
+    assert read_frames(peer, len(sent)) == expected
+
+
 def test_closing_writes_what_is_held(
     io: LoopThread,
     pair: tuple[socket.socket, socket.socket],
