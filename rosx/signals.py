@@ -2,7 +2,14 @@
 
 Python runs a signal handler in the main thread only, between two bytecodes, so every helper
 here installs nothing when called from another thread, and a handler never waits for a lock
-(it hands long work to a thread, or sets a flag the program polls):
+(it hands long work to a thread, or sets a flag the program polls). Between two bytecodes the
+main thread may hold any lock, an event's own among them while it waits on that event: a
+handler that took it would wait forever, and one that raised there would leave it held (the
+exception may come between the lock's acquiring and the ``with`` that releases it). So
+handlers here neither raise into threading code nor set events themselves:
+
+- `soon`: a handler's work that takes locks (setting an event, waking a waiter), done on a
+  thread of its own.
 
 - `handling`: while a block runs, a function of rosx's takes the given signals; the previous
   handlers come back after. How the tools stop on Ctrl-C and SIGTERM (``rosbag record/play``,
@@ -70,8 +77,16 @@ def stop_on_signals(signals: Iterable[int] = STOP_SIGNALS) -> Iterator[threading
     import threading  # noqa: PLC0415 - as in `_main_thread`
 
     stop = threading.Event()
-    with handling(signals, lambda signum: stop.set()):
+    with handling(signals, lambda signum: soon(stop.set)):
         yield stop
+
+
+def soon(work: Callable[[], object]) -> None:
+    """Run ``work`` now on a thread of its own: what a signal handler does that takes a lock
+    (see the module's notes). The thread is started without `threading`'s own locks."""
+    import _thread  # noqa: PLC0415 - as in `_main_thread`
+
+    _thread.start_new_thread(work, ())
 
 
 def install_signal_handlers(
@@ -137,6 +152,7 @@ __all__ = [
     "handling",
     "install_signal_handlers",
     "interrupt_on_sigint",
+    "soon",
     "stop_on_signals",
     "wait",
 ]

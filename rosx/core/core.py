@@ -8,7 +8,7 @@ starts the ``/rosout`` node. It listens where ``ROS_IP``/``ROS_HOSTNAME`` say (l
 otherwise) and names itself by them in its URI.
 
 The core runs until `Core.stop`. A ``shutdown`` call to the master does not stop it: it ends
-`Core.wait`, and the owner decides, as roscore does. `start` and `stop` may be called from
+`Core.wait` (as `Core.interrupt` does), and the owner decides, as roscore does. `start` and `stop` may be called from
 any thread but the event loop's, and `stop` from several at once: it returns once the port is
 free. Printing, signals and exit codes belong to the program that owns the core.
 """
@@ -100,6 +100,10 @@ class Core:
         """
         wait(self._ended, timeout)
         return self._shutdown_message
+
+    def interrupt(self) -> None:
+        """End `wait` now (it returns None) with the core still running: its owner stops it."""
+        self._ended.set()
 
     def stop(self) -> None:
         """Stop ``/rosout`` and the master (idempotent); the port is free when it returns."""

@@ -8,6 +8,7 @@ would never run one that another thread took, and Ctrl-C would do nothing (it ha
 from __future__ import annotations
 
 import signal
+import subprocess
 import sys
 import threading
 import time
@@ -66,6 +67,27 @@ def test_a_node_waiting_for_shutdown_shuts_down_on_such_a_signal(master: str) ->
     finally:
         signal.signal(signal.SIGUSR2, before)
         node.shutdown("test over")
+
+
+# The main thread takes the event's own lock, as its wait does at times, and a signal's handler
+# runs there, between two bytecodes: setting the event in the handler would wait forever.
+HANDLER_UNDER_THE_LOCK = """
+import os, signal
+from rosx.signals import stop_on_signals, wait
+with stop_on_signals([signal.SIGUSR1]) as stop:
+    with stop._cond:
+        os.kill(os.getpid(), signal.SIGUSR1)
+        print("handled", flush=True)
+    print("stopped", wait(stop, 30), flush=True)
+"""
+
+
+def test_a_handler_that_runs_while_the_main_thread_holds_the_events_lock_still_stops_it() -> None:
+    done = subprocess.run(
+        [sys.executable, "-c", HANDLER_UNDER_THE_LOCK],
+        capture_output=True, text=True, timeout=PATIENCE, check=False,
+    )  # fmt: skip
+    assert (done.stdout, done.returncode) == ("handled\nstopped True\n", 0)
 
 
 def test_a_timed_wait_still_times_out() -> None:

@@ -315,10 +315,10 @@ def _run(player: Player, options: optparse.Values, env: Environment) -> int:
             env.stdout.flush()
         player.run()
 
-    from rosx.signals import STOP_SIGNALS, handling  # noqa: PLC0415 - signal handling only where it is set up
+    from rosx.signals import STOP_SIGNALS, handling, soon  # noqa: PLC0415 - signal handling only where it is set up
 
     worker = threading.Thread(target=play, name="rosx-play", daemon=True)
-    with handling(STOP_SIGNALS, lambda signum: player.stop()), _keys(player, env):
+    with handling(STOP_SIGNALS, lambda signum: soon(player.stop)), _keys(player, env):
         worker.start()
         while worker.is_alive():
             worker.join(0.1)

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, TextIO
 from rosx.core import Core, PortInUseError
 from rosx.core.params import ROSDISTRO, ROSVERSION
 from rosx.master.defaults import master_uri
-from rosx.signals import STOP_SIGNALS, handling
+from rosx.signals import STOP_SIGNALS, handling, soon
 from rosx.terminal import is_terminal
 from rosx.transport.address import address_warnings, foreign_address_warning, is_local_host
 from rosx.wire.xmlrpc_http import parse_http_uri
@@ -119,18 +119,16 @@ def _print_stopping(out: _Printer, message: str | None) -> None:
     out.line("shutting down processing monitor...")
 
 
-class _Stop(BaseException):
-    """Raised by a stop signal in the main thread while it waits for the core."""
-
-
 class _StopSignals:
     """SIGINT and SIGTERM stop roscore from the moment it starts. One that comes while the core
     starts or the summary prints is kept until `wait`, so roscore's start-up lines and its
-    shutdown lines are always printed whole."""
+    shutdown lines are always printed whole. The handler notes the signal and has a thread of
+    its own end the core's wait (`rosx.signals.soon`): raised into the main thread as it waits,
+    an exception may leave the wait's lock held, and roscore hung as it stopped."""
 
-    def __init__(self) -> None:
+    def __init__(self, core: Core) -> None:
         self.received = False
-        self._waiting = False
+        self._core = core
         self._handling = handling(STOP_SIGNALS, self._handle)
 
     def __enter__(self) -> _StopSignals:
@@ -142,19 +140,13 @@ class _StopSignals:
 
     def _handle(self, signum: int) -> None:
         self.received = True
-        if self._waiting:
-            raise _Stop
+        soon(self._core.interrupt)
 
-    def wait(self, core: Core) -> str | None:
+    def wait(self) -> str | None:
         """Wait for a stop signal or a ``shutdown`` call; the call's message (None for a
         signal)."""
-        self._waiting = True
-        try:
-            return None if self.received else core.wait()
-        except _Stop:
-            return None
-        finally:
-            self._waiting = False
+        message = self._core.wait()
+        return None if self.received else message
 
 
 def run_roscore(
@@ -192,14 +184,14 @@ def run_roscore(
     core = Core(port, environ)
     announce_run_log(environ, core.run_id, out=out.line, err=out.error)
     out.title("roscore")
-    with _StopSignals() as signals:
+    with _StopSignals(core) as signals:
         try:
             core.start()
         except PortInUseError as refused:
             return _refuse(out, refused)
         try:
             _print_started(out, core)
-            _print_stopping(out, signals.wait(core))
+            _print_stopping(out, signals.wait())
         finally:
             core.stop()
     out.line("... shutting down processing monitor complete")
