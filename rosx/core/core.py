@@ -8,9 +8,10 @@ starts the ``/rosout`` node. It listens where ``ROS_IP``/``ROS_HOSTNAME`` say (l
 otherwise) and names itself by them in its URI.
 
 The core runs until `Core.stop`. A ``shutdown`` call to the master does not stop it: it ends
-`Core.wait` (as `Core.interrupt` does), and the owner decides, as roscore does. `start` and `stop` may be called from
-any thread but the event loop's, and `stop` from several at once: it returns once the port is
-free. Printing, signals and exit codes belong to the program that owns the core.
+`Core.wait` (as `Core.interrupt` does), and the owner decides, as roscore does. `start` and
+`stop` may be called from any thread but the event loop's, and `stop` from several at once: it
+returns once the port is free. Printing, signals and exit codes belong to the program that owns
+the core.
 """
 
 from __future__ import annotations
