@@ -101,7 +101,7 @@ def _port(text: str) -> int:
 def _serve(settings: BridgeOptions, env: Environment) -> int:
     from rosx.bridge.app import BadParameterError, Bridge  # noqa: PLC0415 - not for -h or usage errors
     from rosx.node import install_signal_handlers  # noqa: PLC0415 - with the bridge
-    from rosx.signals import wait  # noqa: PLC0415 - with the bridge
+    from rosx.signals import soon, wait  # noqa: PLC0415 - with the bridge
 
     bridge = Bridge(settings, log=env.out)
     try:
@@ -118,7 +118,8 @@ def _serve(settings: BridgeOptions, env: Environment) -> int:
         env.err(f"Unable to start the bridge on {where}: {why[:1].lower()}{why[1:]}")
         return 1
     stop = threading.Event()
-    install_signal_handlers(lambda reason: stop.set())
+    # The handler neither sets the event nor raises into the wait (see `rosx.signals`).
+    install_signal_handlers(lambda reason: soon(stop.set), quiet=True)
     bridge.node.on_shutdown(lambda reason: stop.set())
     try:
         wait(stop)
@@ -198,6 +199,7 @@ def rosapi_node(argv: Sequence[str], env: Environment | None = None) -> int:
 def _run_rosapi(options: BridgeOptions, env: Environment) -> int:
     from rosx.bridge.rosapi import RosApi  # noqa: PLC0415 - the program's own import
     from rosx.node import Node, install_signal_handlers  # noqa: PLC0415 - the program's own import
+    from rosx.signals import soon  # noqa: PLC0415 - the program's own import
 
     node = Node(
         options.node_name,
@@ -205,7 +207,7 @@ def _run_rosapi(options: BridgeOptions, env: Environment) -> int:
         environ=env.environ,
         remappings=options.remappings,
     ).start()
-    install_signal_handlers(node.shutdown)
+    install_signal_handlers(lambda reason: soon(lambda: node.shutdown(reason)), quiet=True)
     RosApi(node).advertise()
     try:
         node.wait_for_shutdown()
