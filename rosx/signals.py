@@ -4,12 +4,11 @@ Python runs a signal handler in the main thread only, between two bytecodes, so 
 here installs nothing when called from another thread, and a handler never waits for a lock
 (it hands long work to a thread, or sets a flag the program polls). Between two bytecodes the
 main thread may hold any lock, an event's own among them while it waits on that event: a
-handler that took it would wait forever, and one that raised there would leave it held (the
-exception may come between the lock's acquiring and the ``with`` that releases it). So
-handlers here neither raise into threading code nor set events themselves:
-
-- `soon`: a handler's work that takes locks (setting an event, waking a waiter), done on a
-  thread of its own.
+handler that took it would wait forever, and one that raised there could leave it held (the
+exception may come between the lock's acquiring and the ``with`` that releases it). So a
+handler that may run while the program waits sets no event itself and raises nothing: it hands
+such work to `soon`. (Python's own SIGINT handler raises `KeyboardInterrupt` anywhere; the
+tools that let it, as ROS 1's do, exit after it.)
 
 - `handling`: while a block runs, a function of rosx's takes the given signals; the previous
   handlers come back after. How the tools stop on Ctrl-C and SIGTERM (``rosbag record/play``,
@@ -20,6 +19,8 @@ handlers here neither raise into threading code nor set events themselves:
   Python's, which raises `KeyboardInterrupt`; rospy keeps it from the program).
 - `interrupt_on_sigint`: SIGINT raises `KeyboardInterrupt` even in a process that started with it
   ignored, as ROS 1's tools stop on ``kill -INT``.
+- `soon`: a handler's work that takes locks (setting an event, shutting a node down), done on
+  a thread of its own.
 - `wait`: how the main thread waits for an event while other threads run. The kernel may hand a
   signal to any thread; one that lands on another thread only marks Python's handler as due,
   and a main thread asleep in an untimed wait never wakes to run it (Ctrl-C then does
