@@ -112,33 +112,19 @@ def test_a_frame_after_a_pause_goes_at_once_with_what_was_held(
     stream.close()
 
 
-def test_a_large_frame_is_never_held_and_takes_the_held_ones_along(
+@pytest.mark.parametrize(
+    "in_parts",
+    [
+        pytest.param((struct.pack("<II", 8000, 30), bytes(7996)), id="large, as an image's"),
+        pytest.param((twist_frame(30)[:8], twist_frame(30)[8:]), id="small"),
+    ],
+)
+def test_a_frame_in_parts_is_never_held_and_takes_the_held_ones_along(
     io: LoopThread,
     pair: tuple[socket.socket, socket.socket],
     clock: Clock,
     monkeypatch: pytest.MonkeyPatch,
-) -> None:
-    monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)
-    mine, peer = pair
-    stream = stream_of(mine, io)
-    sent: list[bytes | tuple[bytes, ...]] = [twist_frame(n) for n in range(30)]
-    for item in sent:
-        stream.send(item)
-    assert stream.queued
-    large = (struct.pack("<II", 8000, 30), bytes(7996))  # in parts, as an image's
-    sent.append(large)
-    stream.send(large)
-    assert stream.queued == 0
-    expected = [item if isinstance(item, bytes) else b"".join(item) for item in sent]
-    assert read_frames(peer, len(sent)) == expected
-    stream.close()
-
-
-def test_a_small_frame_in_parts_is_never_held_and_ends_the_holding(
-    io: LoopThread,
-    pair: tuple[socket.socket, socket.socket],
-    clock: Clock,
-    monkeypatch: pytest.MonkeyPatch,
+    in_parts: tuple[bytes, ...],
 ) -> None:
     monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)
     mine, peer = pair
@@ -147,20 +133,18 @@ def test_a_small_frame_in_parts_is_never_held_and_ends_the_holding(
     for item in sent:
         stream.send(item)
     assert stream.holding
-    whole = twist_frame(30)
-    small = (whole[:8], whole[8:])  # in parts, though small
-    sent.append(small)
-    stream.send(small)
+    sent.append(in_parts)
+    stream.send(in_parts)
     assert (stream.holding, stream.queued) == (False, 0)
     # The flood goes on: holding would start again with the 16th frame of the new run (46),
     # but not with a frame in parts; it starts later, and each frame in parts ends it.
     held_again = 0
     for number in range(31, 80):
-        in_parts = number in (46, 60, 70)
-        item = (twist_frame(number)[:8], bytes(44)) if in_parts else twist_frame(number)
+        split = number in (46, 60, 70)
+        item = (twist_frame(number)[:8], bytes(44)) if split else twist_frame(number)
         sent.append(item)
         stream.send(item)
-        if isinstance(item, tuple):
+        if split:
             assert (stream.holding, stream.queued) == (False, 0)
         held_again += stream.holding
     assert held_again
