@@ -338,6 +338,10 @@ class IncomingStream:
             pending = self._reader.pending()
             if pending >= _DIRECT:
                 return self._read_large(sock, pending)
+            if not pending and self._reader.buffered >= 4:
+                # A length out of bounds behind frames already handed over (`read_on`): the
+                # stream ends now, not once the publisher sends more.
+                return self.take_frames()
         try:
             size = sock.recv_into(scratch)
         except (BlockingIOError, InterruptedError):
@@ -374,9 +378,16 @@ class IncomingStream:
         view = self.view
         reader.feed(view[:size])
         total = size
+        taken: list[bytes] = []
         while size == RECV_SIZE and _DONTWAIT and total < _READ_BOUND:
             if reader.pending() >= _DIRECT:
                 break  # the rest of that frame goes straight into its own buffer
+            # The frames read so far are taken before the next read: the reader then holds
+            # at most a frame's head to join with it, never a backlog to copy again and again.
+            try:
+                taken += reader.frames()
+            except ProtocolError:
+                break  # reported below, once the frames before it are taken
             try:
                 size = sock.recv_into(self.scratch, 0, _DONTWAIT)
             except (BlockingIOError, InterruptedError):
@@ -387,7 +398,7 @@ class IncomingStream:
                 break  # deliver what came; the next read sees the end
             total += size
             reader.feed(view[:size])
-        frames = self.take_frames()
+        frames = self.take_frames(taken)
         self.bytes_received += total  # after the frames: a drain reads the bytes first
         return frames
 
@@ -514,13 +525,19 @@ class IncomingStream:
         spare = self._spare = bytearray(size)
         return spare
 
-    def take_frames(self) -> Sequence[Received] | None:
-        """The complete frames buffered so far (``None``: the stream is out of sync)."""
+    def take_frames(self, taken: list[bytes] | None = None) -> Sequence[Received] | None:
+        """The complete frames buffered so far, after those ``taken`` from the reader already
+        and not yet counted (``None``: the stream is out of sync, and nothing was taken)."""
         try:
             frames = self._reader.frames()
         except ProtocolError as exc:
-            self._report(f"dropping connection to [{self.publisher_uri}]: {exc}")
-            return None
+            if not taken:
+                self._report(f"dropping connection to [{self.publisher_uri}]: {exc}")
+                return None
+            frames = []  # the next read finds it again, after these are delivered
+        if taken:
+            taken += frames
+            frames = taken
         if frames:
             self.frames_received += len(frames)
             if self.latching:

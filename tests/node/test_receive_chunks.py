@@ -10,6 +10,7 @@ byte sent before sending the next piece.
 from __future__ import annotations
 
 import contextlib
+import re
 import socket
 import threading
 from collections.abc import Callable, Iterator
@@ -20,7 +21,7 @@ import pytest
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.msg.codec.message import serialize_frame
-from rosx.node import Node, rosout, subscription
+from rosx.node import Node, incoming, rosout, subscription
 from rosx.transport.client import call
 from rosx.wire.framing import FrameReader
 from rosx.wire.header import decode_header, encode_header
@@ -179,6 +180,53 @@ def test_a_message_right_behind_the_header_is_read_and_counted(
     ):
         wait_for(lambda: got == ["first"])
         assert bytes_read(node, topic)() == len(frame)
+
+
+@pytest.mark.parametrize("ending", ["open", "out of sync"])
+def test_a_backlog_taken_in_many_reads_arrives_whole_and_in_order(
+    make_node: Callable[..., Node], master: str, monkeypatch: pytest.MonkeyPatch, ending: str
+) -> None:
+    """What waits in the socket while a callback runs is read in one go, read after read
+    (`rosx.node.incoming`, its reads made small here so the backlog takes many), its frames
+    cut anywhere by the reads: each arrives whole, in order, counted once. A length out of
+    bounds at its end drops the connection once the frames before it are delivered, at once
+    and with one line, not when the publisher next sends."""
+    monkeypatch.setattr(incoming, "RECV_SIZE", 1024)
+    topic = "/backlog"
+    lines: list[tuple[int, str]] = []
+    node = make_node("backlog_listener", console=lambda level, line: lines.append((level, line)))
+    got: list[str] = []
+    release = threading.Event()
+
+    def callback(msg: Any) -> None:
+        got.append(msg.data)
+        if msg.data == "first":
+            release.wait(30)  # the reader is busy: the backlog waits in the socket
+
+    with fed_by_a_bare_publisher(node, master, topic, String, callback) as (sub, conn):
+        read = bytes_read(node, topic)
+        wait_for(lambda: sub.get_num_connections() == 1)
+        first = serialize_frame(String(data="first"))
+        conn.sendall(first)
+        wait_for(lambda: got == ["first"])
+        texts = [f"{n:03d}" + "x" * (n * 37 % 700) for n in range(120)]
+        backlog = b"".join(serialize_frame(String(data=text)) for text in texts)
+        conn.sendall(backlog + (b"\xff\xff\xff\xff junk" if ending == "out of sync" else b""))
+        release.set()
+        wait_for(lambda: len(got) == 1 + len(texts), what="the backlog")
+        assert got == ["first", *texts]
+        if ending == "open":
+            wait_for(lambda: read() == len(first) + len(backlog))
+        else:
+            assert conn.recv(1) == b""  # the subscriber closed its end
+            errors = [line for level, line in lines if level == rosout.ERROR]
+            assert len(errors) == 1
+            assert re.fullmatch(
+                r"\[ERROR\] \[\d+\.\d+\]: \[/backlog\] dropping connection to "
+                r"\[http://127\.0\.0\.1:\d+/\]: frame of 4294967295 bytes exceeds the limit of "
+                r"1000000000 bytes; the peer is out of sync or sends more than this side accepts",
+                errors[0],
+            )
 
 
 def send_each(conn: socket.socket, read: Callable[[], int], texts: str) -> None:
