@@ -213,8 +213,13 @@ def test_a_backlog_taken_in_many_reads_arrives_whole_and_in_order(
         texts = [f"{n:03d}" + "x" * (2500 if n % 16 == 5 else n * 37 % 300) for n in range(80)]
         backlog = b"".join(serialize_frame(String(data=text)) for text in texts)
         # Out of sync: a length no frame has, then a few bytes or more than two reads' worth.
-        junk = {"open": b"", "out of sync": b" junk", "out of sync, then more": b"junk" * 1024}
-        conn.sendall(backlog + (b"\xff\xff\xff\xff" if junk[ending] else b"") + junk[ending])
+        bad = b"\xff\xff\xff\xff"
+        behind = {
+            "open": b"",
+            "out of sync": bad + b" junk",
+            "out of sync, then more": bad + b"junk" * 1024,
+        }
+        conn.sendall(backlog + behind[ending])
         release.set()
         wait_for(lambda: len(got) == 1 + len(texts), what="the backlog")
         assert got == ["first", *texts]
