@@ -14,6 +14,7 @@ rospy keeps one node per process in module globals; so does this layer, in `CLIE
 
 from __future__ import annotations
 
+import functools
 import os
 import sys
 import threading
@@ -30,6 +31,7 @@ from rosx.names import (
     resolve,
     ros_namespace,
 )
+from rosx.signals import soon
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -59,6 +61,8 @@ class Client:
         self.finished = threading.Event()
         self.requested = False
         self.shutdown_reason = ""
+        #: The reason of the first stopping signal (`shutdown_in_background`), or "".
+        self.signalled = ""
         self.client_hooks: list[Callable[[], object]] = []
         self.pending: list[Attachable] = []
         self._args: RemapArgs | None = None
@@ -234,15 +238,17 @@ class Client:
             self.finished.set()
 
     def shutdown_in_background(self, reason: str) -> None:
-        """`signal_shutdown` on a thread of its own (from a signal handler, which may have
-        interrupted code holding a lock the shutdown needs); the interpreter waits for it."""
-        threading.Thread(
-            target=self.signal_shutdown, args=(reason,), name="rosx-shutdown", daemon=False
-        ).start()
+        """`signal_shutdown` from a signal handler, which may have interrupted code holding any
+        lock, `threading`'s own among them: it runs on a thread started without them
+        (`rosx.signals.soon`). The reason is noted at once, without a lock: an exit that comes
+        before that thread has run shuts down for the signal, not for the exit."""
+        if not self.signalled:
+            self.signalled = reason
+        soon(functools.partial(self.signal_shutdown, reason))
 
     def at_exit(self) -> None:
         """The interpreter is exiting: shut down, or wait for the shutdown under way."""
-        self.signal_shutdown("atexit")
+        self.signal_shutdown(self.signalled or "atexit")
         self.finished.wait(_EXIT_WAIT)
 
 

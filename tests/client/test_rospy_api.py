@@ -19,6 +19,7 @@ from typing import Any
 
 import pytest
 
+from rosx.client import state
 from rosx.client.script import SHIM_DIR
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node
@@ -262,3 +263,24 @@ def test_a_log_argument_gets_rospys_log_file(
     assert len(lines) == len(patterns), lines
     for line, pattern in zip(lines, patterns, strict=True):
         assert re.fullmatch(pattern, line), line
+
+
+def test_an_exit_before_a_signals_shutdown_has_run_still_logs_the_signal(
+    rospy: ModuleType, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # A stopping signal's handler hands the shutdown to a thread (`rosx.signals.soon`); the
+    # script may end before that thread runs. rospy shuts down in the handler itself: its log
+    # names the signal, and so does this one.
+    log = tmp_path / "listener-1.log"
+    monkeypatch.setattr(sys, "argv", ["script.py", f"__log:={log}"])
+    rospy.init_node("listener", disable_signals=True)
+    handed: list[Callable[[], object]] = []
+    monkeypatch.setattr(state, "soon", handed.append)  # the thread, not run yet
+    state.CLIENT.shutdown_in_background("signal-15")  # what the SIGTERM handler calls
+    assert (len(handed), rospy.is_shutdown()) == (1, False)
+    state.CLIENT.at_exit()  # the interpreter's exit comes first
+    handed[0]()  # then the signal's thread: the node is down already
+    assert rospy.is_shutdown()
+    wait_for(lambda: "signal_shutdown" in log.read_text(), what="the shutdown line")
+    shutdowns = [line for line in log.read_text().splitlines() if "signal_shutdown" in line]
+    assert [line.split(": ", 1)[1] for line in shutdowns] == ["signal_shutdown [signal-15]"]

@@ -10,11 +10,13 @@ import os
 import signal
 import subprocess
 import sys
+import threading
 from pathlib import Path
 
 import pytest
 
 from rosx.client.script import SHIM_DIR
+from rosx.master.client import MasterClient
 from rosx_commands.scripts import shim_dirs
 from tests.support.cli import clean_environ
 from tests.support.ros1 import needs_ros1, ros1_python, ros1_python_imports, ros1_python_with_path
@@ -178,6 +180,54 @@ def test_init_node_waits_for_the_master_as_rospy_does(tmp_path: Path) -> None:
         "master may not be running yet. Will keep trying.\n"
     )
     assert process.returncode == 0
+
+
+HELD_WHEN_SIGNALLED = """\
+import os, signal, threading, time
+import rospy
+rospy.init_node('held')
+with threading._shutdown_locks_lock:  # what joining a finished thread holds, for a moment
+    os.kill(os.getpid(), signal.SIGINT)  # the handler runs here, with the lock held
+    deadline = time.monotonic() + 30
+    while not rospy.is_shutdown() and time.monotonic() < deadline:
+        time.sleep(0.01)
+print(rospy.is_shutdown(), flush=True)
+"""
+
+
+@pytest.mark.skipif(
+    not hasattr(threading, "_shutdown_locks_lock"),
+    reason="this Python's threading holds no such lock while it joins a thread",
+)
+def test_ctrl_c_shuts_the_node_down_whatever_lock_the_main_thread_holds(
+    master: str, tmp_path: Path
+) -> None:
+    # Python runs a signal handler between any two bytecodes of the main thread, here inside a
+    # lock that starting a `threading.Thread` needs: a handler that started one waited forever,
+    # and SIGTERM, whose handler is the same, could not end the script either.
+    script = tmp_path / "held.py"
+    script.write_text(HELD_WHEN_SIGNALLED)
+    process = subprocess.Popen(
+        [sys.executable, "-m", "rosx_commands", "run-script", str(script)],
+        env=clean_environ(ROS_MASTER_URI=master),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        out, err = process.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        pytest.fail("the script still runs: its signal handler waits for the lock it holds")
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert (process.returncode, out, err) == (0, "True\n", "")
+    client = MasterClient(master, "/test")
+    try:
+        assert client.lookup_node("/held") is None  # it left the graph
+    finally:
+        client.close()
 
 
 def test_a_python_without_rosx_is_told_what_to_do(tmp_path: Path) -> None:
