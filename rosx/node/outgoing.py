@@ -390,10 +390,13 @@ class OutgoingStream:
             self._io.loop.add_writer(self.fileno, self._on_writable)
 
     def _on_writable(self) -> None:
+        # Held frames go by the holding's rules (`_release_locked`, which hands them back to
+        # this writer if the socket cannot take them): a part of one written here would be
+        # written again with the others, which are whole frames by then.
         with self._lock:
-            if not self.closed and self._pending:
+            if not self.closed and self._pending and not self.holding:
                 self._flush_locked()
-            if self.closed or not self._pending:
+            if self.closed or not self._pending or self.holding:
                 self._io.loop.remove_writer(self.fileno)
 
     def _flush_locked(self, *, held: bool = False) -> None:

@@ -14,6 +14,7 @@ import struct
 import sys
 import termios
 from collections.abc import Iterator
+from typing import Any
 
 import pytest
 
@@ -233,3 +234,43 @@ def test_flush_writes_what_is_held_at_once_and_holding_starts_afresh(
         assert stream.queued == 0
     assert read_frames(peer, len(later)) == later
     stream.close()
+
+
+class ShortWrite(socket.socket):
+    """A stream's socket whose next gathered write, once ``short`` is set, takes ten bytes."""
+
+    short = False
+
+    def sendmsg(self, buffers: Any, *args: Any) -> int:
+        if self.short:
+            self.short = False
+            return super().sendmsg([b"".join(buffers)[:10]])
+        return super().sendmsg(buffers, *args)
+
+
+def test_the_loops_write_leaves_held_frames_to_the_holding(
+    io: LoopThread,
+    pair: tuple[socket.socket, socket.socket],
+    clock: Clock,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The loop may still wait for room from before a flood's frames were held (the socket
+    was full, then the publisher's own write emptied the queue): when the room comes, a part
+    of a held frame written then would be written again with the held frames."""
+    monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)
+    plain, peer = pair
+    mine = ShortWrite(plain.family, plain.type, fileno=plain.detach())
+    stream = stream_of(mine, io)
+    sent = send_flood(stream, 30)
+    assert stream.holding
+    mine.short = True
+    stream._on_writable()  # as the loop calls it when the socket is writable
+    sent += [twist_frame(n) for n in range(30, 40)]
+    for item in sent[30:]:
+        stream.send(item)
+    clock.pause(0.001)
+    sent.append(twist_frame(40))
+    stream.send(sent[-1])
+    assert read_frames(peer, len(sent)) == sent
+    stream.close()
+    mine.close()
