@@ -24,20 +24,23 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
   on the loop. Bytes a subscriber sends after its header are read and ignored: reading is how
   a closed peer is noticed before the next publish. `close` first writes what waits, as far
   as the socket takes it.
-* In a flood over a Unix socket, whose sender can ask what its peer has not read yet
-  (`rosx.node.unixros.unread_probe`), small frames are held back and written together, one
+* In a flood to a peer that is behind, small frames are held back and written together, one
   ``sendmsg`` for many instead of one ``send`` each: fewer system calls for the publisher,
-  fewer and larger reads for the subscriber. Holding starts only once frames have come less
-  than `FLOOD_GAP_NS` apart for `HOLD_RUN` frames and the peer has frames still to read (it
-  is asked every `PROBE_EVERY` frames), so a lone message, a ping-pong and a burst the reader
-  keeps up with are written at once, as above. What is held goes out every `PROBE_EVERY`
-  frames if the peer has read what it had, once `HOLD_FRAMES` frames or `HOLD_BYTES` bytes
-  wait, with a frame of `HOLD_SIZE` bytes or more, with the first frame after a pause or in
-  parts (that frame goes as it would unheld, and holding stops), by `close`, and at the
-  latest `HOLD_TICK` seconds later (the I/O loop writes it if the publisher has stopped), or
-  by `OutgoingStream.flush` (what another topic's next message must not overtake): the same
-  bytes in the same order. A bounded queue holds no more than its size, so holding drops
-  nothing.
+  fewer and larger reads for the subscriber. Whether the peer is behind, the stream asks its
+  socket (the ``unread`` probe): over a Unix socket, what the peer has not read yet
+  (`rosx.node.unixros.unread_probe`); over TCP, what this end's kernel has not sent yet
+  (`unsent_probe`: the peer's window is full, or Nagle's algorithm waits for the peer to
+  acknowledge what it has), bytes that a frame written now would wait behind anyway.
+  Holding starts only once frames have come less than `FLOOD_GAP_NS` apart for `HOLD_RUN`
+  frames and the probe says so (it is asked every `PROBE_EVERY` frames), so a lone message,
+  a ping-pong and a burst the reader keeps up with are written at once, as above. What is
+  held goes out every `HOLD_PROBE_EVERY` frames if the probe finds nothing waiting, once
+  `HOLD_FRAMES` frames or `HOLD_BYTES` bytes wait, with a frame of `HOLD_SIZE` bytes or
+  more, with the first frame after a pause or in parts (that frame goes as it would unheld,
+  and holding stops), by `close`, and at the latest `HOLD_TICK` seconds later (the I/O loop
+  writes it if the publisher has stopped), or by `OutgoingStream.flush` (what another
+  topic's next message must not overtake): the same bytes in the same order. A bounded
+  queue holds no more than its size, so holding drops nothing.
 
 What this module must not know: topics, message types, headers. It moves frames.
 """
@@ -47,6 +50,7 @@ from __future__ import annotations
 import os
 import select
 import socket
+import sys
 import threading
 import time
 from collections import deque
@@ -70,8 +74,8 @@ _MAX_IOV = 512
 #: loop writes them too, whenever the socket is writable).
 FLUSH_EVERY = 16
 
-#: Whether streams that can ask what their peer has not read hold frames back while it has
-#: some (``ROSX_BATCH=0`` says no).
+#: Whether streams that can ask whether their peer is behind hold frames back while it is
+#: (``ROSX_BATCH=0`` says no).
 HOLD_ENABLED = os.environ.get("ROSX_BATCH", "1") != "0"
 #: Frames of a flood's run (each sent less than `FLOOD_GAP_NS` after the one before) before the
 #: peer is asked whether it is behind: a burst the reader keeps up with never asks.
@@ -134,8 +138,9 @@ class OutgoingStream:
         *,
         unread: Callable[[], int] | None = None,
     ) -> None:
-        """``unread`` says how many bytes sent the peer has not read yet: given, frames may
-        be held back while it has some (see the module's contract)."""
+        """``unread`` says how many bytes sent are still waiting (the peer has not read them,
+        or the kernel has not sent them): given, frames may be held back while some wait (see
+        the module's contract)."""
         sock.setblocking(False)
         self.sock = sock
         self.fileno = sock.fileno()
@@ -452,3 +457,42 @@ def configure_nodelay(sock: socket.socket, nodelay: bool) -> None:
     """Disable Nagle's algorithm on ``sock`` when the subscriber asked for ``tcp_nodelay``."""
     if nodelay:
         sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+
+
+#: Where ``struct tcp_info`` (Linux, ``<linux/tcp.h>``) keeps ``tcpi_notsent_bytes``, and the
+#: length that includes it (Linux 4.6 and later).
+_NOTSENT_AT = 144
+_TCP_INFO_SIZE = _NOTSENT_AT + 4
+
+
+def unsent_probe(sock: socket.socket) -> Callable[[], int] | None:
+    """A function giving the bytes written to a TCP socket that its kernel has not sent yet
+    (``tcpi_notsent_bytes``); None where that cannot be asked.
+
+    They wait because the peer's receive window is full (it is behind, by its whole buffer)
+    or for Nagle's algorithm (a segment is not acknowledged yet, which on loopback means the
+    peer has not been scheduled to take it): a frame written now would wait behind them in
+    the kernel, so holding it back with them delays nothing the peer could read sooner.
+    """
+    if not sys.platform.startswith("linux") or sock.family not in (
+        socket.AF_INET,
+        socket.AF_INET6,
+    ):
+        return None
+    level, option = socket.IPPROTO_TCP, socket.TCP_INFO
+    try:
+        if len(sock.getsockopt(level, option, _TCP_INFO_SIZE)) < _TCP_INFO_SIZE:
+            return None
+    except OSError:
+        return None
+    getsockopt = sock.getsockopt
+    from_bytes = int.from_bytes
+
+    def unsent() -> int:
+        try:
+            info = getsockopt(level, option, _TCP_INFO_SIZE)
+        except OSError:
+            return 0
+        return from_bytes(info[_NOTSENT_AT:], "little")
+
+    return unsent

@@ -48,7 +48,7 @@ from rosx.msg.codec.parts import frame_parts, in_parts
 from rosx.node import slices, unixros
 from rosx.node.incoming import connection_ids, describe_connection
 from rosx.node.local import INTRAPROCESS, LocalMessage
-from rosx.node.outgoing import OutgoingStream, configure_nodelay, frame_size
+from rosx.node.outgoing import OutgoingStream, configure_nodelay, frame_size, unsent_probe
 from rosx.wire.header import encode_header
 from rosx.wire.tcpros import Publication as PublicationInfo
 
@@ -416,6 +416,7 @@ class Publication:
             unread = unixros.unread_probe(sock)
         else:
             configure_nodelay(sock, bool(accepted.tcp_nodelay))
+            unread = unsent_probe(sock)
         stream = OutgoingStream(sock, self.io, self.queue_size, self._closed_stream, unread=unread)
         link = SubscriberLink.connected(stream, accepted.callerid, self.unix_address)
         with self._lock:

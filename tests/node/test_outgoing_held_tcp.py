@@ -1,0 +1,115 @@
+"""A publisher's stream over TCP holding frames back while its kernel holds bytes back
+(`rosx.node.outgoing.unsent_probe`): the peer's window is full, or Nagle's algorithm waits for
+an acknowledgement. The peer gets the same bytes in the same order; a frame after a pause goes
+at once with what was held; frames to a peer that reads them as they come are never held.
+
+The stream's clock is replaced by one the test moves (`FloodClock`), so a run of frames and a
+pause are what the test says they are, however loaded the machine."""
+
+from __future__ import annotations
+
+import socket
+import sys
+from collections.abc import Iterator
+
+import pytest
+
+from rosx.node import outgoing
+from rosx.node.outgoing import HOLD_RUN, OutgoingStream, unsent_probe
+from rosx.transport.loop_thread import LoopThread
+from tests.support.frames import FloodClock as Clock
+from tests.support.frames import read_frames, twist_frame
+from tests.support.procs import wait_for
+
+pytestmark = pytest.mark.skipif(
+    not sys.platform.startswith("linux"), reason="TCP_INFO's unsent bytes: Linux only"
+)
+
+
+@pytest.fixture
+def clock(monkeypatch: pytest.MonkeyPatch) -> Clock:
+    fake = Clock()
+    monkeypatch.setattr(outgoing, "_clock", fake)
+    return fake
+
+
+@pytest.fixture
+def pair() -> Iterator[tuple[socket.socket, socket.socket]]:
+    """A loopback TCP connection whose reading end has a small buffer (a small window)."""
+    with socket.create_server(("127.0.0.1", 0)) as listener:
+        listener.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)  # the accepted end's
+        mine = socket.create_connection(listener.getsockname())
+        peer, _ = listener.accept()
+    yield mine, peer
+    mine.close()
+    peer.close()
+
+
+def test_the_probe_says_what_the_kernel_has_not_sent(
+    pair: tuple[socket.socket, socket.socket],
+) -> None:
+    mine, peer = pair
+    unsent = unsent_probe(mine)
+    assert unsent is not None
+    assert unsent() == 0
+    mine.setblocking(False)
+    written = 0
+    while not unsent() and written < 1 << 20:  # the peer reads nothing: its window fills
+        written += mine.send(bytes(1000))
+    assert 0 < unsent() < written
+    received = 0
+    while received < written:  # it reads: the kernel sends what waited
+        received += len(peer.recv(1 << 16))
+    wait_for(lambda: unsent() == 0, what="every byte sent")
+    with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as local:
+        assert unsent_probe(local) is None
+
+
+def test_a_flood_behind_bytes_the_kernel_holds_is_held_then_arrives_whole_and_in_order(
+    io: LoopThread,
+    pair: tuple[socket.socket, socket.socket],
+    clock: Clock,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(outgoing, "HOLD_TICK", 30.0)  # only the pause writes them
+    mine, peer = pair
+    unsent = unsent_probe(mine)
+    assert unsent is not None
+    stream = OutgoingStream(mine, io, 0, unread=unsent)
+    sent: list[bytes] = []
+    while not unsent() and len(sent) < 1000:  # frames a pause apart, none read: never held
+        sent.append(twist_frame(len(sent)))
+        stream.send(sent[-1])
+        assert (stream.holding, stream.queued) == (False, 0)
+        clock.pause(0.001)
+    assert unsent()  # the peer's window is full, or an acknowledgement is awaited
+    flood = [twist_frame(number) for number in range(len(sent), len(sent) + 40)]
+    for item in flood:
+        stream.send(item)
+    # The first HOLD_RUN frames of the run go to the kernel, which keeps them with the rest;
+    # the others wait together in the stream, though the socket has room for them.
+    assert (stream.holding, stream.queued) == (True, len(flood) - HOLD_RUN)
+    clock.pause(0.001)
+    last = twist_frame(len(sent) + len(flood))
+    stream.send(last)  # a pause: what was held goes, then this frame
+    assert (stream.holding, stream.queued) == (False, 0)
+    everything = [*sent, *flood, last]
+    assert read_frames(peer, len(everything)) == everything
+    wait_for(lambda: stream.frames_sent == len(everything), what="every frame counted")
+    assert stream.bytes_sent == sum(len(item) for item in everything)
+    stream.close()
+
+
+def test_frames_to_a_peer_that_reads_them_as_they_come_go_at_once(
+    io: LoopThread, pair: tuple[socket.socket, socket.socket], clock: Clock
+) -> None:
+    """As for a subscriber that asked for ``tcp_nodelay``: nothing waits in the kernel."""
+    mine, peer = pair
+    mine.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+    stream = OutgoingStream(mine, io, 0, unread=unsent_probe(mine))
+    for number in range(100):
+        item = twist_frame(number)
+        stream.send(item)
+        assert (stream.holding, stream.queued) == (False, 0)
+        assert read_frames(peer, 1) == [item]
+    stream.close()
