@@ -416,7 +416,12 @@ class Publication:
             unread = unixros.unread_probe(sock)
         else:
             configure_nodelay(sock, bool(accepted.tcp_nodelay))
-            unread = unsent_probe(sock)
+            if not self.queue_size:
+                # Over TCP a flood is held back only for a queue that drops nothing. With a
+                # bounded one, batches fill the kernel's buffers sooner than a message a
+                # ``send`` does, and the queue then drops: a roscpp subscriber, queue_size=100,
+                # lost about 10 000 of 200 000 Twists, received 0.8 times as fast.
+                unread = unsent_probe(sock)
         stream = OutgoingStream(sock, self.io, self.queue_size, self._closed_stream, unread=unread)
         link = SubscriberLink.connected(stream, accepted.callerid, self.unix_address)
         with self._lock:

@@ -1,7 +1,8 @@
 """A publisher's stream over TCP holding frames back while its kernel holds bytes back
 (`rosx.node.outgoing.unsent_probe`): the peer's window is full, or Nagle's algorithm waits for
 an acknowledgement. The peer gets the same bytes in the same order; a frame after a pause goes
-at once with what was held; frames to a peer that reads them as they come are never held.
+at once with what was held; frames to a peer that reads them as they come are never held. A
+publication holds a flood over TCP only when its queue drops nothing.
 
 The stream's clock is replaced by one the test moves (`FloodClock`), so a run of frames and a
 pause are what the test says they are, however loaded the machine."""
@@ -10,16 +11,21 @@ from __future__ import annotations
 
 import socket
 import sys
-from collections.abc import Iterator
+import threading
+from collections.abc import Callable, Iterator
+from typing import Any
 
 import pytest
 
-from rosx.node import outgoing
+from rosx.msg.codec.classes import get_message_class
+from rosx.node import Node, local, outgoing, unixros
 from rosx.node.outgoing import HOLD_RUN, OutgoingStream, unsent_probe
 from rosx.transport.loop_thread import LoopThread
 from tests.support.frames import FloodClock as Clock
 from tests.support.frames import read_frames, twist_frame
 from tests.support.procs import wait_for
+
+Twist = get_message_class("geometry_msgs/Twist")
 
 pytestmark = pytest.mark.skipif(
     not sys.platform.startswith("linux"), reason="TCP_INFO's unsent bytes: Linux only"
@@ -113,3 +119,47 @@ def test_frames_to_a_peer_that_reads_them_as_they_come_go_at_once(
         assert (stream.holding, stream.queued) == (False, 0)
         assert read_frames(peer, 1) == [item]
     stream.close()
+
+
+@pytest.mark.parametrize(
+    ("queue_size", "held"),
+    [(None, True), (0, True), (100, False)],
+    ids=["queue None", "unbounded", "queue 100"],
+)
+def test_a_publication_holds_a_flood_over_tcp_unless_its_queue_drops(
+    make_node: Callable[..., Node],
+    monkeypatch: pytest.MonkeyPatch,
+    clock: Clock,
+    queue_size: int | None,
+    held: bool,
+) -> None:
+    """A subscriber stuck in its callback reads nothing: its window fills, then the kernel
+    holds bytes back. A bounded queue is never held back over TCP: in batches a flood
+    fills the kernel's buffers sooner and drops what one message a send delivered."""
+    monkeypatch.setattr(local, "ENABLED", False)
+    monkeypatch.setattr(unixros, "ENABLED", False)
+    talker, listener = make_node("tcp_talker"), make_node("tcp_listener")
+    go_on = threading.Event()
+    got: list[int] = []
+
+    def stuck(msg: Any) -> None:
+        go_on.wait(30)
+        got.append(int(msg.linear.x))
+
+    sub = listener.subscribe("/flood", Twist, stuck, queue_size=0)
+    pub = talker.advertise("/flood", Twist, queue_size=queue_size)
+    wait_for(lambda: pub.get_num_connections() == 1 and sub.get_num_connections() == 1)
+    (link,) = talker.publications["/flood"].links
+    sent = 0
+    try:
+        while not link.stream.holding and sent < 20_000:
+            msg = Twist()
+            msg.linear.x = float(sent)
+            pub.publish(msg)
+            sent += 1
+        assert link.stream.holding is held
+    finally:
+        go_on.set()
+    if held:
+        wait_for(lambda: len(got) == sent, what="every message")
+        assert got == list(range(sent))
