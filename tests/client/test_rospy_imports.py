@@ -20,7 +20,7 @@ from rosx.master.client import MasterClient
 from rosx_commands.scripts import shim_dirs
 from tests.support.cli import clean_environ
 from tests.support.ros1 import needs_ros1, ros1_python, ros1_python_imports, ros1_python_with_path
-from tests.support.scripts import json_of, run_script
+from tests.support.scripts import json_of, run_script, start_script
 
 NUM_PACKAGE = """\
 <?xml version="1.0"?>
@@ -134,13 +134,7 @@ def test_a_missing_script_is_reported_as_python_does(tmp_path: Path) -> None:
 def test_ctrl_c_before_init_node_ends_quietly(tmp_path: Path) -> None:
     script = tmp_path / "wait.py"
     script.write_text("import time, rospy\nprint('ready', flush=True)\ntime.sleep(60)\n")
-    process = subprocess.Popen(
-        [sys.executable, "-m", "rosx_commands", "run-script", str(script)],
-        env=clean_environ(),
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-    )
+    process = start_script(script)
     try:
         assert process.stdout is not None and process.stdout.readline() == "ready\n"
         process.send_signal(signal.SIGINT)
@@ -157,13 +151,7 @@ def test_init_node_waits_for_the_master_as_rospy_does(tmp_path: Path) -> None:
     script = tmp_path / "node.py"
     script.write_text("import rospy\nrospy.init_node('early')\n")
     uri = "http://127.0.0.1:9/"
-    process = subprocess.Popen(
-        [sys.executable, "-m", "rosx_commands", "run-script", str(script)],
-        env=clean_environ(ROS_MASTER_URI=uri),
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-    )
+    process = start_script(script, ROS_MASTER_URI=uri)
     try:
         assert process.stderr is not None
         line = process.stderr.readline()  # printed with the signal handlers in place
@@ -207,13 +195,7 @@ def test_ctrl_c_shuts_the_node_down_whatever_lock_the_main_thread_holds(
     # and SIGTERM, whose handler is the same, could not end the script either.
     script = tmp_path / "held.py"
     script.write_text(HELD_WHEN_SIGNALLED)
-    process = subprocess.Popen(
-        [sys.executable, "-m", "rosx_commands", "run-script", str(script)],
-        env=clean_environ(ROS_MASTER_URI=master),
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-    )
+    process = start_script(script, ROS_MASTER_URI=master)
     try:
         out, err = process.communicate(timeout=60)
     except subprocess.TimeoutExpired:

@@ -6,7 +6,9 @@ from collections.abc import Iterator
 
 import pytest
 
+from rosx.node import outgoing
 from rosx.transport.loop_thread import LoopThread
+from tests.support.frames import FloodClock
 
 
 @pytest.fixture
@@ -17,3 +19,12 @@ def io() -> Iterator[LoopThread]:
         yield loop
     finally:
         loop.stop()
+
+
+@pytest.fixture
+def clock(monkeypatch: pytest.MonkeyPatch) -> FloodClock:
+    """The streams' clock (`rosx.node.outgoing._clock`) made a `FloodClock`: every series of
+    frames is a flood, however loaded the machine, unless the test pauses it."""
+    fake = FloodClock()
+    monkeypatch.setattr(outgoing, "_clock", fake)
+    return fake

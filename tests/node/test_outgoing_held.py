@@ -22,19 +22,12 @@ from rosx.node import outgoing, unixros
 from rosx.node.outgoing import HOLD_RUN, OutgoingStream
 from rosx.transport.loop_thread import LoopThread
 from tests.support.frames import FloodClock as Clock
-from tests.support.frames import read_frames, twist_frame
+from tests.support.frames import assert_delivered, read_frames, twist_frame
 from tests.support.procs import wait_for
 
 pytestmark = pytest.mark.skipif(
     not sys.platform.startswith("linux"), reason="a Unix socket's unread bytes: Linux only"
 )
-
-
-@pytest.fixture
-def clock(monkeypatch: pytest.MonkeyPatch) -> Clock:
-    fake = Clock()
-    monkeypatch.setattr(outgoing, "_clock", fake)
-    return fake
 
 
 @pytest.fixture
@@ -74,9 +67,7 @@ def test_a_flood_to_a_peer_behind_is_held_then_arrives_whole_and_in_order(
     # though the socket has room for them.
     assert stream.queued == len(sent) - HOLD_RUN
     # Nothing more is published: the loop writes what is held.
-    assert read_frames(peer, len(sent)) == sent
-    wait_for(lambda: stream.frames_sent == len(sent), what="every frame counted")
-    assert stream.bytes_sent == sum(len(item) for item in sent)
+    assert_delivered(stream, peer, sent)
     stream.close()
 
 

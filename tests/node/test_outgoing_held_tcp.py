@@ -22,7 +22,7 @@ from rosx.node import Node, local, outgoing, unixros
 from rosx.node.outgoing import HOLD_RUN, OutgoingStream, unsent_probe
 from rosx.transport.loop_thread import LoopThread
 from tests.support.frames import FloodClock as Clock
-from tests.support.frames import read_frames, twist_frame
+from tests.support.frames import assert_delivered, read_frames, twist_frame
 from tests.support.procs import wait_for
 
 Twist = get_message_class("geometry_msgs/Twist")
@@ -30,13 +30,6 @@ Twist = get_message_class("geometry_msgs/Twist")
 pytestmark = pytest.mark.skipif(
     not sys.platform.startswith("linux"), reason="TCP_INFO's unsent bytes: Linux only"
 )
-
-
-@pytest.fixture
-def clock(monkeypatch: pytest.MonkeyPatch) -> Clock:
-    fake = Clock()
-    monkeypatch.setattr(outgoing, "_clock", fake)
-    return fake
 
 
 @pytest.fixture
@@ -99,10 +92,7 @@ def test_a_flood_behind_bytes_the_kernel_holds_is_held_then_arrives_whole_and_in
     last = twist_frame(len(sent) + len(flood))
     stream.send(last)  # a pause: what was held goes, then this frame
     assert (stream.holding, stream.queued) == (False, 0)
-    everything = [*sent, *flood, last]
-    assert read_frames(peer, len(everything)) == everything
-    wait_for(lambda: stream.frames_sent == len(everything), what="every frame counted")
-    assert stream.bytes_sent == sum(len(item) for item in everything)
+    assert_delivered(stream, peer, [*sent, *flood, last])
     stream.close()
 
 

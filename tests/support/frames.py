@@ -7,7 +7,12 @@ from __future__ import annotations
 import socket
 import struct
 import threading
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+from tests.support.procs import wait_for
+
+if TYPE_CHECKING:
+    from rosx.node.outgoing import OutgoingStream
 
 
 def twist_frame(number: int, size: int = 48) -> bytes:
@@ -31,6 +36,13 @@ def read_frames(peer: socket.socket, count: int) -> list[bytes]:
             data += chunk
     assert not data
     return frames
+
+
+def assert_delivered(stream: OutgoingStream, peer: socket.socket, frames: list[bytes]) -> None:
+    """The peer reads exactly ``frames``, whole and in order, and ``stream`` counts them all."""
+    assert read_frames(peer, len(frames)) == frames
+    wait_for(lambda: stream.frames_sent == len(frames), what="every frame counted")
+    assert stream.bytes_sent == sum(len(frame) for frame in frames)
 
 
 class FloodClock:
