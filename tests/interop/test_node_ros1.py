@@ -55,6 +55,7 @@ def report(**event):
     sys.stdout.write(json.dumps(event) + "\n")
     sys.stdout.flush()
 
+FLOOD = 20000
 rospy.init_node("rospy_node", disable_signals=True)
 seen = set()
 def once(kind, **event):
@@ -66,6 +67,12 @@ rospy.Subscriber("/rosx_twist", Twist, lambda m: once("twist", x=m.linear.x))
 rospy.Subscriber("/rosx_image", Image,
                  lambda m: once("image", size=len(m.data), width=m.width, first=m.data[:4].hex()))
 rospy.Subscriber("/rosx_latched", String, lambda m: once("latched", data=m.data))
+flood = []
+def on_flood(m):
+    flood.append(int(m.linear.y))
+    if len(flood) == FLOOD:
+        report(kind="flood", count=len(flood), in_order=flood == list(range(FLOOD)))
+rospy.Subscriber("/rosx_flood", Twist, on_flood)
 rospy.Service("/rospy_srv", SetBool,
               lambda req: SetBoolResponse(success=req.data, message="rospy says hi"))
 latched = rospy.Publisher("/rospy_latched", String, queue_size=1, latch=True)
@@ -287,6 +294,23 @@ def test_rosx_publishes_to_rospy(session: Session) -> None:
     got_image = session.rospy.wait("image")
     assert (got_image["size"], got_image["width"]) == (1 << 20, 512)
     assert got_image["first"] == "00010203"
+
+
+def test_a_flood_reaches_rospy_whole_and_in_order(session: Session) -> None:
+    # rospy's subscriber calls back on its reading thread: it falls behind, the kernel holds
+    # bytes back, and the publisher writes the flood in batches.
+    pub = session.node.advertise("/rosx_flood", Twist, queue_size=None)
+    _wait(lambda: pub.get_num_connections() == 1)
+    (link,) = session.node.publications["/rosx_flood"].links
+    held = False
+    twist = Twist()
+    for number in range(20_000):
+        twist.linear.y = float(number)
+        pub.publish(twist)
+        held = held or link.stream.holding
+    assert held
+    flood = session.rospy.wait("flood", timeout=60)
+    assert (flood["count"], flood["in_order"]) == (20_000, True)
 
 
 def test_rospy_publishes_to_rosx(session: Session) -> None:
