@@ -5,12 +5,12 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 from pathlib import Path
 
 from rosx_commands.scripts import shim_dirs
 from tests.support.cli import clean_environ
 from tests.support.ros1 import ROS1_PYTHON, needs_ros1, ros1_environ
+from tests.support.scripts import script_command
 
 SCRIPT = """
 import json
@@ -38,7 +38,7 @@ def test_scripts_find_ros1s_modules_and_names(tmp_path: Path) -> None:
     script = tmp_path / "uses_actionlib.py"
     script.write_text(SCRIPT)
     done = subprocess.run(
-        [sys.executable, "-m", "rosx_commands", "run-script", str(script)],
+        script_command(script),
         env=clean_environ(), capture_output=True, text=True, timeout=60, check=False,
     )  # fmt: skip
     assert done.returncode == 0, done.stderr

@@ -20,7 +20,7 @@ from rosx.master.client import MasterClient
 from rosx_commands.scripts import shim_dirs
 from tests.support.cli import clean_environ
 from tests.support.ros1 import needs_ros1, ros1_python, ros1_python_imports, ros1_python_with_path
-from tests.support.scripts import json_of, run_script, start_script
+from tests.support.scripts import json_of, run_script, script_command, start_script
 
 NUM_PACKAGE = """\
 <?xml version="1.0"?>
@@ -119,7 +119,7 @@ def test_an_exception_shows_the_scripts_frames_only(tmp_path: Path) -> None:
 
 def test_a_missing_script_is_reported_as_python_does(tmp_path: Path) -> None:
     done = subprocess.run(
-        [sys.executable, "-m", "rosx_commands", "run-script", str(tmp_path / "none.py")],
+        script_command(tmp_path / "none.py"),
         capture_output=True,
         text=True,
         check=False,

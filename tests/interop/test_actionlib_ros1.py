@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -23,6 +22,7 @@ from tests.support.cli import clean_environ
 from tests.support.procs import running, wait_for
 from tests.support.ros1 import needs_ros1, ros1_python_imports
 from tests.support.ros1_procs import ROS1_PYTHON, ros_env
+from tests.support.scripts import script_command
 
 pytestmark = [
     needs_ros1,
@@ -172,7 +172,7 @@ def scripts(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def _command(side: str, script: Path) -> list[str]:
     if side == "ros1":
         return [str(ROS1_PYTHON), str(script)]
-    return [sys.executable, "-m", "rosx_commands", "run-script", str(script)]
+    return script_command(script)
 
 
 def _environ(side: str, master: str, home: Path) -> dict[str, str]:

@@ -20,6 +20,7 @@ from tests.support.fetched import fetched_tree
 from tests.support.procs import running, wait_for
 from tests.support.ros1 import needs_ros1
 from tests.support.ros1_procs import ROS1_PYTHON, ros_env
+from tests.support.scripts import script_command
 
 #: Runs one test module's cases as rostest would, with a node of rostest's naming.
 RUNNER = """
@@ -46,7 +47,7 @@ def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def _script(side: str, folder: Path, name: str, *argv: str) -> list[str]:
     if side == "ros1":
         return [str(ROS1_PYTHON), str(folder / name), *argv]
-    return [sys.executable, "-m", "rosx_commands", "run-script", str(folder / name), *argv]
+    return script_command(folder / name, *argv)
 
 
 def _environ(side: str, master: str, home: Path) -> dict[str, str]:

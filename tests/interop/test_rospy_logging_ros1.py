@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import re
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -17,6 +16,7 @@ import pytest
 from rosx.master.server import MasterThread
 from tests.support.cli import clean_environ
 from tests.support.ros1 import ROS1_PYTHON, ros1_python_imports
+from tests.support.scripts import script_command
 
 pytestmark = pytest.mark.skipif(
     not ros1_python_imports("rospy", "rosgraph"), reason="ROS 1's rospy is absent"
@@ -84,7 +84,7 @@ def test_a_handler_on_rosout_sees_the_same_records(tmp_path: Path) -> None:
     script = tmp_path / "probe.py"
     script.write_text(PROBE)
     theirs = _run([ROS1_PYTHON, str(script)], tmp_path)
-    ours = _run([sys.executable, "-m", "rosx_commands", "run-script", str(script)], tmp_path)
+    ours = _run(script_command(script), tmp_path)
     assert ours == theirs
     seen, out, err = ours
     assert seen[:3] == [
