@@ -17,7 +17,11 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
 * ``queue_size`` bounds the queue: a positive size drops the *oldest* queued frame when a new
   one would exceed it (ROS 1's semantics), never the frame already partly on the wire; ``0``
   means unbounded; ``None`` means no frame is dropped and `send` blocks its (non-loop) caller
-  while more than `HIGH_WATER` bytes wait, as rospy's synchronous publish blocks.
+  while more than its high water (`HIGH_WATER` bytes unless told) wait, as rospy's
+  synchronous publish blocks. Over TCP such a publisher is paced (`pace`): the kernel takes
+  no more than `PACED_BYTES` not yet sent, and `send` waits while more than that wait here, so
+  a publisher ahead of a slower subscriber waits for it instead of running on with both
+  kernels' buffers and megabytes of its own queue full.
 * The queue and the byte and frame counts (``getBusStats``) change only under the stream's
   lock, whichever thread writes.
 * A peer that closes, resets or sends garbage ends the stream; `on_close` is then called once,
@@ -66,6 +70,13 @@ if TYPE_CHECKING:
 
 #: With ``queue_size=None``, `OutgoingStream.send` blocks while more bytes than this wait.
 HIGH_WATER = 4 * 1024 * 1024
+
+#: A paced TCP stream (`pace`): the bytes its kernel may hold unsent, and that may wait in
+#: its queue, before `OutgoingStream.send` waits. Next to a roscpp subscriber on a machine of
+#: two cores, a flood of 200 000 Twists from a publisher so paced arrived 1.1-1.2 times as
+#: fast as from one that wrote it all ahead (bench/README.md, "A publisher that waits");
+#: 32 KiB paced too closely (every wake-up of the loop wrote a few frames), 2 MiB too loosely.
+PACED_BYTES = 512 * 1024
 
 # sendmsg takes at most IOV_MAX (1024 on Linux) buffers.
 _MAX_IOV = 512
@@ -137,16 +148,20 @@ class OutgoingStream:
         on_close: Callable[[OutgoingStream], None] | None = None,
         *,
         unread: Callable[[], int] | None = None,
+        high_water: int = HIGH_WATER,
     ) -> None:
         """``unread`` says how many bytes sent are still waiting (the peer has not read them,
         or the kernel has not sent them): given, frames may be held back while some wait (see
-        the module's contract)."""
+        the module's contract). ``high_water``: with ``queue_size=None``, `send` blocks while
+        more bytes than this wait."""
         sock.setblocking(False)
         self.sock = sock
         self.fileno = sock.fileno()
         self._io = io
         self._limit = queue_size if queue_size else 0
         self._blocking = queue_size is None
+        #: With ``queue_size=None``, `send` blocks while more bytes than this wait.
+        self.high_water = high_water
         self._on_close = on_close
         self._lock = threading.Lock()
         self._drained = threading.Condition(self._lock)
@@ -310,8 +325,12 @@ class OutgoingStream:
             del pending[partial]
             self._pending_bytes -= frame_size(victim)
             self.dropped += 1
-        elif self._blocking and self._pending_bytes > HIGH_WATER and not self._io.in_loop_thread():
-            while not self.closed and self._pending_bytes > HIGH_WATER:
+        elif (
+            self._blocking
+            and self._pending_bytes > self.high_water
+            and not self._io.in_loop_thread()
+        ):
+            while not self.closed and self._pending_bytes > self.high_water:
                 self._drained.wait(1.0)
 
     def flush(self) -> None:
@@ -449,7 +468,7 @@ class OutgoingStream:
             pending.popleft()
             self.frames_sent += 1
         self._head_sent = sent
-        if self._blocking and self._pending_bytes <= HIGH_WATER:
+        if self._blocking and self._pending_bytes <= self.high_water:
             self._drained.notify_all()
 
 
@@ -496,3 +515,19 @@ def unsent_probe(sock: socket.socket) -> Callable[[], int] | None:
         return from_bytes(info[_NOTSENT_AT:], "little")
 
     return unsent
+
+
+def pace(sock: socket.socket) -> int:
+    """Pace a publisher that drops nothing (``queue_size=None``) over TCP socket ``sock``:
+    its kernel takes no more than `PACED_BYTES` it has not sent (``TCP_NOTSENT_LOWAT``; the
+    socket is writable again, to ``poll`` too, once fewer wait). The high water for its
+    stream: `PACED_BYTES`, or `HIGH_WATER` where the option is missing (the publisher then
+    waits as on any other socket)."""
+    option = getattr(socket, "TCP_NOTSENT_LOWAT", None)
+    if option is None or sock.family not in (socket.AF_INET, socket.AF_INET6):
+        return HIGH_WATER
+    try:
+        sock.setsockopt(socket.IPPROTO_TCP, option, PACED_BYTES)
+    except OSError:
+        return HIGH_WATER
+    return PACED_BYTES

@@ -2,7 +2,9 @@
 (`rosx.node.outgoing.unsent_probe`): the peer's window is full, or Nagle's algorithm waits for
 an acknowledgement. The peer gets the same bytes in the same order; a frame after a pause goes
 at once with what was held; frames to a peer that reads them as they come are never held. A
-publication holds a flood over TCP only when its queue drops nothing.
+publication holds a flood over TCP only when its queue drops nothing. A publisher whose queue
+neither drops nor grows without end (``queue_size=None``) is paced (`rosx.node.outgoing.pace`):
+it waits for a peer that is behind once about twice `PACED_BYTES` are written and unread.
 
 The stream's clock is replaced by one the test moves (`FloodClock`), so a run of frames and a
 pause are what the test says they are, however loaded the machine."""
@@ -19,7 +21,7 @@ import pytest
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node, local, outgoing, unixros
-from rosx.node.outgoing import HOLD_RUN, OutgoingStream, unsent_probe
+from rosx.node.outgoing import HOLD_RUN, PACED_BYTES, OutgoingStream, pace, unsent_probe
 from rosx.transport.loop_thread import LoopThread
 from tests.support.frames import FloodClock as Clock
 from tests.support.frames import assert_delivered, read_frames, twist_frame
@@ -153,3 +155,77 @@ def test_a_publication_holds_a_flood_over_tcp_unless_its_queue_drops(
     if held:
         wait_for(lambda: len(got) == sent, what="every message")
         assert got == list(range(sent))
+
+
+class NotedWait(threading.Condition):
+    """A stream's condition (``_drained``) that notes when its publisher first waits."""
+
+    def __init__(self, lock: Any) -> None:
+        super().__init__(lock)
+        self.waited = threading.Event()
+
+    def wait(self, timeout: float | None = None) -> bool:
+        self.waited.set()
+        return super().wait(timeout)
+
+
+def test_a_paced_publisher_waits_for_a_peer_that_is_behind(
+    io: LoopThread, pair: tuple[socket.socket, socket.socket]
+) -> None:
+    """The kernel takes at most `PACED_BYTES` it has not sent, the stream queues as many
+    again, and then the publisher waits until the peer reads; nothing is lost."""
+    mine, peer = pair
+    assert pace(mine) == PACED_BYTES
+    assert mine.getsockopt(socket.IPPROTO_TCP, socket.TCP_NOTSENT_LOWAT) == PACED_BYTES
+    stream = OutgoingStream(mine, io, None, high_water=PACED_BYTES)
+    stream._drained = noted = NotedWait(stream._lock)
+    frames = [twist_frame(number, 1020) for number in range(3 * PACED_BYTES // 1024)]
+    handed = 0  # frames the publisher has given the stream
+    done = threading.Event()
+
+    def publish() -> None:
+        nonlocal handed
+        for item in frames:
+            stream.send(item)
+            handed += 1
+        done.set()
+
+    publisher = threading.Thread(target=publish)
+    publisher.start()
+    try:
+        wait_for(lambda: noted.waited.is_set() or done.is_set(), what="the publisher to wait")
+        assert not done.is_set()
+        # It waits in the send of frame number ``handed``: the peer has read 4 KiB at most.
+        written = (handed + 1) * 1024
+        assert PACED_BYTES < written <= 2 * PACED_BYTES + 64 * 1024
+        assert_delivered(stream, peer, frames)
+    finally:
+        stream.close()
+        publisher.join(10)
+    assert done.is_set()
+
+
+@pytest.mark.parametrize(
+    ("queue_size", "paced"),
+    [(None, True), (0, False), (100, False)],
+    ids=["queue None", "unbounded", "queue 100"],
+)
+def test_a_publication_paces_over_tcp_only_a_publisher_that_waits(
+    make_node: Callable[..., Node],
+    monkeypatch: pytest.MonkeyPatch,
+    queue_size: int | None,
+    paced: bool,
+) -> None:
+    """``queue_size=None`` waits for a subscriber that is behind, as rospy's synchronous
+    publisher does; 0 queues without end and a size drops, as in ROS 1: neither waits."""
+    monkeypatch.setattr(local, "ENABLED", False)
+    monkeypatch.setattr(unixros, "ENABLED", False)
+    talker, listener = make_node("paced_talker"), make_node("paced_listener")
+    sub = listener.subscribe("/paced", Twist, lambda msg: None)
+    pub = talker.advertise("/paced", Twist, queue_size=queue_size)
+    wait_for(lambda: pub.get_num_connections() == 1 and sub.get_num_connections() == 1)
+    (link,) = talker.publications["/paced"].links
+    lowat = link.stream.sock.getsockopt(socket.IPPROTO_TCP, socket.TCP_NOTSENT_LOWAT)
+    assert (lowat, link.stream.high_water) == (
+        (PACED_BYTES, PACED_BYTES) if paced else (0, outgoing.HIGH_WATER)
+    )
