@@ -17,11 +17,13 @@ The contract (ROS wiki ROS/TCPROS; rospy's and roscpp's publisher queues):
 * ``queue_size`` bounds the queue: a positive size drops the *oldest* queued frame when a new
   one would exceed it (ROS 1's semantics), never the frame already partly on the wire; ``0``
   means unbounded; ``None`` means no frame is dropped and `send` blocks its (non-loop) caller
-  while more than its high water (`HIGH_WATER` bytes unless told) wait, as rospy's
-  synchronous publish blocks. Over TCP such a publisher is paced (`pace`): the kernel takes
-  no more than `PACED_BYTES` not yet sent, and `send` waits while more than that wait here, so
-  a publisher ahead of a slower subscriber waits for it instead of running on with both
-  kernels' buffers and megabytes of its own queue full.
+  while more than `high_water` bytes wait, as rospy's synchronous publish blocks. A stream
+  made ``paced`` (a TCP link of such a publisher) waits sooner while its frames are small: its
+  kernel takes no more than `PACED_BYTES` not yet sent (``TCP_NOTSENT_LOWAT``), and `send`
+  waits while more than that wait here, so a publisher of a flood ahead of a slower
+  subscriber waits for it instead of running on with both kernels' buffers and megabytes of
+  its own queue full. The first frame of `HOLD_SIZE` bytes or more ends the pacing for good:
+  large messages move faster with the kernel's buffers full.
 * The queue and the byte and frame counts (``getBusStats``) change only under the stream's
   lock, whichever thread writes.
 * A peer that closes, resets or sends garbage ends the stream; `on_close` is then called once,
@@ -71,11 +73,12 @@ if TYPE_CHECKING:
 #: With ``queue_size=None``, `OutgoingStream.send` blocks while more bytes than this wait.
 HIGH_WATER = 4 * 1024 * 1024
 
-#: A paced TCP stream (`pace`): the bytes its kernel may hold unsent, and that may wait in
-#: its queue, before `OutgoingStream.send` waits. Next to a roscpp subscriber on a machine of
-#: two cores, a flood of 200 000 Twists from a publisher so paced arrived 1.1-1.2 times as
-#: fast as from one that wrote it all ahead (bench/README.md, "A publisher that waits");
-#: 32 KiB paced too closely (every wake-up of the loop wrote a few frames), 2 MiB too loosely.
+#: A paced stream (see the module's contract): the bytes its kernel may hold unsent, and that
+#: may wait in its queue, before `OutgoingStream.send` waits. Next to a roscpp subscriber on a
+#: machine of two cores, 200 000 Twists from a publisher so paced arrived 1.1-1.2 times as
+#: fast as from one that wrote them all ahead (bench/README.md, "A publisher that waits");
+#: 16 KiB paced too closely (0.6 times: every wake-up of the loop wrote a few frames), 32 KiB
+#: and 1-2 MiB gained less.
 PACED_BYTES = 512 * 1024
 
 # sendmsg takes at most IOV_MAX (1024 on Linux) buffers.
@@ -148,12 +151,12 @@ class OutgoingStream:
         on_close: Callable[[OutgoingStream], None] | None = None,
         *,
         unread: Callable[[], int] | None = None,
-        high_water: int = HIGH_WATER,
+        paced: bool = False,
     ) -> None:
         """``unread`` says how many bytes sent are still waiting (the peer has not read them,
-        or the kernel has not sent them): given, frames may be held back while some wait (see
-        the module's contract). ``high_water``: with ``queue_size=None``, `send` blocks while
-        more bytes than this wait."""
+        or the kernel has not sent them): given, frames may be held back while some wait.
+        ``paced``: with ``queue_size=None``, over TCP, wait sooner while frames are small (see
+        the module's contract)."""
         sock.setblocking(False)
         self.sock = sock
         self.fileno = sock.fileno()
@@ -161,7 +164,10 @@ class OutgoingStream:
         self._limit = queue_size if queue_size else 0
         self._blocking = queue_size is None
         #: With ``queue_size=None``, `send` blocks while more bytes than this wait.
-        self.high_water = high_water
+        self.high_water = HIGH_WATER
+        self.paced = paced and self._blocking and _limit_unsent(sock, PACED_BYTES)
+        if self.paced:
+            self.high_water = PACED_BYTES
         self._on_close = on_close
         self._lock = threading.Lock()
         self._drained = threading.Condition(self._lock)
@@ -226,6 +232,8 @@ class OutgoingStream:
                 self._release_locked(keep=False)
             elif self._can_hold and self._hold_locked(frame, now or _clock()):
                 return
+            if self.paced and (frame.__class__ is not bytes or len(frame) >= HOLD_SIZE):
+                self._end_pacing_locked()
             if self._pending:
                 self._enqueue_locked(frame)
                 return
@@ -276,6 +284,14 @@ class OutgoingStream:
             self._ticking = True
             self._io.call_soon(self._tick_later)
         return True
+
+    def _end_pacing_locked(self) -> None:
+        # A large message: the kernel takes as much as it will again, and the queue waits
+        # as any other does (see the module's contract).
+        self.paced = False
+        self.high_water = HIGH_WATER
+        _limit_unsent(self.sock, 0)  # 0: the system's default, no limit
+        self._drained.notify_all()
 
     def _release_locked(self, *, keep: bool) -> None:
         """Write the held frames; go on holding if ``keep`` (and the socket took them all)."""
@@ -517,17 +533,15 @@ def unsent_probe(sock: socket.socket) -> Callable[[], int] | None:
     return unsent
 
 
-def pace(sock: socket.socket) -> int:
-    """Pace a publisher that drops nothing (``queue_size=None``) over TCP socket ``sock``:
-    its kernel takes no more than `PACED_BYTES` it has not sent (``TCP_NOTSENT_LOWAT``; the
-    socket is writable again, to ``poll`` too, once fewer wait). The high water for its
-    stream: `PACED_BYTES`, or `HIGH_WATER` where the option is missing (the publisher then
-    waits as on any other socket)."""
+def _limit_unsent(sock: socket.socket, limit: int) -> bool:
+    """Whether ``sock``'s kernel now takes no more than ``limit`` bytes it has not sent
+    (``TCP_NOTSENT_LOWAT``: the socket is writable, to ``send`` and ``poll``, while fewer
+    wait; 0 means the system's default): False where that cannot be asked of it."""
     option = getattr(socket, "TCP_NOTSENT_LOWAT", None)
     if option is None or sock.family not in (socket.AF_INET, socket.AF_INET6):
-        return HIGH_WATER
+        return False
     try:
-        sock.setsockopt(socket.IPPROTO_TCP, option, PACED_BYTES)
+        sock.setsockopt(socket.IPPROTO_TCP, option, limit)
     except OSError:
-        return HIGH_WATER
-    return PACED_BYTES
+        return False
+    return True

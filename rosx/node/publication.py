@@ -48,14 +48,7 @@ from rosx.msg.codec.parts import frame_parts, in_parts
 from rosx.node import slices, unixros
 from rosx.node.incoming import connection_ids, describe_connection
 from rosx.node.local import INTRAPROCESS, LocalMessage
-from rosx.node.outgoing import (
-    HIGH_WATER,
-    OutgoingStream,
-    configure_nodelay,
-    frame_size,
-    pace,
-    unsent_probe,
-)
+from rosx.node.outgoing import OutgoingStream, configure_nodelay, frame_size, unsent_probe
 from rosx.wire.header import encode_header
 from rosx.wire.tcpros import Publication as PublicationInfo
 
@@ -418,7 +411,6 @@ class Publication:
     def accept(self, sock: socket.socket, accepted: SubscriberAccepted) -> SubscriberLink:
         """Serve a subscriber whose header was accepted: reply, send the latch, then stream."""
         unread = None
-        high_water = HIGH_WATER
         if sock.family == socket.AF_UNIX:
             unixros.configure_publisher(sock)
             unread = unixros.unread_probe(sock)
@@ -430,17 +422,12 @@ class Publication:
                 # ``send`` does, and the queue then drops: a roscpp subscriber, queue_size=100,
                 # lost about 10 000 of 200 000 Twists, received 0.8 times as fast.
                 unread = unsent_probe(sock)
-            if self.queue_size is None:
-                # A synchronous publisher waits for a subscriber that is behind: a roscpp
-                # subscriber then has the CPU the publisher would have spent running ahead.
-                high_water = pace(sock)
+        # Over TCP a synchronous publisher (queue_size=None) of small messages waits soon for
+        # a subscriber that is behind: a roscpp subscriber then has the CPU the publisher
+        # would have spent running ahead.
+        paced = sock.family != socket.AF_UNIX
         stream = OutgoingStream(
-            sock,
-            self.io,
-            self.queue_size,
-            self._closed_stream,
-            unread=unread,
-            high_water=high_water,
+            sock, self.io, self.queue_size, self._closed_stream, unread=unread, paced=paced
         )
         link = SubscriberLink.connected(stream, accepted.callerid, self.unix_address)
         with self._lock:

@@ -3,7 +3,7 @@
 an acknowledgement. The peer gets the same bytes in the same order; a frame after a pause goes
 at once with what was held; frames to a peer that reads them as they come are never held. A
 publication holds a flood over TCP only when its queue drops nothing. A publisher whose queue
-neither drops nor grows without end (``queue_size=None``) is paced (`rosx.node.outgoing.pace`):
+neither drops nor grows without end (``queue_size=None``) is paced while its messages are small:
 it waits for a peer that is behind once about twice `PACED_BYTES` are written and unread.
 
 The stream's clock is replaced by one the test moves (`FloodClock`), so a run of frames and a
@@ -21,7 +21,14 @@ import pytest
 
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node, local, outgoing, unixros
-from rosx.node.outgoing import HOLD_RUN, PACED_BYTES, OutgoingStream, pace, unsent_probe
+from rosx.node.outgoing import (
+    HIGH_WATER,
+    HOLD_RUN,
+    HOLD_SIZE,
+    PACED_BYTES,
+    OutgoingStream,
+    unsent_probe,
+)
 from rosx.transport.loop_thread import LoopThread
 from tests.support.frames import FloodClock as Clock
 from tests.support.frames import assert_delivered, read_frames, twist_frame
@@ -175,9 +182,9 @@ def test_a_paced_publisher_waits_for_a_peer_that_is_behind(
     """The kernel takes at most `PACED_BYTES` it has not sent, the stream queues as many
     again, and then the publisher waits until the peer reads; nothing is lost."""
     mine, peer = pair
-    assert pace(mine) == PACED_BYTES
+    stream = OutgoingStream(mine, io, None, paced=True)
+    assert (stream.paced, stream.high_water) == (True, PACED_BYTES)
     assert mine.getsockopt(socket.IPPROTO_TCP, socket.TCP_NOTSENT_LOWAT) == PACED_BYTES
-    stream = OutgoingStream(mine, io, None, high_water=PACED_BYTES)
     stream._drained = noted = NotedWait(stream._lock)
     frames = [twist_frame(number, 1020) for number in range(3 * PACED_BYTES // 1024)]
     handed = 0  # frames the publisher has given the stream
@@ -205,6 +212,24 @@ def test_a_paced_publisher_waits_for_a_peer_that_is_behind(
     assert done.is_set()
 
 
+@pytest.mark.parametrize("parts", [False, True], ids=["whole", "in parts"])
+def test_a_large_frame_ends_the_pacing(
+    io: LoopThread, pair: tuple[socket.socket, socket.socket], parts: bool
+) -> None:
+    """Large messages move faster with the kernel's buffers full: a paced publisher of them
+    waits only as any other does."""
+    mine, peer = pair
+    stream = OutgoingStream(mine, io, None, paced=True)
+    small, large = twist_frame(0), twist_frame(1, HOLD_SIZE)
+    stream.send(small)
+    assert stream.paced
+    stream.send((large[:8], large[8:]) if parts else large)
+    assert (stream.paced, stream.high_water) == (False, HIGH_WATER)
+    assert mine.getsockopt(socket.IPPROTO_TCP, socket.TCP_NOTSENT_LOWAT) == 0
+    assert_delivered(stream, peer, [small, large])
+    stream.close()
+
+
 @pytest.mark.parametrize(
     ("queue_size", "paced"),
     [(None, True), (0, False), (100, False)],
@@ -226,6 +251,6 @@ def test_a_publication_paces_over_tcp_only_a_publisher_that_waits(
     wait_for(lambda: pub.get_num_connections() == 1 and sub.get_num_connections() == 1)
     (link,) = talker.publications["/paced"].links
     lowat = link.stream.sock.getsockopt(socket.IPPROTO_TCP, socket.TCP_NOTSENT_LOWAT)
-    assert (lowat, link.stream.high_water) == (
-        (PACED_BYTES, PACED_BYTES) if paced else (0, outgoing.HIGH_WATER)
+    assert (link.stream.paced, lowat, link.stream.high_water) == (
+        (True, PACED_BYTES, PACED_BYTES) if paced else (False, 0, HIGH_WATER)
     )
