@@ -29,6 +29,7 @@ from rosx.node.outgoing import (
     OutgoingStream,
     unsent_probe,
 )
+from rosx.node.publication import SubscriberLink
 from rosx.transport.loop_thread import LoopThread
 from tests.support.frames import FloodClock as Clock
 from tests.support.frames import assert_delivered, read_frames, twist_frame
@@ -120,6 +121,24 @@ def test_frames_to_a_peer_that_reads_them_as_they_come_go_at_once(
     stream.close()
 
 
+def linked_over_tcp(
+    make_node: Callable[..., Node],
+    monkeypatch: pytest.MonkeyPatch,
+    callback: Callable[[Any], None],
+    queue_size: int | None,
+) -> tuple[Any, SubscriberLink]:
+    """A Twist publisher with ``queue_size`` and a subscriber (unbounded) calling ``callback``,
+    in two nodes linked over TCP: the publisher and its one link."""
+    monkeypatch.setattr(local, "ENABLED", False)
+    monkeypatch.setattr(unixros, "ENABLED", False)
+    talker, listener = make_node("tcp_talker"), make_node("tcp_listener")
+    sub = listener.subscribe("/flood", Twist, callback, queue_size=0)
+    pub = talker.advertise("/flood", Twist, queue_size=queue_size)
+    wait_for(lambda: pub.get_num_connections() == 1 and sub.get_num_connections() == 1)
+    (link,) = talker.publications["/flood"].links
+    return pub, link
+
+
 @pytest.mark.parametrize(
     ("queue_size", "held"),
     [(None, True), (0, True), (100, False)],
@@ -135,9 +154,6 @@ def test_a_publication_holds_a_flood_over_tcp_unless_its_queue_drops(
     """A subscriber stuck in its callback reads nothing: its window fills, then the kernel
     holds bytes back. A bounded queue is never held back over TCP: in batches a flood
     fills the kernel's buffers sooner and drops what one message a send delivered."""
-    monkeypatch.setattr(local, "ENABLED", False)
-    monkeypatch.setattr(unixros, "ENABLED", False)
-    talker, listener = make_node("tcp_talker"), make_node("tcp_listener")
     go_on = threading.Event()
     got: list[int] = []
 
@@ -145,10 +161,7 @@ def test_a_publication_holds_a_flood_over_tcp_unless_its_queue_drops(
         go_on.wait(30)
         got.append(int(msg.linear.x))
 
-    sub = listener.subscribe("/flood", Twist, stuck, queue_size=0)
-    pub = talker.advertise("/flood", Twist, queue_size=queue_size)
-    wait_for(lambda: pub.get_num_connections() == 1 and sub.get_num_connections() == 1)
-    (link,) = talker.publications["/flood"].links
+    pub, link = linked_over_tcp(make_node, monkeypatch, stuck, queue_size)
     sent = 0
     try:
         while not link.stream.holding and sent < 20_000:
@@ -243,13 +256,7 @@ def test_a_publication_paces_over_tcp_only_a_publisher_that_waits(
 ) -> None:
     """``queue_size=None`` waits for a subscriber that is behind, as rospy's synchronous
     publisher does; 0 queues without end and a size drops, as in ROS 1: neither waits."""
-    monkeypatch.setattr(local, "ENABLED", False)
-    monkeypatch.setattr(unixros, "ENABLED", False)
-    talker, listener = make_node("paced_talker"), make_node("paced_listener")
-    sub = listener.subscribe("/paced", Twist, lambda msg: None)
-    pub = talker.advertise("/paced", Twist, queue_size=queue_size)
-    wait_for(lambda: pub.get_num_connections() == 1 and sub.get_num_connections() == 1)
-    (link,) = talker.publications["/paced"].links
+    _, link = linked_over_tcp(make_node, monkeypatch, lambda msg: None, queue_size)
     lowat = link.stream.sock.getsockopt(socket.IPPROTO_TCP, socket.TCP_NOTSENT_LOWAT)
     assert (link.stream.paced, lowat, link.stream.high_water) == (
         (True, PACED_BYTES, PACED_BYTES) if paced else (False, 0, HIGH_WATER)
