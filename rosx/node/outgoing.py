@@ -76,7 +76,8 @@ HIGH_WATER = 4 * 1024 * 1024
 #: A paced stream (see the module's contract): the bytes its kernel may hold unsent, and that
 #: may wait in its queue, before `OutgoingStream.send` waits. Next to a roscpp subscriber on a
 #: machine of two cores, 200 000 Twists from a publisher so paced arrived 1.1-1.2 times as
-#: fast as from one that wrote them all ahead (bench/README.md, "A publisher that waits");
+#: fast as from one that wrote them all ahead, in six comparisons of seven, when the machine
+#: had a core to spare (bench/README.md, "A publisher that waits");
 #: 16 KiB paced too closely (0.6 times: every wake-up of the loop wrote a few frames), 32 KiB
 #: and 1-2 MiB gained less.
 PACED_BYTES = 512 * 1024
