@@ -156,19 +156,17 @@ class OutgoingStream:
     ) -> None:
         """``unread`` says how many bytes sent are still waiting (the peer has not read them,
         or the kernel has not sent them): given, frames may be held back while some wait.
-        ``paced``: with ``queue_size=None``, over TCP, wait sooner while frames are small (see
-        the module's contract)."""
+        ``paced``: with ``queue_size=None``, over TCP (a Unix socket is never paced), wait
+        sooner while frames are small (see the module's contract)."""
         sock.setblocking(False)
         self.sock = sock
         self.fileno = sock.fileno()
         self._io = io
         self._limit = queue_size if queue_size else 0
         self._blocking = queue_size is None
-        #: With ``queue_size=None``, `send` blocks while more bytes than this wait.
-        self.high_water = HIGH_WATER
         self.paced = paced and self._blocking and _limit_unsent(sock, PACED_BYTES)
-        if self.paced:
-            self.high_water = PACED_BYTES
+        #: With ``queue_size=None``, `send` blocks while more bytes than this wait.
+        self.high_water = PACED_BYTES if self.paced else HIGH_WATER
         self._on_close = on_close
         self._lock = threading.Lock()
         self._drained = threading.Condition(self._lock)

@@ -424,10 +424,9 @@ class Publication:
                 unread = unsent_probe(sock)
         # Over TCP a synchronous publisher (queue_size=None) of small messages waits soon for
         # a subscriber that is behind: a roscpp subscriber then has the CPU the publisher
-        # would have spent running ahead.
-        paced = sock.family != socket.AF_UNIX
+        # would have spent running ahead (the stream paces only where it can).
         stream = OutgoingStream(
-            sock, self.io, self.queue_size, self._closed_stream, unread=unread, paced=paced
+            sock, self.io, self.queue_size, self._closed_stream, unread=unread, paced=True
         )
         link = SubscriberLink.connected(stream, accepted.callerid, self.unix_address)
         with self._lock:
