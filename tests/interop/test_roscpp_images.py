@@ -1,7 +1,9 @@
 """A rosx publisher and a roscpp subscriber (over TCPROS): large images, which rosx sends from
 the message itself in parts (`rosx.msg.codec.parts`), reach roscpp as the same bytes, in order,
 latched ones too; a slow roscpp subscriber loses only the oldest, with the publisher's queue,
-and none from an unbounded one, however far behind it fell.
+and none from an unbounded one, however far behind it fell. A publisher that waits
+(``queue_size=None``) of small messages waits for a stopped roscpp subscriber once about a
+megabyte is on its way, then sends it every message; one that dies sets it free.
 
 The roscpp node is `roscpp/image_listener.cpp`, compiled here against Debian's libroscpp-dev
 (`bench.roscpp_program.build`, cached); skipped where a compiler, roscpp or the message headers
@@ -25,6 +27,8 @@ import pytest
 from bench.roscpp_program import build
 from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
+from rosx.node.outgoing import OutgoingStream
+from tests.support.frames import NotedWait
 from tests.support.procs import wait_for
 
 Image = get_message_class("sensor_msgs/Image")
@@ -166,3 +170,69 @@ def test_a_roscpp_subscriber_far_behind_an_unbounded_queue_gets_every_message_in
         listener.proc.send_signal(signal.SIGCONT)
     publish(10_000, 10_000)  # more come while it catches up
     assert listener.until("19999") == sent
+
+
+class StoppedFeed:
+    """A publisher thread of 1000-byte images (small: paced) with ``queue_size=None`` to a
+    roscpp subscriber stopped by SIGSTOP, noting when the publisher first waits."""
+
+    def __init__(self, node: Node, listener: Listener, count: int) -> None:
+        pub = node.advertise("/paced", Image, queue_size=None)
+        wait_for(lambda: pub.get_num_connections() == 1)
+        (link,) = node.publications["/paced"].links
+        self.stream: OutgoingStream = link.stream
+        assert self.stream.paced
+        self.stream._drained = self.noted = NotedWait(self.stream._lock)
+        self.sent: list[tuple[str, int, int]] = []
+        self.done = threading.Event()
+        listener.proc.send_signal(signal.SIGSTOP)
+        image = Image(width=1000, height=1, step=1000, encoding="mono8")
+
+        def publish() -> None:
+            for number in range(count):
+                image.header.frame_id = str(number)
+                image.data = bytes([number % 251]) * 1000
+                pub.publish(image)
+                self.sent.append(expected(str(number), image.data))
+            self.done.set()
+
+        self.thread = threading.Thread(target=publish, daemon=True)
+        self.thread.start()
+
+    def wait_until_it_waits(self) -> None:
+        wait_for(lambda: self.noted.waited.is_set() or self.done.is_set(), what="the wait")
+        assert not self.done.is_set()
+
+
+def test_a_publisher_that_waits_waits_for_a_stopped_roscpp_subscriber_then_sends_everything(
+    make_node: Callable[..., Node], start_listener: Callable[[str, int, int], Listener]
+) -> None:
+    """rospy's synchronous publish: memory does not grow while roscpp reads nothing, and
+    nothing is lost."""
+    listener = start_listener("/paced", 0, 0)
+    feed = StoppedFeed(make_node("paced_camera"), listener, 10_000)
+    try:
+        feed.wait_until_it_waits()
+        assert feed.stream.paced  # its frames are under HOLD_SIZE
+        # At most its queue's limit waits in rosx (what the kernels hold is theirs), and
+        # it waited well before the last message.
+        assert feed.stream._pending_bytes <= feed.stream.high_water + 1100
+        assert len(feed.sent) < 10_000
+    finally:
+        listener.proc.send_signal(signal.SIGCONT)
+    feed.thread.join(30)
+    assert feed.done.is_set()
+    assert listener.until("9999") == feed.sent
+
+
+def test_a_roscpp_subscriber_that_dies_sets_a_waiting_publisher_free(
+    make_node: Callable[..., Node], start_listener: Callable[[str, int, int], Listener]
+) -> None:
+    listener = start_listener("/paced", 0, 0)
+    node = make_node("paced_camera")
+    feed = StoppedFeed(node, listener, 10_000)
+    feed.wait_until_it_waits()
+    listener.proc.kill()  # stopped, then gone: its socket is reset
+    feed.thread.join(30)
+    assert feed.done.is_set()  # the rest went nowhere, as in ROS 1
+    wait_for(lambda: not node.publications["/paced"].links, what="the link to close")

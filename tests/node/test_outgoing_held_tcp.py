@@ -32,7 +32,7 @@ from rosx.node.outgoing import (
 from rosx.node.publication import SubscriberLink
 from rosx.transport.loop_thread import LoopThread
 from tests.support.frames import FloodClock as Clock
-from tests.support.frames import assert_delivered, read_frames, twist_frame
+from tests.support.frames import NotedWait, assert_delivered, read_frames, twist_frame
 from tests.support.procs import wait_for
 
 Twist = get_message_class("geometry_msgs/Twist")
@@ -175,18 +175,6 @@ def test_a_publication_holds_a_flood_over_tcp_unless_its_queue_drops(
     if held:
         wait_for(lambda: len(got) == sent, what="every message")
         assert got == list(range(sent))
-
-
-class NotedWait(threading.Condition):
-    """A stream's condition (``_drained``) that notes when its publisher first waits."""
-
-    def __init__(self, lock: Any) -> None:
-        super().__init__(lock)
-        self.waited = threading.Event()
-
-    def wait(self, timeout: float | None = None) -> bool:
-        self.waited.set()
-        return super().wait(timeout)
 
 
 def test_a_paced_publisher_waits_for_a_peer_that_is_behind(

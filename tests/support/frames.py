@@ -1,6 +1,7 @@
 """TCPROS frames read back from a socket, for tests of what a stream sends, and a small one to
 send; a clock for the stream that makes a series of frames a flood however loaded the machine;
-a socket that holds a subscriber's read at the moment it has taken bytes and counted none."""
+a socket that holds a subscriber's read at the moment it has taken bytes and counted none; a
+stream's condition that notes when its publisher waits."""
 
 from __future__ import annotations
 
@@ -99,3 +100,15 @@ class HeldRead:
 
     def __getattr__(self, name: str) -> Any:
         return getattr(self.real, name)
+
+
+class NotedWait(threading.Condition):
+    """A stream's condition (``_drained``) that notes when its publisher first waits."""
+
+    def __init__(self, lock: Any) -> None:
+        super().__init__(lock)
+        self.waited = threading.Event()
+
+    def wait(self, timeout: float | None = None) -> bool:
+        self.waited.set()
+        return super().wait(timeout)
