@@ -199,10 +199,6 @@ class StoppedFeed:
         self.thread = threading.Thread(target=publish, daemon=True)
         self.thread.start()
 
-    def wait_until_it_waits(self) -> None:
-        wait_for(lambda: self.noted.waited.is_set() or self.done.is_set(), what="the wait")
-        assert not self.done.is_set()
-
 
 def test_a_publisher_that_waits_waits_for_a_stopped_roscpp_subscriber_then_sends_everything(
     make_node: Callable[..., Node], start_listener: Callable[[str, int, int], Listener]
@@ -212,7 +208,7 @@ def test_a_publisher_that_waits_waits_for_a_stopped_roscpp_subscriber_then_sends
     listener = start_listener("/paced", 0, 0)
     feed = StoppedFeed(make_node("paced_camera"), listener, 10_000)
     try:
-        feed.wait_until_it_waits()
+        feed.noted.until_waited(feed.done)
         assert feed.stream.paced  # its frames are under HOLD_SIZE
         # At most its queue's limit waits in rosx (what the kernels hold is theirs), and
         # it waited well before the last message.
@@ -231,7 +227,7 @@ def test_a_roscpp_subscriber_that_dies_sets_a_waiting_publisher_free(
     listener = start_listener("/paced", 0, 0)
     node = make_node("paced_camera")
     feed = StoppedFeed(node, listener, 10_000)
-    feed.wait_until_it_waits()
+    feed.noted.until_waited(feed.done)
     listener.proc.kill()  # stopped, then gone: its socket is reset
     feed.thread.join(30)
     assert feed.done.is_set()  # the rest went nowhere, as in ROS 1

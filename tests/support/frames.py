@@ -112,3 +112,8 @@ class NotedWait(threading.Condition):
     def wait(self, timeout: float | None = None) -> bool:
         self.waited.set()
         return super().wait(timeout)
+
+    def until_waited(self, done: threading.Event) -> None:
+        """Return once the publisher waits; fail if it finished (``done``) without waiting."""
+        wait_for(lambda: self.waited.is_set() or done.is_set(), what="the publisher to wait")
+        assert not done.is_set()
