@@ -2,9 +2,9 @@
 
 As ROS 1's: every frame's broadcaster and its average and largest delay (now minus the
 transform's stamp; 0 for static ones), every broadcaster's rate and delays, and with two frames
-the chain between them and the delay of their lookup, printed about five times a second. The
-broadcaster of a static frame reads ``<node>(static)``: its real name, where ROS 1 prints
-``unknown_publisher(static)``.
+the chain between them and the delay of their lookup, printed about five times a second. Each
+broadcaster is named (``<node>``, ``<node>(static)`` for a static frame), where ROS 1's prints
+``unknown_publisher`` and ``unknown_publisher(static)``.
 """
 
 from __future__ import annotations
