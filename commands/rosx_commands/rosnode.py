@@ -11,6 +11,7 @@ from rosx.graph.nodes import (
     node_names,
     purge_node,
     unreachable_nodes,
+    unreachable_reasons,
 )
 from rosx.graph.state import registrations
 from rosx.master.client import MasterError
@@ -340,9 +341,11 @@ def cleanup(argv: list[str], env: Environment) -> int:
     """``rosnode cleanup``: unregister the nodes that no longer answer, once confirmed."""
     ToolParser(env, "rosnode", "usage: %prog cleanup").parse(argv)
     master = env.master(CALLER_ID)
-    dead = unreachable_nodes(master, node_names(master))
+    dead = unreachable_reasons(master, node_names(master))
     if not dead:
         return ExitStatus.OK
+    for why in dead.values():
+        env.err(why)
     env.out("Unable to contact the following nodes:")
     env.out("\n".join(f" * {n}" for n in dead))
     env.out("Warning: these might include alive and functioning nodes, e.g. in unstable networks.")

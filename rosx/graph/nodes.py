@@ -6,6 +6,7 @@ What ``rosnode list/ping/kill/machine/cleanup`` and roswtf ask of the nodes, as 
 - `node_names`: every node a registration names, in a namespace or all;
 - `unreachable_nodes`: the nodes whose Slave API does not answer ``getPid`` (asked side by side,
   so hung nodes cost one timeout in all), or that the master cannot locate;
+  `unreachable_reasons` with why each did not, in rosnode's words;
 - `contact_failure`: why one node did not answer, in rosnode's words (unknown host, connection
   refused, timed out);
 - `kill_node`: a ``shutdown`` call to a node (ROS wiki Slave_API);
@@ -16,13 +17,14 @@ What ``rosnode list/ping/kill/machine/cleanup`` and roswtf ask of the nodes, as 
 from __future__ import annotations
 
 import contextlib
+import errno
 import socket
 from urllib.parse import urlsplit
 
 from rosx.graph.state import registrations
 from rosx.master.client import MasterError
 from rosx.names.resolution import make_global_ns
-from rosx.transport.errors import FaultError, TransportError
+from rosx.transport.errors import CallTimeoutError, ConnectError, FaultError, TransportError
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -50,25 +52,41 @@ def unreachable_nodes(
 ) -> list[str]:
     """The nodes of ``nodes`` whose Slave API does not answer ``getPid`` (or that the master
     cannot locate), in order; asked side by side, so hung nodes cost one timeout in all."""
+    return list(unreachable_reasons(master, nodes, timeout))
+
+
+def unreachable_reasons(
+    master: MasterClient, nodes: list[str], timeout: float = PING_TIMEOUT
+) -> dict[str, str]:
+    """`unreachable_nodes`, each with why it did not answer, in the words rosnode's ping prints
+    (what ``rosnode cleanup`` writes to stderr for each)."""
     from concurrent.futures import ThreadPoolExecutor  # noqa: PLC0415 - only these need threads
 
-    def dead(node: str) -> bool:
+    def why(node: str) -> str | None:
         uri = master.lookup_node(node)
         if uri is None:
-            return True
+            return f"cannot ping [{node}]: unknown node"
         try:
             master.node_call(uri, "getPid", timeout=timeout)
+        except CallTimeoutError:
+            return f"connection to [{node}] timed out"
+        except ConnectError as error:
+            if error.errno == errno.ECONNREFUSED:
+                return f"ERROR: connection refused to [{uri}]"
+            if error.errno in (socket.EAI_NONAME, socket.EAI_AGAIN):
+                return f"ERROR: Unknown host [{urlsplit(uri).hostname}] for node [{node}]"
+            return f"connection to [{node}] failed"
         except (TransportError, FaultError):
-            return True
+            return f"connection to [{node}] failed"
         except MasterError:
-            return False  # it answered
-        return False
+            return None  # it answered
+        return None
 
     if not nodes:
-        return []
+        return {}
     with ThreadPoolExecutor(min(len(nodes), WORKERS)) as pool:
-        verdicts = list(pool.map(dead, nodes))
-    return [node for node, gone in zip(nodes, verdicts, strict=True) if gone]
+        reasons = list(pool.map(why, nodes))
+    return {node: reason for node, reason in zip(nodes, reasons, strict=True) if reason}
 
 
 def contact_failure(node: str, uri: str | None, timeout: float = PING_TIMEOUT) -> str:
@@ -129,4 +147,5 @@ __all__ = [
     "node_names",
     "purge_node",
     "unreachable_nodes",
+    "unreachable_reasons",
 ]

@@ -49,3 +49,32 @@ def test_ping_of_a_live_node_succeeds(master: str, make_node: Callable[..., Node
     )
     assert done.status == 0
     assert done.err == ""
+
+
+def test_cleanup_names_why_each_dead_node_failed_then_purges_it_once_confirmed(
+    master: str, make_node: Callable[..., Node]
+) -> None:
+    make_node("alive")
+    ghost = _ghost(master)
+    env = clean_environ(ROS_MASTER_URI=master)
+    asked = (
+        "Unable to contact the following nodes:\n * /ghost\n"
+        "Warning: these might include alive and functioning nodes, e.g. in unstable networks.\n"
+        "Cleanup will purge all information about these nodes from the master.\n"
+        "Please type y or n to continue:\n"
+    )
+    kept = rosx("rosnode", "cleanup", stdin="n\n", environ=env)
+    assert (kept.out, kept.err, kept.status) == (
+        asked + "aborting\n",
+        f"ERROR: connection refused to [{ghost}]\n",
+        0,
+    )
+    assert "/ghost" in rosx("rosnode", "list", environ=env).out.split()
+    purged = rosx("rosnode", "cleanup", stdin="y\n", environ=env)
+    assert (purged.out, purged.err, purged.status) == (
+        asked + "Unregistering /ghost\ndone\n",
+        f"ERROR: connection refused to [{ghost}]\n",
+        0,
+    )
+    listed = rosx("rosnode", "list", environ=env).out.split()
+    assert "/ghost" not in listed and "/alive" in listed
