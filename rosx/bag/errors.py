@@ -22,6 +22,10 @@ class BagFormatError(BagError):
     """The file's bytes are not a valid bag (ROS 1's ``ROSBagFormatException``)."""
 
 
+class NotABagError(BagError):
+    """The file does not begin with a bag's version line: it is empty, or not a bag at all."""
+
+
 class BagUnindexedError(BagError):
     """The bag has no index: its recorder never closed it (``ROSBagUnindexedException``)."""
 
@@ -33,4 +37,10 @@ class BagEncryptNotSupportedError(BagError):
     """The bag is encrypted (``ROSBagEncryptNotSupportedException``); rosx cannot decrypt."""
 
 
-__all__ = ["BagEncryptNotSupportedError", "BagError", "BagFormatError", "BagUnindexedError"]
+__all__ = [
+    "BagEncryptNotSupportedError",
+    "BagError",
+    "BagFormatError",
+    "BagUnindexedError",
+    "NotABagError",
+]

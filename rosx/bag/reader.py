@@ -21,7 +21,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, BinaryIO, NamedTuple
 
 from rosx.bag import records as rec
-from rosx.bag.errors import BagEncryptNotSupportedError, BagError, BagFormatError, BagUnindexedError
+from rosx.bag.errors import (
+    BagEncryptNotSupportedError,
+    BagError,
+    BagFormatError,
+    BagUnindexedError,
+    NotABagError,
+)
 
 if TYPE_CHECKING:
     from collections.abc import Collection, Iterator
@@ -79,8 +85,8 @@ class BagReader:
 
         Raises:
             OSError: the file cannot be opened.
-            BagError: it is not a bag, or a damaged one (`BagFormatError`), or an unindexed
-                one (`BagUnindexedError`, unless ``allow_unindexed``).
+            BagError: it is not a bag (`NotABagError`), or a damaged one (`BagFormatError`),
+                or an unindexed one (`BagUnindexedError`, unless ``allow_unindexed``).
         """
         self.path = os.fspath(path)
         self.file: BinaryIO = Path(self.path).open("rb")  # noqa: SIM115 - closed by close()
@@ -100,9 +106,9 @@ class BagReader:
     def _open(self, allow_unindexed: bool) -> bool:
         magic = self.file.readline(64)
         if not magic:
-            raise BagError("empty file")
+            raise NotABagError("empty file")
         if not magic.startswith(b"#ROSBAG V"):
-            raise BagError("This does not appear to be a bag file")
+            raise NotABagError("This does not appear to be a bag file")
         if magic != rec.MAGIC:
             version = magic[9:].strip().decode("latin-1")
             raise BagError(f"bag format version {version} is not supported (rosx reads 2.0)")

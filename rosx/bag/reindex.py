@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import NamedTuple
 
 from rosx.bag import records as rec
-from rosx.bag.errors import BagError, BagFormatError
+from rosx.bag.errors import BagError, BagFormatError, NotABagError
 
 
 class ReindexReport(NamedTuple):
@@ -208,9 +208,9 @@ def reindex(path: str | os.PathLike[str]) -> ReindexReport:
     file = Path(path)
     raw = file.read_bytes()
     if not raw:
-        raise BagError("empty file")
+        raise NotABagError("empty file")
     if not raw.startswith(rec.MAGIC):
-        raise BagError("This does not appear to be a bag file")
+        raise NotABagError("This does not appear to be a bag file")
     rebuild = _Rebuild()
     rebuild.connections.update(_indexed_connections(file))
     _scan(raw, rebuild)

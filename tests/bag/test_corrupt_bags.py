@@ -9,6 +9,7 @@ files through Debian's rosbag.
 
 from __future__ import annotations
 
+import re
 import shutil
 from pathlib import Path
 
@@ -103,4 +104,42 @@ def test_rosbag_check_of_a_damaged_bag_says_so_in_one_line(whole: Path, tmp_path
     assert rosx("rosbag", "reindex", "-q", str(tmp_path / "again.bag")).status == 0
     assert rosx("rosbag", "check", str(tmp_path / "again.bag")).out == (
         "Bag file does not need any migrations.\n"
+    )
+
+
+_LOG_TIME = r"\[\d+\.\d{9}\]"
+
+
+@pytest.mark.parametrize(
+    "content", [bytes(range(256)) * 40, b"a text file\n", b""], ids=["random", "text", "empty"]
+)
+def test_rosbag_play_of_a_file_that_is_no_bag_says_what_ros1s_says(
+    tmp_path: Path, content: bytes
+) -> None:
+    path = tmp_path / "bad.bag"
+    path.write_bytes(content)
+    result = rosx("rosbag", "play", str(path))
+    assert result.status == 1  # ROS 1's exits 0 (README.md)
+    assert re.fullmatch(rf"\[ INFO\] {_LOG_TIME}: Opening {re.escape(str(path))}\n", result.out)
+    assert re.fullmatch(rf"\[FATAL\] {_LOG_TIME}: Error reading version line\n", result.err)
+
+
+@pytest.mark.parametrize("cut", ["unindexed", "cut short"])
+def test_rosbag_play_of_an_unindexed_bag_says_to_reindex_it(
+    whole: Path, tmp_path: Path, cut: str
+) -> None:
+    data = whole.read_bytes()
+    path = tmp_path / "cut.bag"
+    if cut == "unindexed":  # as a killed recorder leaves it: the header's index_pos is 0
+        with BagReader(whole) as bag:
+            index_pos = bag.index_pos
+        field = b"index_pos=" + index_pos.to_bytes(8, "little")
+        data = data.replace(field, b"index_pos=" + bytes(8), 1)[:index_pos]
+    else:
+        data = data[: chunk_spans(whole)[1][0] + 40]
+    path.write_bytes(data)
+    result = rosx("rosbag", "play", str(path))
+    assert (result.status, result.err) == (
+        1,
+        f"Bag file {path} is unindexed.  Run rosbag reindex.\n",
     )

@@ -216,7 +216,7 @@ def play(argv: list[str], env: Environment) -> int:
     if not args:
         parser.error("You must specify at least 1 bag file to play back.")
 
-    from rosx.bag.errors import BagError, BagUnindexedError  # noqa: PLC0415 - bag code loads only for bags
+    from rosx.bag.errors import BagError, BagUnindexedError, NotABagError  # noqa: PLC0415 - bag code loads only for bags
     from rosx.bag.player import Player, PlayOptions  # noqa: PLC0415 - bag code loads only for bags
     from rosx.bag.reader import BagReader  # noqa: PLC0415 - bag code loads only for bags
     from rosx.node import Node  # noqa: PLC0415 - the node runtime loads with the first node
@@ -228,10 +228,15 @@ def play(argv: list[str], env: Environment) -> int:
             try:
                 bags.append(BagReader(path))
             except BagUnindexedError:
-                _log(env, "FATAL", f"Bag unindexed: {path}.  Run rosbag reindex.")
+                # ROS 1's words for a bag whose index was never written; also said of a bag
+                # cut short, where ROS 1's reports a failed read instead (README.md).
+                env.err(f"Bag file {path} is unindexed.  Run rosbag reindex.")
                 return ExitStatus.ERROR
             except OSError:
                 _log(env, "FATAL", f"Error opening file: {path}")
+                return ExitStatus.ERROR
+            except NotABagError:
+                _log(env, "FATAL", "Error reading version line")
                 return ExitStatus.ERROR
             except BagError as exc:
                 _log(env, "FATAL", f"Error reading {path}: {exc}")
