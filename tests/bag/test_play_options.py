@@ -8,6 +8,7 @@ the player's stdin.
 from __future__ import annotations
 
 import os
+import re
 import select
 import signal
 import subprocess
@@ -25,7 +26,7 @@ from rosx.bag import api
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.msg.codec.rostime import Time
 from rosx.node import Node
-from tests.support.cli import clean_environ
+from tests.support.cli import clean_environ, rosx
 from tests.support.procs import stop, wait_for
 
 String = get_message_class("std_msgs/String")
@@ -266,6 +267,21 @@ def test_start_and_duration_select_a_window_as_ros1(
     assert player.finish() == 0
     assert listener.wait(3) == ["/chatter:2", "/chatter:3", "/chatter:4"]
     assert " [RUNNING]  Bag Time:    101.000000   Duration: 0.000000 / 1.000000" in player.out
+
+
+@pytest.mark.parametrize("rate", ["0", "-1"])
+def test_a_rate_not_above_zero_is_one_error_line_and_plays_nothing(
+    tmp_path: Path, rate: str
+) -> None:
+    bag = write_bag(tmp_path / "r.bag", [0.0, 0.5])
+    result = rosx("rosbag", "play", "-r", rate, bag)
+    assert result.status == 1
+    assert result.out == ""
+    said = (
+        f"The rate (-r {rate}) must be greater than 0 "
+        "(-i publishes without waiting, --pause starts paused)"
+    )
+    assert re.fullmatch(rf"\[FATAL\] \[\d+\.\d{{9}}\]: {re.escape(said)}\n", result.err)
 
 
 def test_topics_and_remaps_choose_and_rename_what_is_played(

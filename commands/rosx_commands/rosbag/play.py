@@ -215,6 +215,14 @@ def play(argv: list[str], env: Environment) -> int:
         args.append(options.bags)
     if not args:
         parser.error("You must specify at least 1 bag file to play back.")
+    if not options.rate > 0:  # ROS 1's dies of a time overflow at 0, and below publishes at once
+        _log(
+            env,
+            "FATAL",
+            f"The rate (-r {options.rate:g}) must be greater than 0 "
+            "(-i publishes without waiting, --pause starts paused)",
+        )
+        return ExitStatus.ERROR
 
     from rosx.bag.errors import BagError, BagUnindexedError, NotABagError  # noqa: PLC0415 - bag code loads only for bags
     from rosx.bag.player import Player, PlayOptions  # noqa: PLC0415 - bag code loads only for bags
