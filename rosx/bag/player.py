@@ -8,7 +8,8 @@ Timing (ROS 1's ``rosbag play``, tools/rosbag/src/player.cpp): a message recorde
 seconds after the first one played is published ``d / rate`` seconds after playback began,
 plus the time spent paused; ``immediate`` publishes without waiting; ``skip_empty`` shortens
 gaps longer than that many seconds to nothing. ``start`` and ``duration`` select a window of
-the bags (seconds from the bags' start); ``loop`` plays again from the start; ``keep_alive``
+the bags (seconds from the bags' start; the status line's duration counts from the window's
+first message to its last, as ROS 1's does); ``loop`` plays again from the start; ``keep_alive``
 keeps the node (and its latched topics) up until stopped. With ``clock`` the bag time is
 published on ``/clock`` at ``hz``. `Player.toggle_pause`, `Player.step` and
 `Player.toggle_pause_topics` serve the keys, and `Player.serve_pause` the ``~pause_playback``
@@ -199,19 +200,31 @@ class Player:
                 latch=any(c.latching for c in conns),
             )
 
-    def _window(self) -> tuple[int, int, int | None]:
+    def _window(self) -> tuple[int, int | None]:
+        """The bag times (ns) asked for: ``start`` seconds after the bags' first message, and
+        ``duration`` seconds on (None: to the end)."""
         starts = [b.start_time for b in self.bags if b.start_time is not None]
-        ends = [b.end_time for b in self.bags if b.end_time is not None]
-        bag_start = min(starts) if starts else 0
-        bag_end = max(ends) if ends else 0
-        first = bag_start + int(self.options.start * _NS)
+        first = (min(starts) if starts else 0) + int(self.options.start * _NS)
         last = first + int(self.options.duration * _NS) if self.options.duration else None
-        return bag_start, bag_end, last
+        return first, last
+
+    def _span(self) -> tuple[int, int] | None:
+        """The times (ns) of the first and the last message to be played, as ROS 1's status
+        line counts them."""
+        chosen = self._connections()
+        first, last = self._window()
+        spans = [
+            span
+            for i, bag in enumerate(self.bags)
+            if chosen[i] and (span := bag.span(set(chosen[i]), first, last)) is not None
+        ]
+        if not spans:
+            return None
+        return min(s[0] for s in spans), max(s[1] for s in spans)
 
     def _messages(self) -> Iterator[tuple[Connection, int, bytes]]:
         chosen = self._connections()
-        bag_start, _, last = self._window()
-        first = bag_start + int(self.options.start * _NS)
+        first, last = self._window()
         streams = [
             bag.messages(set(chosen[i]), first, last)
             for i, bag in enumerate(self.bags)
@@ -279,15 +292,15 @@ class Player:
                 clock.join()
 
     def _play_once(self) -> None:
-        bag_start, bag_end, last = self._window()
-        first = bag_start + int(self.options.start * _NS)
-        total = ((bag_end if last is None else min(last, bag_end)) - first) / _NS
+        span = self._span()
+        if span is None:
+            return
         rate = self.options.rate if self.options.rate > 0 else 1.0
         skip = int(self.options.skip_empty * _NS) if self.options.skip_empty else 0
         origin_wall: float | None = None
         origin_bag = 0
         previous = 0
-        self._first, self._total = first, total
+        self._first, self._total = span[0], (span[1] - span[0]) / _NS
         for conn, stamp, data in self._messages():
             if origin_wall is None:
                 origin_wall, origin_bag, previous = time.monotonic(), stamp, stamp

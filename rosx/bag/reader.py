@@ -280,6 +280,48 @@ class BagReader:
                 return
             yield heapq.heappop(heap)
 
+    def span(
+        self,
+        conns: Collection[int] | None = None,
+        start: int | None = None,
+        end: int | None = None,
+    ) -> tuple[int, int] | None:
+        """The times (ns) of the first and the last message of ``conns`` with
+        ``start <= time <= end``, or None if there is none; from the index records of the
+        chunks at either end alone."""
+        low = -1 if start is None else start
+        high = 2**64 if end is None else end
+        chunks = [
+            i
+            for i, info in enumerate(self.chunks)
+            if info.start_time <= high
+            and info.end_time >= low
+            and (conns is None or any(c in conns for c in info.counts))
+        ]
+
+        def times(index: int) -> list[int]:
+            return [
+                time_ns
+                for conn, items in self.chunk_index(index).items()
+                if conns is None or conn in conns
+                for time_ns, _ in items
+                if low <= time_ns <= high
+            ]
+
+        first = high + 1
+        for i in sorted(chunks, key=lambda i: self.chunks[i].start_time):
+            if self.chunks[i].start_time >= first:
+                break
+            first = min([first, *times(i)])
+        if first > high:
+            return None
+        last = first
+        for i in sorted(chunks, key=lambda i: self.chunks[i].end_time, reverse=True):
+            if self.chunks[i].end_time <= last:
+                break
+            last = max([last, *times(i)])
+        return first, last
+
     def read_message(self, chunk: int, offset: int) -> tuple[int, int, bytes]:
         """The message record at ``offset`` in chunk ``chunk``: ``(conn, time_ns, data)``."""
         data = self.chunk_data(chunk)

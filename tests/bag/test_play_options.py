@@ -269,6 +269,24 @@ def test_start_and_duration_select_a_window_as_ros1(
     assert " [RUNNING]  Bag Time:    101.000000   Duration: 0.000000 / 1.000000" in player.out
 
 
+@pytest.mark.parametrize(
+    ("window", "status"),
+    [
+        (["-s", "-5"], "Bag Time:    100.000000   Duration: 0.000000 / 1.900000"),
+        (["-u", "1.5"], "Bag Time:    100.000000   Duration: 0.000000 / 1.450000"),
+        (["-s", "0.5", "-u", "1"], "Bag Time:    100.700000   Duration: 0.000000 / 0.750000"),
+    ],
+    ids=["before-the-start", "duration", "both"],
+)
+def test_the_status_line_counts_from_the_first_to_the_last_message_played_as_ros1s(
+    play: Callable[..., Play], tmp_path: Path, window: list[str], status: str
+) -> None:
+    bag = write_bag(tmp_path / "s.bag", [0.0, 0.3, 0.7, 1.2, 1.45, 1.9])
+    player = play("-i", "-d", "0", *window, bag)
+    assert player.finish() == 0
+    assert f"\n [RUNNING]  {status}               \n" in player.out  # a text pipe reads \r as \n
+
+
 @pytest.mark.parametrize("rate", ["0", "-1"])
 def test_a_rate_not_above_zero_is_one_error_line_and_plays_nothing(
     tmp_path: Path, rate: str
