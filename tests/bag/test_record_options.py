@@ -290,3 +290,13 @@ def test_a_topic_the_master_refuses_is_one_error_line_and_leaves_no_file(
     )
     assert (done.status, done.err) == (1, "ERROR: parameter [topic] contains illegal chars\n")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_bag_that_cannot_be_created_is_ros1s_error_line(master: str, tmp_path: Path) -> None:
+    target = tmp_path / "no such folder" / "x"
+    done = rosx(
+        "rosbag", "record", "-O", str(target), "/scan", environ=clean_environ(ROS_MASTER_URI=master)
+    )
+    assert done.status == 1  # ROS 1's exits 0 (README.md)
+    said = f"Error writing: Error opening file: {target}.bag.active"
+    assert re.fullmatch(rf"\[ERROR\] \[\d+\.\d{{9}}\]: {re.escape(said)}\n", done.err)

@@ -283,14 +283,16 @@ def record(argv: list[str], env: Environment) -> int:
     except Exception:
         node.shutdown("start-up failed")
         raise unreachable(env, uri) from None
-    recorder = Recorder(node, record_options, _Console(env, options.quiet))
+    console = _Console(env, options.quiet)
+    recorder = Recorder(node, record_options, console)
     try:
         with stop_on_signals() as stop:
             try:
                 recorder.start()
             except OSError as exc:
-                env.err(f"Error writing: {exc}")
-                return ExitStatus.ERROR
+                problem = f"Error opening file: {exc.filename}" if exc.filename else exc.strerror
+                console("ERROR", f"Error writing: {problem or exc}")
+                return ExitStatus.ERROR  # ROS 1's exits 0 (README.md)
             while not stop.is_set() and not recorder.stopping and not node.is_shutdown():
                 time.sleep(0.05)
             recorder.stop()
