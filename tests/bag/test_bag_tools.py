@@ -66,6 +66,19 @@ def test_filter_compress_decompress(bag: str, tmp_path: Path) -> None:
         assert plain.chunk_header(0).compression == "none"
 
 
+@pytest.mark.parametrize("command", ["compress", "decompress", "reindex"])
+def test_a_file_that_is_no_bag_is_one_error_line_and_exit_1(
+    bag: str, tmp_path: Path, command: str
+) -> None:
+    junk = tmp_path / "junk.bag"
+    junk.write_bytes(bytes(range(256)) * 40)
+    result = rosx("rosbag", command, str(junk), bag)
+    assert result.status == 1
+    said = result.err.splitlines()[0]  # reindex then says what it kept of the other
+    assert said == f"ERROR reading {junk}: This does not appear to be a bag file"
+    assert Path(bag.replace(".bag", ".orig.bag")).exists()  # the other file is done
+
+
 def test_reindex_of_a_bag_cut_short(bag: str, tmp_path: Path) -> None:
     cut = tmp_path / "cut.bag.active"
     cut.write_bytes(Path(bag).read_bytes()[:4200])

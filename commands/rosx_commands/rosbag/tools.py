@@ -126,6 +126,7 @@ def _in_place(
     status = ExitStatus.OK
     for path in paths:
         if not check(path):
+            status = ExitStatus.ERROR  # ROS 1's exits 0 or crashes (README.md)
             continue
         out = (
             path if options.output_dir is None else str(Path(options.output_dir) / Path(path).name)
