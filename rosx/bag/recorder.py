@@ -87,7 +87,7 @@ class RecordOptions:
         repeat_latched: bool = False,
         publish: bool = False,
     ) -> None:
-        self.topics = list(dict.fromkeys(topics or []))  # in the order given, as ROS 1
+        self.topics = sorted(set(topics or []))  # ROS 1's keeps them in a std::set
         self.record_all = record_all
         self.regex = regex
         self.exclude = re.compile(exclude) if exclude else None
@@ -191,7 +191,7 @@ class Recorder:
         # ROS 1's order of the log lines: the named topics' subscriptions, then the file. What
         # arrives meanwhile waits in the queue for the writer thread.
         for topic in self.options.topics if not self.options.regex else []:
-            self._subscribe(self.node.resolve(topic))
+            self._subscribe(self.node.resolve(topic), named=topic)
         self._open_bag()
         writer = threading.Thread(target=self._write_loop, name="rosx-record", daemon=True)
         self._threads.append(writer)
@@ -255,10 +255,11 @@ class Recorder:
             return any(p.fullmatch(topic) for p in self.options.patterns)
         return topic in self.options.topics
 
-    def _subscribe(self, topic: str) -> None:
+    def _subscribe(self, topic: str, named: str = "") -> None:
+        """Subscribe to ``topic``, logged by the name the user gave (``named``), as ROS 1's."""
         if topic in self._subscribers or self._stopping.is_set() or self._closing:
             return
-        self.log("INFO", f"Subscribing to {topic}")
+        self.log("INFO", f"Subscribing to {named or topic}")
 
         def queue(msg: RawMessage, topic: str = topic) -> None:
             self._on_message(topic, msg)

@@ -260,22 +260,23 @@ def test_publish_announces_each_new_file_on_begin_write(
     assert announced == [f"{tmp_path}/{name}" for name in names]
 
 
-def test_named_topics_are_subscribed_in_the_order_given_then_the_file_opens(
+def test_named_topics_are_subscribed_in_sorted_order_then_the_file_opens(
     make_node: Callable[..., Node], tmp_path: Path
 ) -> None:
-    """ROS 1's C++ recorder logs ``Subscribing to`` for each named topic, in the order given,
-    before ``Recording to``."""
+    """ROS 1's C++ recorder logs ``Subscribing to`` for each named topic, sorted, once each
+    and as given, before ``Recording to``."""
     logged: list[str] = []
     recorder = _record(
         make_node("record"),
         tmp_path / "order",
         lambda level, text: logged.append(f"{level} {text}"),
-        topics=["/zeta", "/alpha", "/zeta"],
+        topics=["/zeta", "/alpha", "/zeta", "beta"],
     )
     recorder.stop()
     assert logged == [
-        "INFO Subscribing to /zeta",
         "INFO Subscribing to /alpha",
+        "INFO Subscribing to /zeta",
+        "INFO Subscribing to beta",
         f"INFO Recording to '{tmp_path}/order.bag'.",
         f"INFO Closing '{tmp_path}/order.bag'.",
     ]
