@@ -86,3 +86,20 @@ def test_a_helper_started_without_stdout_gives_its_nodes_their_logs(tmp_path: Pa
     done = subprocess.run([sys.executable, "-c", launcher], timeout=120, check=False)
     assert done.returncode == 0
     assert log.read_text() == "hello\n"
+
+
+def test_a_launcher_stopped_while_the_helper_loads_leaves_no_traceback() -> None:
+    """Ctrl-C before any node starts closes the socket while the helper still imports rospy:
+    the helper must end quietly when it finds the launcher gone."""
+    launcher = (
+        "import os, sys\n"
+        "from rosx.launch.run.zygote import ZygoteClient\n"
+        "client = ZygoteClient(dict(os.environ), on_exit=lambda: None)\n"
+        "client.close()\n"
+        "sys.exit(client.process.returncode)\n"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", launcher], capture_output=True, text=True, timeout=120, check=False
+    )
+    assert done.stderr == ""
+    assert done.returncode == 0

@@ -134,6 +134,15 @@ def serve(fd: int) -> int:
     """The helper's loop on the control socket ``fd``; returns when the launcher is gone."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     control = socket.socket(fileno=fd)
+    try:
+        return _serve(control)
+    except ConnectionError:
+        # A launcher stopped early (Ctrl-C while the helper still loads) closes the socket
+        # before the helper's next message: that is its way of saying it is gone.
+        return 0
+
+
+def _serve(control: socket.socket) -> int:
     lines = _Lines(control)
     first = lines.next()
     if first is None:
