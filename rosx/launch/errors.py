@@ -42,4 +42,16 @@ class LaunchError(Exception):
         return ": ".join([*parts, message])
 
 
-__all__ = ["LaunchError"]
+class NodePackageError(LaunchError):
+    """A node's package is not on the package path; ``package`` names it.
+
+    ``str()`` says ``Resource not found: PACKAGE``; roslaunch, starting the node, says the
+    package alone and the paths it searched (`rosx.packages.index.PackageIndex.not_found_text`).
+    """
+
+    def __init__(self, file: str, line: int, tag: str, package: str) -> None:
+        super().__init__(file, line, tag, f"Resource not found: {package}")
+        self.package = package
+
+
+__all__ = ["LaunchError", "NodePackageError"]

@@ -117,6 +117,12 @@ class PackageIndex:
             raise PackageNotFoundError(name)
         return directory
 
+    def not_found_text(self, name: str) -> str:
+        """What rospkg says of package ``name`` not found: the name, then each ``ROS path
+        [N]=DIR`` of the package path searched."""
+        searched = [f"ROS path [{n}]={path}" for n, path in enumerate(self.package_path)]
+        return "\n".join([name, *searched])
+
     def directories(self, name: str) -> list[Path]:
         """Where package ``name``'s files are looked for: the package path's directory, then
         rosx's own of that name. A package on the path shadows rosx's only for the files it

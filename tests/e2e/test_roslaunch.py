@@ -87,6 +87,13 @@ MISSING = """\
 </launch>
 """
 
+NOPKG = """\
+<launch>
+  <node pkg="nopkg" type="foo" name="foo"/>
+  <node name="spin" pkg="labl" type="spinner.py"/>
+</launch>
+"""
+
 BROKEN = """\
 <launch>
   <node name="spin" pkg="labl" type="spinner.py"/>
@@ -245,6 +252,7 @@ def world(tmp_path: Path) -> Iterator[dict[str, Any]]:
         "clean.launch": CLEAN,
         "stub.launch": STUB,
         "missing.launch": MISSING,
+        "nopkg.launch": NOPKG,
         "broken.launch": BROKEN,
         "dice.launch": TWO_DICE,
     }.items():
@@ -571,6 +579,21 @@ def test_a_node_that_cannot_be_found_is_reported_and_the_others_start(
         "permission is set to executable (chmod +x)\n"
     )
     assert "nowhere-2" not in launch.pids()
+
+
+def test_a_node_of_a_package_not_found_is_reported_as_roslaunch_does(
+    world: dict[str, Any],
+) -> None:
+    with launched(["labl", "nopkg.launch"], world["env"]) as launch:
+        launch.wait_for_text("process[spin-3]: started with pid")
+        _wait_registered(world["uri"], "/spin")
+        assert launch.interrupt() == 0
+    where = world["home"] / "src" / "labl" / "launch" / "nopkg.launch"
+    searched = world["env"]["ROS_PACKAGE_PATH"].split(os.pathsep)
+    paths = "".join(f"ROS path [{n}]={path}\n" for n, path in enumerate(searched))
+    assert launch.err == (
+        f"ERROR: cannot launch node of type [nopkg/foo]: {where}:2: <node>: nopkg\n{paths}"
+    )
 
 
 def test_a_broken_launch_file_starts_nothing(world: dict[str, Any]) -> None:

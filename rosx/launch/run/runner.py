@@ -48,7 +48,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rosx.launch.errors import LaunchError
+from rosx.launch.errors import LaunchError, NodePackageError
 from rosx.launch.model import CORE_SOURCE
 from rosx.launch.run.monitor import (
     DEFAULT_SIGINT_TIMEOUT,
@@ -562,8 +562,12 @@ class LaunchRun:
                 node, index, lambda package, kind: provided_program(package, kind, index)
             )
         except LaunchError as exc:
+            text = str(exc)
+            if isinstance(exc, NodePackageError):
+                where = LaunchError(exc.file, exc.line, exc.tag, "")
+                text = f"{where}{index.not_found_text(exc.package)}"
             kind = f"{node.package}/{node.type}"
-            self.console.error(f"ERROR: cannot launch node of type [{kind}]: {exc}")
+            self.console.error(f"ERROR: cannot launch node of type [{kind}]: {text}")
             return None
         environ = node_environment(node, self.environ, self.uri)
         environ[HEADLESS] = "1"
