@@ -1,4 +1,5 @@
-"""A node whose stdout log cannot be opened still starts, as ROS 1's roslaunch starts it."""
+"""How the monitor starts a node, as ROS 1's roslaunch does: one whose stdout log cannot be
+opened still starts, and one that exits at once has started (its exit is reported after)."""
 
 from __future__ import annotations
 
@@ -82,3 +83,37 @@ def test_a_forked_node_does_the_same(monitor: Streams, tmp_path: Path) -> None:
         assert marker.read_text() == "yes"
     finally:
         helper.close()
+
+
+class _SlowToReturn(LocalProcess):
+    """Returns from `start` only once the program has ended, as on a busy machine where a
+    program that exits at once is done before the launcher looks at it."""
+
+    def start(self) -> None:
+        super().start()
+        assert self.popen is not None
+        self.popen.wait()
+
+
+def test_a_required_node_that_exits_at_once_has_started(monitor: Streams, tmp_path: Path) -> None:
+    out, err, procs = monitor
+    process = _SlowToReturn(
+        "q-2",
+        ["sh", "-c", "exit 3"],
+        dict(os.environ),
+        tmp_path,
+        log_dir=None,
+        log_output=False,
+        required=True,
+        is_node=False,
+    )
+    assert procs.start(process)
+    assert out.getvalue() == f"process[q-2]: started with pid [{process.pid}]\n"
+    assert err.getvalue() == ""
+    procs.spin()
+    rule = "=" * 80
+    assert err.getvalue() == (
+        f"{rule}REQUIRED process [q-2] has died!\n"
+        f"process has died [pid {process.pid}, exit code 3, cmd sh -c exit 3].\n"
+        f"Initiating shutdown!\n{rule}\n"
+    )

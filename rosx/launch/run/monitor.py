@@ -313,7 +313,8 @@ class ProcessMonitor:
         self.shutdown_errors: list[str] = []
 
     def start(self, process: LocalProcess) -> bool:
-        """Register ``process`` and start it; False (with ROS 1's error) if it did not start."""
+        """Register ``process`` and start it; False (with ROS 1's error) if it could not be
+        run. One that ran and has already exited has started: `spin` reports its exit."""
         self.procs.append(process)
         try:
             process.start()
@@ -323,10 +324,6 @@ class ProcessMonitor:
             return False
         if process.log_error is not None:
             self.console.error(process.log_error)
-        process.poll()
-        if process.exit_code not in (None, 0):
-            self.console.error(f"failed to start local process: {' '.join(process.argv)}")
-            return False
         self.console.bold(f"process[{process.name}]: started with pid [{process.pid}]")
         return True
 
