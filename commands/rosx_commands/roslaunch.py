@@ -7,8 +7,9 @@ loaded, then run (`rosx.launch.run.runner`): the core when no master answers, th
 node as its own process, until Ctrl-C. ``--core`` runs the core alone, as ``roscore`` does.
 
 A launch file with a mistake starts nothing: the error names its file, line and tag, on one
-line, and the status is 1. ROS 1's options for remote child launchers (``-c``, ``-u``,
-``--run_id``) are accepted by the parser, as in ROS 1, and refused with a clear error.
+line (after it, as in ROS 1, that its traceback is in the log), and the status is 1. ROS 1's
+options for remote child launchers (``-c``, ``-u``, ``--run_id``) are accepted by the parser,
+as in ROS 1, and refused with a clear error.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from rosx_commands.cli import ToolParser, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
 
 if TYPE_CHECKING:
+    from rosx.launch.model import LaunchPlan
     from rosx.packages.index import PackageIndex
 
 USAGE = (
@@ -361,7 +363,6 @@ def _launch(
     port: int | None,
     index: PackageIndex,
 ) -> int:
-    from rosx.launch.errors import LaunchError  # noqa: PLC0415 - launch code loads only for launch files
     from rosx.launch.loader import load_launch  # noqa: PLC0415 - launch code loads only for launch files
     from rosx.launch.run.command import run_command  # noqa: PLC0415 - launch code loads only for launch files
     from rosx.launch.run.console import LaunchConsole  # noqa: PLC0415 - launch code loads only for launch files
@@ -369,10 +370,9 @@ def _launch(
     from rosx_commands.invocation import script_command  # noqa: PLC0415 - this tool's parts load only when used
     from rosx_commands.scripts import shim_dirs  # noqa: PLC0415 - this tool's parts load only when used
 
-    try:
-        plan = load_launch(files, cli_args, env.environ, index, argv=argv, run=run_command)
-    except LaunchError as error:
-        raise _rlexception(str(error)) from None
+    def load() -> LaunchPlan:
+        return load_launch(files, cli_args, env.environ, index, argv=argv, run=run_command)
+
     settings = LaunchSettings(
         port=port,
         wait_for_master=opts["wait_for_master"],
@@ -390,7 +390,7 @@ def _launch(
     )
     console = LaunchConsole(env.stdout, env.stderr, titles=not opts["disable_title"])
     run = LaunchRun(
-        plan,
+        load,
         settings,
         env.environ,
         console,

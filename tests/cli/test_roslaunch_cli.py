@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 from tests.support.cli import clean_environ, rosx
+from tests.support.procs import free_port
 from tests.support.ros1 import needs_ros1, run_ros1
 
 USAGE = """\
@@ -69,6 +70,55 @@ def test_a_file_that_is_not_there_is_roslaunchs_error(tmp_path: Path) -> None:
     result = rosx("roslaunch", "nofile.launch", environ=environ)
     assert (result.status, result.out) == (1, "")
     assert result.err == "RLException: [nofile.launch] is not a launch file name\n"
+
+
+@pytest.mark.parametrize(
+    ("text", "error"),
+    [
+        (
+            '<launch>\n  <node pkg="a" type="b" name="c">\n</launch>\n',
+            "3: Invalid roslaunch XML syntax: mismatched tag: line 3, column 2",
+        ),
+        (
+            '<launch>\n  <node pkg="a" type="b" name="t"/>\n  <node pkg="a" type="b" name="t"/>\n'
+            "</launch>\n",
+            "3: <node>: roslaunch file contains multiple nodes named [/t]. Please check all "
+            "<node> 'name' attributes to make sure they are unique. Also check that $(anon id) "
+            "use different ids.",
+        ),
+        (
+            '<launch>\n  <param name="x" value="$(foo bar)"/>\n</launch>\n',
+            "2: <param>: Unknown substitution command [foo bar]. Valid commands are "
+            "['find', 'env', 'optenv', 'dirname', 'anon', 'arg']",
+        ),
+        (
+            '<launch>\n  <param name="x" type="int" value="abc"/>\n</launch>\n',
+            "2: <param>: Invalid <param> tag: invalid literal for int() with base 10: 'abc'.",
+        ),
+    ],
+    ids=["bad-xml", "duplicate-node", "bad-substitution", "bad-int"],
+)
+def test_a_launch_file_with_a_mistake_is_reported_after_the_log_opens(
+    tmp_path: Path, text: str, error: str
+) -> None:
+    launch = tmp_path / "bad.launch"
+    launch.write_text(text)
+    home = tmp_path / "home"
+    environ = clean_environ(ROS_HOME=str(home), ROS_MASTER_URI=f"http://localhost:{free_port()}")
+    result = rosx("roslaunch", str(launch), environ=environ)
+    log = next((home / "log" / "latest").glob("roslaunch-*.log"))
+    assert result.status == 1
+    assert result.out == (
+        f"... logging to {log.resolve()}\n"
+        "Checking log directory for disk usage. This may take a while.\n"
+        "Press Ctrl-C to interrupt\n"
+        "Done checking log file disk usage. Usage is <1GB.\n"
+    )
+    message = f"RLException: {launch}:{error}"
+    assert result.err == f"{message}\nThe traceback for the exception was written to the log file\n"
+    logged = log.read_text()
+    assert f": {message}\n" in logged
+    assert "Traceback (most recent call last):" in logged
 
 
 def test_bad_timeouts_are_refused_before_anything_starts() -> None:

@@ -600,10 +600,19 @@ def test_a_broken_launch_file_starts_nothing(world: dict[str, Any]) -> None:
     with launched(["labl", "broken.launch"], world["env"]) as launch:
         assert launch.finish() == 1
     where = world["home"] / "src" / "labl" / "launch" / "broken.launch"
-    assert launch.out == ""
-    assert launch.err.startswith(f"RLException: {where}:3: <param>: ")
-    assert "undefined" in launch.err and len(launch.err.splitlines()) == 1
-    assert not (world["home"] / "ros_home" / "log").exists()
+    error = f"RLException: {where}:3: <param>: requires the 'undefined' arg to be set"
+    # roslaunch opens its log first, then loads the files, and logs the error's traceback.
+    log = next((world["home"] / "ros_home" / "log" / "latest").glob("roslaunch-*.log"))
+    assert launch.out == (
+        f"... logging to {log.resolve()}\n"
+        "Checking log directory for disk usage. This may take a while.\n"
+        "Press Ctrl-C to interrupt\n"
+        "Done checking log file disk usage. Usage is <1GB.\n"
+    )
+    assert launch.err == f"{error}\nThe traceback for the exception was written to the log file\n"
+    logged = log.read_text()
+    assert "[ERROR] " in logged and f": {error}\n" in logged
+    assert "Traceback (most recent call last):" in logged
 
 
 def test_a_port_held_by_something_else_is_roslaunchs_error(world: dict[str, Any]) -> None:
@@ -621,7 +630,10 @@ def test_a_port_held_by_something_else_is_roslaunchs_error(world: dict[str, Any]
         "shutting down processing monitor...\n"
         "... shutting down processing monitor complete\n"
     ) in launch.out
-    assert launch.err == f"RLException: ERROR: could not contact master [{world['uri']}]\n"
+    assert launch.err == (
+        f"RLException: ERROR: could not contact master [{world['uri']}]\n"
+        "The traceback for the exception was written to the log file\n"
+    )
     assert "process[once" not in launch.out
 
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import threading
 import time
+import traceback
 from typing import TYPE_CHECKING
 
 from rosx.terminal import is_terminal
@@ -48,6 +49,17 @@ class LaunchConsole:
         except OSError:
             return False
         return True
+
+    @property
+    def logging(self) -> bool:
+        """Whether lines are copied to the launcher's log file."""
+        return self._log is not None
+
+    def log_traceback(self) -> None:
+        """The traceback of the exception being handled, to the log file alone (roslaunch's
+        ``The traceback for the exception was written to the log file``)."""
+        with self._lock:
+            self._record("ERROR", traceback.format_exc().rstrip("\n"))
 
     def close(self) -> None:
         """Close the log file."""

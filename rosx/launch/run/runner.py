@@ -4,7 +4,7 @@
 
 1. the run id (the running master's ``/run_id``, or a new one for a core it starts), the log
    folder (`rosx.workspace.logdir`) and ``... logging to …/roslaunch-<host>-<pid>.log``, the
-   disk-usage check, the terminal title;
+   disk-usage check, the terminal title; then the launch files are loaded;
 2. the roslaunch server (``started roslaunch server URI``), then the SUMMARY of parameters and
    nodes;
 3. the master: the one at ``ROS_MASTER_URI`` (or at ``-p PORT``), or, when none answers, a core
@@ -24,7 +24,9 @@ which ``--args`` prints), except that a Python script runs with rosx's Python an
 (turtlesim_node logs instead of drawing its pond).
 
 Errors that stop a launch before it starts anything are `LaunchFailedError`; ``str()`` is the text
-after ``RLException: ``.
+after ``RLException: ``. Once the launcher's log is open, `LaunchRun.run` reports them itself as
+roslaunch does: ``RLException: …`` and ``The traceback for the exception was written to the log
+file`` on stderr, the traceback in the log.
 
 ``-v`` prints what ROS 1's prints while it reads the files: roscore.xml first (``... loading XML
 file``, ``... executing command param [rosversion roslaunch]``, ``Added parameter``, ``Added core
@@ -67,7 +69,7 @@ from rosx.workspace.executables import is_python_script
 from rosx.workspace.programs import bundled_program, overlays
 
 if TYPE_CHECKING:
-    from collections.abc import Mapping, Sequence
+    from collections.abc import Callable, Mapping, Sequence
 
     from rosx.launch.model import LaunchPlan, Node
     from rosx.launch.run.console import LaunchConsole
@@ -179,7 +181,8 @@ class LaunchRun:
     """One run of a plan (see the module docstring).
 
     Args:
-        plan: The loaded launch files (loaded with roscore's parameters, as roslaunch runs).
+        load: Loads the launch files (with roscore's parameters, as roslaunch runs); called
+            once the launcher's log is open, as roslaunch loads them.
         settings: The command line's switches.
         environ: The launcher's environment (copied into each node's).
         console: Where roslaunch's lines go.
@@ -191,7 +194,7 @@ class LaunchRun:
 
     def __init__(
         self,
-        plan: LaunchPlan,
+        load: Callable[[], LaunchPlan],
         settings: LaunchSettings,
         environ: Mapping[str, str],
         console: LaunchConsole,
@@ -200,7 +203,8 @@ class LaunchRun:
         script_command: Sequence[str],
         title: str,
     ) -> None:
-        self.plan = plan
+        self._load = load
+        self.plan: LaunchPlan
         self.settings = settings
         self.environ = dict(environ)
         self.console = console
@@ -233,30 +237,46 @@ class LaunchRun:
         return shim_environ(environ, self.settings.shim_dirs or (SHIM_DIR,))
 
     def run(self) -> int:
-        """Run the launch to its end; the exit status (0, as roslaunch, once it has started).
+        """Run the launch to its end; the exit status (0, as roslaunch, once it has started;
+        1 when it could not start, the error reported and logged).
 
         Raises:
-            LaunchFailedError: the launch could not start (nothing is left running).
+            LaunchFailedError: the launch could not start before its log was open (nothing is
+                left running).
         """
-        self._check_plan()
-        if self.plan.nodes and self.fork_python_nodes:
-            from rosx.launch.run.zygote import ZygoteClient  # noqa: PLC0415 - launch code loads only for launch files
-
-            # Started first, so that it loads Python's side of the nodes while the launcher
-            # starts the core.
-            environ = self._script_environ(self.environ)
-            self.zygote = ZygoteClient(
-                environ, on_exit=self.monitor.wake, crawled=self._crawled(environ)
-            )
         with self.monitor.signals():
             try:
                 return self._run()
+            except LaunchFailedError as error:
+                if not self.console.logging:
+                    raise
+                self.console.error(f"RLException: {error}")
+                self.console.error("The traceback for the exception was written to the log file")
+                self.console.log_traceback()
+                return 1
             finally:
                 if self.zygote is not None:
                     self.zygote.close()
                 self._master.close()
                 self.monitor.close()
                 self.console.close()
+
+    def _start_zygote(self) -> None:
+        if not (self.plan.nodes and self.fork_python_nodes):
+            return
+        from rosx.launch.run.zygote import ZygoteClient  # noqa: PLC0415 - launch code loads only for launch files
+
+        # Started before the core, so that it loads Python's side of the nodes meanwhile.
+        environ = self._script_environ(self.environ)
+        self.zygote = ZygoteClient(
+            environ, on_exit=self.monitor.wake, crawled=self._crawled(environ)
+        )
+
+    def _load_plan(self) -> LaunchPlan:
+        try:
+            return self._load()
+        except LaunchError as error:
+            raise LaunchFailedError(str(error)) from error
 
     def _crawled(self, environ: Mapping[str, str]) -> dict[str, Path] | None:
         """The package index's crawl, when it is of ``environ``'s package path (the nodes
@@ -278,6 +298,9 @@ class LaunchRun:
         self.run_id = self._run_id(running)
         self._start_logging()
         self.console.title(self.title)
+        self.plan = self._load_plan()
+        self._check_plan()
+        self._start_zygote()
         if self.settings.verbose:
             self._print_loading()
         server = LaunchServer(self.monitor, self.environ)
