@@ -257,6 +257,17 @@ def test_echo_bad_index_is_reported_per_message(
     assert lines and set(lines) == {"tuple index out of range: /data[3]"}
 
 
+@pytest.mark.parametrize("path", ["/e/pose/linear/x/y", "/e/polygon/points/x"])
+def test_echo_of_a_path_the_type_lacks_waits_for_the_topic_as_ros1(
+    stream: Callable[..., None], env: dict[str, str], master: str, path: str
+) -> None:
+    stream("/e/pose", twist())
+    stream("/e/polygon", get_message_class("geometry_msgs/Polygon")())
+    result = run_for(master, 0.5, "rostopic", "echo", path, environ=env, until=_lines(1, "err"))
+    assert (result.status, result.out) == (0, "")
+    assert result.err == f"WARNING: topic [{path}] does not appear to be published yet\n"
+
+
 # -- pub -----------------------------------------------------------------------------------
 
 
@@ -398,6 +409,30 @@ def test_a_field_of_a_type_nobody_here_knows_cannot_be_loaded(
         client.close()
     cannot = "ERROR: Cannot load message class for [nope_msgs/Nope]. Are your messages built?\n"
     assert (result.status, result.out, result.err) == (1, "", cannot)
+
+
+@pytest.mark.parametrize(
+    ("name", "status", "out", "err"),
+    [
+        ("/t/scan/ranges/x", 1, "", "unknown topic type [/t/scan/ranges/x]\n"),
+        ("/t/tf/transforms/header", 1, "", "unknown topic type [/t/tf/transforms/header]\n"),
+    ],
+)
+def test_type_of_a_field_or_an_element(
+    env: dict[str, str], master: str, name: str, status: int, out: str, err: str
+) -> None:
+    client = XmlRpcClient(timeout=5)
+    api = "http://127.0.0.1:9/"
+    topics = {"/t/scan": "sensor_msgs/LaserScan", "/t/tf": "tf2_msgs/TFMessage"}
+    for topic, type_name in topics.items():
+        client.call(master, "registerPublisher", "/odd", topic, type_name, api)
+    try:
+        result = rosx("rostopic", "type", name, environ=env)
+    finally:
+        for topic in topics:
+            client.call(master, "unregisterPublisher", "/odd", topic, api)
+        client.close()
+    assert (result.status, result.out, result.err) == (status, out, err)
 
 
 def test_pub_value_of_the_wrong_type(env: dict[str, str]) -> None:

@@ -76,6 +76,7 @@ COMMANDS = [
     ["rostopic", "type", "/chatter"],
     ["rostopic", "type", "/turtle1/cmd_vel/linear"],
     ["rostopic", "type", "/turtle1/cmd_vel/linear/x"],
+    ["rostopic", "type", "/turtle1/cmd_vel/linear/x/y"],
     ["rostopic", "type", "/nope"],
     ["rostopic", "find", "std_msgs/String"],
     ["rostopic", "find", "geometry_msgs/Twist"],

@@ -114,16 +114,20 @@ def field_type(lookup: Callable[[str], MsgSpec], msg_type: str, path: FieldPath)
     found: str | None = None
     for step in path.steps:
         owner = msg_type if found is None else found.split("[", 1)[0]
-        if owner in ("time", "duration"):
-            fields = {"secs": "int32", "nsecs": "int32"}
-        elif owner in PRIMITIVE_TYPES:
-            fields = {}
-        else:
-            fields = {field.name: field.type for field in lookup(owner).fields}
-        found = fields.get(step.field)
+        found = _members(lookup, owner).get(step.field)
         if found is None:
             raise FieldPathError(f"no field named {step.field} in {path.text}")
     return found
+
+
+def _members(lookup: Callable[[str], MsgSpec], type_name: str) -> dict[str, str]:
+    """The fields a value of ``type_name`` has, with their types: a message's, a time's or a
+    duration's (``secs``, ``nsecs``), none for another primitive or an array."""
+    if type_name in ("time", "duration"):
+        return {"secs": "int32", "nsecs": "int32"}
+    if type_name in PRIMITIVE_TYPES or type_name.endswith("]"):
+        return {}
+    return {field.name: field.type for field in lookup(type_name).fields}
 
 
 def find_topic(
@@ -131,9 +135,11 @@ def find_topic(
 ) -> tuple[str, str] | None:
     """The topic ``name`` denotes, itself or the longest topic it is a field path of.
 
-    A topic whose type has no such field (in ``store``: the standard types by default) is
-    skipped, as ROS 1 does; one whose type is not known is taken as it is (its users then say
-    they cannot load the type, as ROS 1's do).
+    As ROS 1's, the path is read up to its first ``[``, and each of its fields must be a field
+    of the one before: a topic whose type has no such field (in ``store``: the standard types by
+    default) is skipped, as one whose path goes into a primitive or an array not indexed
+    (``/pose/x/y``, ``/tf/transforms/header``); one whose type is not known is taken as it is
+    (its users then say they cannot load the type, as ROS 1's do).
     """
     if name in types:
         return name, types[name]
@@ -147,9 +153,8 @@ def find_topic(
         try:
             spec_type = types[topic]
             for part in path.split("/"):
-                field = next(f for f in store.msg(spec_type).fields if f.name == part)
-                spec_type = field.base_type
-        except StopIteration:
+                spec_type = _members(store.msg, spec_type)[part]
+        except KeyError:
             continue
         except UnknownTypeError:
             return topic, types[topic]
