@@ -414,8 +414,23 @@ def test_a_field_of_a_type_nobody_here_knows_cannot_be_loaded(
 @pytest.mark.parametrize(
     ("name", "status", "out", "err"),
     [
+        ("/t/scan/ranges[1]", 0, "sensor_msgs/LaserScan ranges[1] float32\n", ""),
+        ("/t/scan/header/stamp/secs", 0, "sensor_msgs/LaserScan header/stamp/secs int32\n", ""),
+        (
+            "/t/tf/transforms[0]",
+            0,
+            "tf2_msgs/TFMessage transforms[0] geometry_msgs/TransformStamped\n",
+            "",
+        ),
+        (
+            "/t/tf/transforms[0]/header",
+            0,
+            "tf2_msgs/TFMessage transforms[0]/header std_msgs/Header\n",
+            "",
+        ),
         ("/t/scan/ranges/x", 1, "", "unknown topic type [/t/scan/ranges/x]\n"),
         ("/t/tf/transforms/header", 1, "", "unknown topic type [/t/tf/transforms/header]\n"),
+        ("/t/tf/transforms[0]/nope", 1, "", "unknown topic type [/t/tf/transforms[0]/nope]\n"),
     ],
 )
 def test_type_of_a_field_or_an_element(

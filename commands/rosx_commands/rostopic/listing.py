@@ -216,7 +216,12 @@ def topic_type(argv: list[str], env: Environment) -> int:
     parser = ToolArgumentParser(env, prog="rostopic type")
     parser.add_argument("topic_or_field", help="Topic or field name")
     name = resolve(env, parser.parse_args(argv).topic_or_field)
-    from rosx.msg.text.fieldpath import find_topic  # noqa: PLC0415 - only type needs it
+    from rosx.msg.text.fieldpath import (  # noqa: PLC0415 - only type needs it
+        FieldPathError,
+        field_type,
+        find_topic,
+        parse_field_path,
+    )
 
     types = env.master(CALLER_ID).topic_types()
     if name in types:
@@ -230,16 +235,16 @@ def topic_type(argv: list[str], env: Environment) -> int:
         raise CommandError(f"unknown topic type [{name}]")
     topic, type_name = found
     field = name[len(topic) + 1 :]
-    field_type = type_name
     try:
-        for part in field.split("/"):
-            spec = store.msg(field_type)
-            field_type = next(f.type for f in spec.fields if f.name == part)
+        # An index gives the element's type (ROS 1 fails on it with a traceback).
+        declared = field_type(store.msg, type_name, parse_field_path(field), elements=True)
     except UnknownTypeError as error:
         raise CommandError(
             f"ERROR: Cannot load message class for [{error.full_name}]. Are your messages built?"
         ) from None
-    env.out(f"{type_name} {field} {field_type}")
+    except FieldPathError:
+        raise CommandError(f"unknown topic type [{name}]") from None
+    env.out(type_name if declared is None else f"{type_name} {field} {declared}")
     return ExitStatus.OK
 
 

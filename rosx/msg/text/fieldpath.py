@@ -104,19 +104,24 @@ def _selector(text: str) -> int | slice:
     return slice(*bounds)
 
 
-def field_type(lookup: Callable[[str], MsgSpec], msg_type: str, path: FieldPath) -> str | None:
+def field_type(
+    lookup: Callable[[str], MsgSpec], msg_type: str, path: FieldPath, *, elements: bool = False
+) -> str | None:
     """The declared type of the last field of ``path`` in ``msg_type`` (None for no fields).
 
-    As rostopic's, it ignores indices: ``/data[0]`` of a ``uint8[]`` field is ``uint8[]``.
-    ``lookup`` finds a message spec by name (e.g. ``TypeStore.msg``); the fields of a ``time``
-    or ``duration`` are ``secs`` and ``nsecs``, both ``int32``.
+    As rostopic's, it ignores indices: ``/data[0]`` of a ``uint8[]`` field is ``uint8[]``;
+    with ``elements`` an index selects an element's type (``uint8``), and a field of an array
+    not indexed is not found. ``lookup`` finds a message spec by name (e.g. ``TypeStore.msg``);
+    the fields of a ``time`` or ``duration`` are ``secs`` and ``nsecs``, both ``int32``.
     """
     found: str | None = None
     for step in path.steps:
-        owner = msg_type if found is None else found.split("[", 1)[0]
+        owner = msg_type if found is None else found if elements else found.split("[", 1)[0]
         found = _members(lookup, owner).get(step.field)
         if found is None:
             raise FieldPathError(f"no field named {step.field} in {path.text}")
+        if elements and isinstance(step.selector, int) and found.endswith("]"):
+            found = found.split("[", 1)[0]
     return found
 
 
