@@ -39,6 +39,34 @@ def test_echo_from_a_bag(bag: str) -> None:
     assert plot.out.splitlines()[:2] == ["%time,field.data", "10000000001,hello 0"]
 
 
+@pytest.fixture
+def scan_bag(tmp_path: Path) -> str:
+    """One laser scan (header stamped 5 s, recorded at 20.000000007 s) and one tf message."""
+    path = tmp_path / "scan.bag"
+    scan = get_message_class("sensor_msgs/LaserScan")(ranges=[1.0, 2.0, 3.0])
+    scan.header.seq, scan.header.stamp, scan.header.frame_id = 3, Time(5), "base_scan"
+    transform = get_message_class("geometry_msgs/TransformStamped")(child_frame_id="b")
+    with api.Bag(path, "w") as out:
+        out.write("/scan", scan, Time(20, 7))
+        out.write("/tf", get_message_class("tf2_msgs/TFMessage")([transform]), Time(21))
+    return str(path)
+
+
+@pytest.mark.parametrize(
+    ("argv", "out", "err"),
+    [
+        (["/scan/header/frame_id"], '"base_scan"\n---\n', ""),
+        (["/scan/ranges[0]"], "1.0\n---\n", ""),
+        (["/scan/ranges[1:]"], "[2.0, 3.0]\n---\n", ""),
+        (["/tf/transforms[0]/child_frame_id"], '"b"\n---\n', ""),
+        (["/scan/nope"], "", "no field named nope in /nope\n"),
+    ],
+)
+def test_echo_a_field_from_a_bag(scan_bag: str, argv: list[str], out: str, err: str) -> None:
+    result = rosx("rostopic", "echo", "-b", scan_bag, *argv)
+    assert (result.status, result.out, result.err) == (0, out, err)
+
+
 def test_list_and_show_from_a_bag(bag: str) -> None:
     assert rosx("rostopic", "list", "-b", bag).out == "/cmd\n/chatter\n"
     shown = rosx("rosmsg", "show", "-b", bag, "geometry_msgs/Twist")

@@ -210,7 +210,8 @@ def echo(argv: list[str], env: Environment) -> int:
         parser.error("offset time option is not valid with bag files")
     if not options.all_topics and not args:
         parser.error("topic must be specified")
-    topic = resolve(env, args[0]) if args else ""
+    # As ROS 1's, -a echoes every message whole, whatever topic is named.
+    topic = "" if options.all_topics else resolve(env, args[0])
     message_filter = MessageFilter.compile(env, parser, options.filter_expr)
     count = _integer(parser, options.msg_count, "COUNT must be an integer")
     width = _integer(parser, options.fixed_numeric_width, "NUM_WIDTH must be an integer")
@@ -264,7 +265,12 @@ def _echo_bag(
     env: Environment, bag: str, topic: str, every_topic: bool, printing: dict[str, Any]
 ) -> int:
     """``rostopic echo -b BAG``: the bag's messages of ``topic`` (or all), in time order, with
-    the bag's times where a time is printed."""
+    the bag's times where a time is printed.
+
+    As ROS 1's, ``topic`` may go on into a field of a bag's topic (``/scan/header/frame_id``):
+    every topic it starts with is read, and the rest of the name is the path into its messages,
+    whatever their type (a missing field is reported per message).
+    """
     from pathlib import Path  # noqa: PLC0415 - pathlib is not needed at start-up
 
     from rosx.bag.api import Bag, ROSBagException  # noqa: PLC0415 - bag code loads only for bags
@@ -273,12 +279,20 @@ def _echo_bag(
         raise CommandError(f"ERROR: bag file [{bag}] does not exist")
     stamp: list[Any] = [None]
     printer = Printer(env, topic, clock=lambda: stamp[0], **printing)
+    paths: dict[str, FieldPath | None] = {}
+
+    def wanted(name: str, *_: object) -> bool:
+        return name == topic or topic.startswith(name + "/")
+
     try:
         with Bag(bag) as reader:
-            wanted = None if every_topic else [topic]
-            for name, msg, when in reader.read_messages(topics=wanted):
+            chosen = None if every_topic else wanted
+            for name, msg, when in reader.read_messages(connection_filter=chosen):
+                if name not in paths:
+                    inside = topic.startswith(name + "/")
+                    paths[name] = _parse_path(env, topic[len(name) :]) if inside else None
                 stamp[0] = when
-                printer.topic = name
+                printer.topic, printer.path = name, paths[name]
                 printer(msg)
                 if printer.done.is_set():
                     break
@@ -300,24 +314,29 @@ def _integer(parser: ToolParser, text: str | None, error: str) -> int | None:
 def _field_path(
     env: Environment, session: Session, type_name: str, text: str
 ) -> tuple[FieldPath | None, str | None]:
-    """The parsed path after the topic name and the type of the field it ends at.
-
-    A path that does not parse is reported and the whole message is echoed, as ROS 1 does.
-    """
-    if not text.strip("/"):
-        return None, None
-
-    try:
-        path = parse_field_path(text)
-    except FieldPathError as error:
-        env.stderr.write(f"{error}\n")
-        return None, None
-    if not path.steps:
+    """`_parse_path` of ``text`` and the type of the field it ends at."""
+    path = _parse_path(env, text)
+    if path is None:
         return None, None
     try:
         return path, field_type(session.store.msg, type_name, path)
     except (FieldPathError, LookupError):
         return path, None
+
+
+def _parse_path(env: Environment, text: str) -> FieldPath | None:
+    """The parsed path after the topic name, None for the whole message.
+
+    A path that does not parse is reported and the whole message is echoed, as ROS 1 does.
+    """
+    if not text.strip("/"):
+        return None
+    try:
+        path = parse_field_path(text)
+    except FieldPathError as error:
+        env.stderr.write(f"{error}\n")
+        return None
+    return path if path.steps else None
 
 
 def _warn_without_clock(env: Environment, session: Session, printer: Printer) -> None:
