@@ -59,12 +59,23 @@ def scan_bag(tmp_path: Path) -> str:
         (["/scan/ranges[0]"], "1.0\n---\n", ""),
         (["/scan/ranges[1:]"], "[2.0, 3.0]\n---\n", ""),
         (["/tf/transforms[0]/child_frame_id"], '"b"\n---\n', ""),
+        (
+            ["-p", "/scan/header"],
+            "%time,field.seq,field.stamp,field.frame_id\n20000000007,3,5000000000,base_scan\n",
+            "",
+        ),
         (["/scan/nope"], "", "no field named nope in /nope\n"),
     ],
 )
 def test_echo_a_field_from_a_bag(scan_bag: str, argv: list[str], out: str, err: str) -> None:
     result = rosx("rostopic", "echo", "-b", scan_bag, *argv)
     assert (result.status, result.out, result.err) == (0, out, err)
+
+
+def test_echo_plot_from_a_bag_times_rows_by_the_record(scan_bag: str) -> None:
+    result = rosx("rostopic", "echo", "-b", scan_bag, "-p", "/scan")
+    assert result.status == 0
+    assert result.out.splitlines()[1].startswith("20000000007,3,5000000000,base_scan,")
 
 
 def test_list_and_show_from_a_bag(bag: str) -> None:

@@ -118,6 +118,7 @@ class Printer:
         nostr: bool = False,
         width: int | None = None,
         clock: Callable[[], Any] | None = None,
+        recorded: bool = False,
     ) -> None:
         self.env = env
         self.topic = topic
@@ -131,6 +132,8 @@ class Printer:
         self.noarr = noarr
         self.nostr = nostr
         self.width = width
+        # Reading a bag: -p's time column is the clock's (the record time), not a header's.
+        self.recorded = recorded
         self.count = 0
         self.first = True
         self.done = threading.Event()
@@ -181,7 +184,12 @@ class Printer:
                 self.first = False
             now = self._now()
             text += self._csv_row(
-                value, now, time_offset=offset, noarr=self.noarr, nostr=self.nostr
+                value,
+                now,
+                bag_time=now if self.recorded else None,
+                time_offset=offset,
+                noarr=self.noarr,
+                nostr=self.nostr,
             )
             text += "\n"
         else:
@@ -278,7 +286,7 @@ def _echo_bag(
     if not Path(bag).exists():
         raise CommandError(f"ERROR: bag file [{bag}] does not exist")
     stamp: list[Any] = [None]
-    printer = Printer(env, topic, clock=lambda: stamp[0], **printing)
+    printer = Printer(env, topic, clock=lambda: stamp[0], recorded=True, **printing)
     paths: dict[str, FieldPath | None] = {}
 
     def wanted(name: str, *_: object) -> bool:
