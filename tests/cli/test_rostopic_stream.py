@@ -724,6 +724,43 @@ def test_ctrl_c_exits_quietly_and_unregisters(master: str) -> None:
     assert not tool_nodes(master)
 
 
+REPORT = r"\tmin: \d+\.\d{3}s max: \d+\.\d{3}s std dev: \d+\.\d{5}s window: \d+\n"
+
+
+@pytest.mark.parametrize(
+    ("command", "last"),
+    [
+        ("hz", rf"(average rate: \d+\.\d{{3}}\n{REPORT}|no new messages\n)"),
+        ("bw", r"average: \d+\.\d\dB/s\n\tmean: 43\.00B min: 43\.00B max: 43\.00B window: \d+\n"),
+        ("delay", rf"(average delay: \d+\.\d{{3}}\n{REPORT}|no new messages\n)"),
+    ],
+)
+def test_ctrl_c_prints_a_last_report_as_ros1(
+    stream: Callable[..., None], master: str, command: str, last: str
+) -> None:
+    stream("/c/rated", stamped(), hz=20)
+    process = subprocess.Popen(
+        [sys.executable, "-c", "from rosx_commands.main import run; run()", "rostopic", command, "/c/rated"],
+        env=clean_environ(ROS_MASTER_URI=master),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )  # fmt: skip
+    try:
+        assert process.stdout is not None
+        assert process.stdout.readline() == "subscribed to [/c/rated]\n"
+        while not process.stdout.readline().startswith("\t"):  # a whole report is out
+            pass
+        process.send_signal(signal.SIGINT)
+        out, err = process.communicate(timeout=15)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert (process.returncode, err) == (0, "")
+    assert re.fullmatch(last, out), out
+
+
 def test_pub_once_waits_its_time_when_the_master_goes_away() -> None:
     """``rostopic pub -1`` asks the master who subscribes; a master gone meanwhile is no error
     (it waits its full time, as with no subscriber listed)."""

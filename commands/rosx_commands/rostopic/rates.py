@@ -1,5 +1,5 @@
 """``rostopic hz``, ``bw`` and ``delay``: subscribe, measure (`rosx.node.stats`),
-print a report every second until interrupted.
+print a report every second until interrupted, and a last one then.
 
 As ROS 1's, hz and delay measure in ROS time (the node's clock: ``/clock`` when
 ``/use_sim_time`` is set, where a message that comes while it reads 0 is not counted, and
@@ -13,6 +13,7 @@ decodes, to read ``header.stamp``.
 
 from __future__ import annotations
 
+import contextlib
 import time
 from typing import TYPE_CHECKING, Any
 
@@ -33,12 +34,20 @@ SIM_TIME_WARNING = "WARNING: may be using simulated time"
 
 
 def _report_every_second(session: Session, report: Callable[[], str | None]) -> None:
+    """Print ``report()`` every second until the node shuts down or Ctrl-C, then once more:
+    ROS 1's last report, of what came before the end."""
     env = session.env
-    while session.sleep(REPORT_PERIOD):
+
+    def write() -> None:
         text = report()
         if text is not None:
             env.stdout.write(text + "\n")
             env.stdout.flush()
+
+    with contextlib.suppress(KeyboardInterrupt):
+        while session.sleep(REPORT_PERIOD):
+            write()
+    write()
 
 
 def _subscribed(env: Environment, topic: str) -> None:
