@@ -6,7 +6,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from rosx.msg.describe import describe_msg, describe_srv
-from rosx.msg.parser import InvalidMsgSpecError
+from rosx.msg.parser import InvalidMsgSpecError, package_resource_name
 from rosx.msg.store import TypeStore, UnknownTypeError
 from rosx_commands.cli import ToolParser, commands_overview, run_command
 from rosx_commands.context import CommandError, Environment, ExitStatus
@@ -83,6 +83,7 @@ class _Tool:
         return self.store.find(type_name, self.kind)
 
     def text(self, full_name: str, raw: bool) -> str:
+        package_resource_name(full_name)  # genmsg's ValueError for a/b/c
         if self.kind == "msg":
             spec = self.store.msg(full_name)
             return spec.text if raw else describe_msg(spec, self.store.msg)
@@ -163,7 +164,7 @@ def _show(tool: _Tool, argv: list[str], alias: str) -> int:
     for full_name in full_names:
         try:
             text = tool.text(full_name, bool(getattr(options, "raw", False)))
-        except (UnknownTypeError, InvalidMsgSpecError) as error:
+        except (UnknownTypeError, ValueError) as error:
             raise tool.load_error(full_name, error) from None
         if "/" not in type_name:
             tool.env.out(f"[{full_name}]:")
@@ -197,6 +198,15 @@ def _md5(tool: _Tool, argv: list[str]) -> int:
     parser = tool.parser(f"usage: {tool.tool} md5 <{tool.noun}>")
     _, type_name = tool.type_arg(parser, argv)
     if "/" in type_name:
+        try:
+            package, _ = package_resource_name(type_name)
+        except ValueError as error:
+            raise CommandError(f"Invalid type: '{error}'", ExitStatus.EX_USAGE) from None
+        if not package:
+            raise CommandError(
+                f"Invalid type: 'message type is missing package name: {type_name}'",
+                ExitStatus.EX_USAGE,
+            )
         try:
             tool.env.out(tool.md5(type_name))
         except (UnknownTypeError, InvalidMsgSpecError):

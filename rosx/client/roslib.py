@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rosx.client.rospkg import RosPack
+from rosx.msg.parser import package_resource_name
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -201,16 +202,6 @@ def resource_name_base(name: str) -> str:
 def resource_name_package(name: str) -> str | None:
     """``geometry_msgs`` of ``geometry_msgs/Twist``; None without a package."""
     return name[: name.find(PRN_SEPARATOR)] if PRN_SEPARATOR in name else None
-
-
-def package_resource_name(name: str) -> tuple[str, str]:
-    """``(package, name)``; ``("", name)`` without a package; ValueError for two ``/``."""
-    if PRN_SEPARATOR not in name:
-        return "", name
-    parts = name.split(PRN_SEPARATOR)
-    if len(parts) != 2:
-        raise ValueError(f"invalid name [{name}]")
-    return parts[0], parts[1]
 
 
 def is_legal_resource_name(name: str | None) -> bool:

@@ -61,6 +61,17 @@ class InvalidMsgSpecError(ValueError):
         self.line = line
 
 
+def package_resource_name(name: str) -> tuple[str, str]:
+    """``(package, name)`` of a resource name such as ``pkg/Type``; ``("", name)`` without a
+    package; ValueError ``invalid name [...]`` for more than one ``/`` (genmsg's and roslib's)."""
+    if "/" not in name:
+        return "", name
+    parts = name.split("/")
+    if len(parts) != 2:
+        raise ValueError(f"invalid name [{name}]")
+    return parts[0], parts[1]
+
+
 def is_valid_type_name(full_name: str) -> bool:
     """True for a legal ``pkg/Type`` name."""
     package, sep, name = full_name.partition("/")

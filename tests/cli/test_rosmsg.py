@@ -147,6 +147,22 @@ def test_unknown_message_errors() -> None:
     )
 
 
+def test_a_name_with_two_slashes_is_genmsgs_invalid_name() -> None:
+    """ROS 1 refuses ``a/b/c`` before it looks for a package ``a``."""
+    for tool, prefix in (("rosmsg", "Unable to load msg"), ("rossrv", "Unknown srv type")):
+        for name in ("a/b/c", "/std_msgs/String"):
+            for command in ("show", "info"):
+                result = rosx(tool, command, name)
+                expected = f"{prefix} [{name}]: invalid name [{name}]\n"
+                assert (result.status, result.out, result.err) == (1, "", expected)
+        result = rosx(tool, "md5", "a/b/c")
+        expected = "Invalid type: 'invalid name [a/b/c]'\n"
+        assert (result.status, result.out, result.err) == (64, "", expected)
+    result = rosx("rosmsg", "md5", "/Twist")
+    expected = "Invalid type: 'message type is missing package name: /Twist'\n"
+    assert (result.status, result.out, result.err) == (64, "", expected)
+
+
 @pytest.mark.parametrize(
     ("argv", "message"),
     [
