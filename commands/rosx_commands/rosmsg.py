@@ -112,13 +112,15 @@ class _Tool:
         return CommandError(f"{prefix} [{full_name}]: {reason}")
 
     def _search_paths(self, package: str) -> str:
-        directory = self.store.package_dir(package)
-        if directory is not None:
-            return repr([str(directory / self.kind)])
+        search_path = {
+            name: [str(directory) for directory in directories]
+            for name, directories in self.store.search_path(self.kind).items()
+        }
+        if package in search_path:
+            return repr(search_path[package])
         if self.store.has_package(package):
             return repr([])
-        roots = self.store.path_packages
-        return repr({name: [str(path / self.kind)] for name, path in roots.items()})
+        return repr(search_path)
 
     def print_list(self, items: list[str], single: bool) -> None:
         self.env.out((" " if single else "\n").join(items))

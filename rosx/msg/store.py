@@ -93,6 +93,11 @@ class TypeStore:
         roots = (self._index.on_path(package), self._bundled_packages.get(package))
         return [root / kind for root in roots if root is not None]
 
+    def search_path(self, kind: str) -> dict[str, list[Path]]:
+        """Every package with a directory and where its ``kind`` files may live, as rosmsg's
+        search path (named in its errors)."""
+        return {name: self._directories(name, kind) for name in self._index.packages}
+
     @property
     def package_path(self) -> list[Path]:
         """The package path the store searches for ``.msg``/``.srv``/``.action`` files (a copy)."""

@@ -7,7 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.support.cli import rosx, rosx_process
+from rosx.packages.crawl import bundled_packages
+from tests.support.cli import clean_environ, rosx, rosx_process
 from tests.support.ros1 import needs_ros1, ros1_python, run_ros1
 
 TWIST = """\
@@ -161,6 +162,36 @@ def test_a_name_with_two_slashes_is_genmsgs_invalid_name() -> None:
     result = rosx("rosmsg", "md5", "/Twist")
     expected = "Invalid type: 'message type is missing package name: /Twist'\n"
     assert (result.status, result.out, result.err) == (64, "", expected)
+
+
+def test_an_unknown_package_names_every_package_of_the_search_path(tmp_path: Path) -> None:
+    """As ROS 1: each package rospack finds, with its ``msg`` folders, the package path's
+    first (a workspace's ``std_msgs`` over rosx's own)."""
+    overlay = tmp_path / "std_msgs"
+    overlay.mkdir()
+    (overlay / "package.xml").write_text(
+        '<package format="2"><name>std_msgs</name><version>0.5.13</version>'
+        "<description>d</description><maintainer email='m@example.com'>m</maintainer>"
+        "<license>BSD</license></package>"
+    )
+    environ = clean_environ(ROS_PACKAGE_PATH=str(tmp_path))
+    for tool, kind, prefix in (
+        ("rosmsg", "msg", "Unable to load msg"),
+        ("rossrv", "srv", "Unknown srv type"),
+    ):
+        search_path = {name: [f"{folder}/{kind}"] for name, folder in bundled_packages().items()}
+        search_path["std_msgs"].insert(0, f"{overlay}/{kind}")
+        result = rosx(tool, "show", "/Twist", environ=environ)
+        expected = (
+            f"{prefix} [/Twist]: Cannot locate message [Twist]: unknown package [] "
+            f"on search path [{search_path!r}]\n"
+        )
+        assert (result.status, result.out, result.err) == (1, "", expected)
+        result = rosx(tool, "show", "std_msgs/Nope", environ=environ)
+        assert result.err == (
+            f"{prefix} [std_msgs/Nope]: Cannot locate message [Nope] in package [std_msgs] "
+            f"with paths [{search_path['std_msgs']!r}]\n"
+        )
 
 
 @pytest.mark.parametrize(
