@@ -72,6 +72,16 @@ def test_rosrun_of_a_ros_tool_runs_rosxs_tool() -> None:
     assert (done.returncode, done.stdout, done.stderr) == (0, "bool data\n\n", "")
 
 
+def test_rosrun_rosbag_play_is_rosbag_play(tmp_path: Path) -> None:
+    """``rosbag record`` and ``play`` run rosbag's ``lib/`` programs in ROS 1; ``rosrun rosbag
+    play`` is rosx's ``rosbag play``."""
+    missing = tmp_path / "nosuch.bag"
+    done = rosx_process("rosrun", "rosbag", "play", str(missing))
+    assert done.status == 1
+    assert done.err.endswith(f"]: Error opening file: {missing}\n")
+    assert done.err.startswith("[FATAL] [")
+
+
 def test_rosxs_program_wins_over_a_same_named_package_on_the_path(tmp_path: Path) -> None:
     """As roslaunch does: the system's turtlesim (or a message-only one) does not replace
     rosx's turtlesim_node."""
