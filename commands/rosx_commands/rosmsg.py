@@ -236,10 +236,9 @@ def _package(tool: _Tool, argv: list[str]) -> int:
     )
     options, package = tool.type_arg(parser, argv)
     if not tool.store.has_package(package):
-        paths = [str(p) for p in tool.store.package_path]
-        lines = [f"Invalid package: {package}"] + [
-            f"ROS path [{i}]={p}" for i, p in enumerate(paths)
-        ]
+        from rosx.packages.index import ros_path_lines  # noqa: PLC0415 - only for this error
+
+        lines = [f"Invalid package: {package}", *ros_path_lines(tool.store.package_path)]
         raise CommandError("\n".join(lines), ExitStatus.EX_USAGE)
     found = [t for t in tool.store.types(tool.kind) if t.partition("/")[0] == package]
     tool.print_list(found, bool(getattr(options, "single_line", False)))

@@ -26,10 +26,9 @@ class ResourceNotFound(Exception):  # noqa: N818 - rospkg's name, which scripts 
         self.ros_paths = list(ros_paths) if ros_paths is not None else None
 
     def __str__(self) -> str:
-        text = str(self.args[0])
-        for number, path in enumerate(self.ros_paths or []):
-            text += f"\nROS path [{number}]={path}"
-        return text
+        from rosx.packages.index import ros_path_lines  # noqa: PLC0415 - only when printed
+
+        return "\n".join([str(self.args[0]), *ros_path_lines(self.ros_paths or [])])
 
 
 def get_ros_root(env: Mapping[str, str] | None = None) -> str | None:

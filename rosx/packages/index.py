@@ -24,7 +24,7 @@ from rosx.packages.crawl import bundled_packages, split_package_path
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from collections.abc import Callable, Mapping
+    from collections.abc import Callable, Iterable, Mapping
     from pathlib import Path
 
     from rosx.packages.cache import KeptCrawl
@@ -37,6 +37,12 @@ class PackageNotFoundError(LookupError):
     def __init__(self, name: str) -> None:
         super().__init__(f"[rospack] Error: package '{name}' not found")
         self.name = name
+
+
+def ros_path_lines(package_path: Iterable[str | Path]) -> list[str]:
+    """``ROS path [N]=DIR`` for each directory of ``package_path``: how rospkg, rosmsg and
+    roslaunch say where a package was looked for."""
+    return [f"ROS path [{number}]={path}" for number, path in enumerate(package_path)]
 
 
 class PackageIndex:
@@ -119,9 +125,8 @@ class PackageIndex:
 
     def not_found_text(self, name: str) -> str:
         """What rospkg says of package ``name`` not found: the name, then each ``ROS path
-        [N]=DIR`` of the package path searched."""
-        searched = [f"ROS path [{n}]={path}" for n, path in enumerate(self.package_path)]
-        return "\n".join([name, *searched])
+        [N]=DIR`` of the package path searched (`ros_path_lines`)."""
+        return "\n".join([name, *ros_path_lines(self.package_path)])
 
     def directories(self, name: str) -> list[Path]:
         """Where package ``name``'s files are looked for: the package path's directory, then
@@ -191,4 +196,4 @@ class PackageIndex:
         return users
 
 
-__all__ = ["PackageIndex", "PackageNotFoundError", "bundled_packages"]
+__all__ = ["PackageIndex", "PackageNotFoundError", "bundled_packages", "ros_path_lines"]
