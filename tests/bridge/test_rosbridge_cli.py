@@ -8,14 +8,13 @@ import re
 import signal
 import socket
 import subprocess
-import sys
 import time
 from collections.abc import Iterator
 
 import pytest
 from websockets.sync.client import connect
 
-from tests.support.cli import clean_environ, rosx, rosx_process
+from tests.support.cli import ROSX_COMMAND, clean_environ, rosx, rosx_process
 
 
 @pytest.fixture
@@ -25,7 +24,7 @@ def environ(master: str) -> dict[str, str]:
 
 def start(argv: list[str], environ: dict[str, str]) -> subprocess.Popen[str]:
     return subprocess.Popen(
-        [sys.executable, "-c", "from rosx_commands.main import run; run()", *argv],
+        [*ROSX_COMMAND, *argv],
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=environ,
     )  # fmt: skip
 

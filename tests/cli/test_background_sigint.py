@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import signal
 import subprocess
-import sys
 from collections.abc import Callable
 from pathlib import Path
 
@@ -17,10 +16,10 @@ import pytest
 
 from rosx.transport.client import XmlRpcClient
 from rosx.transport.errors import TransportError
-from tests.support.cli import clean_environ
+from tests.support.cli import ROSX_COMMAND, clean_environ
 from tests.support.procs import free_port, stop, wait_for
 
-_RUN = [sys.executable, "-c", "from rosx_commands.main import run; run()"]
+_RUN = ROSX_COMMAND
 
 
 def _ignore_sigint() -> None:

@@ -6,8 +6,6 @@ import contextlib
 import io
 import re
 import signal
-import subprocess
-import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -21,7 +19,7 @@ from rosx.node import Node
 from rosx.transport.client import XmlRpcClient
 from rosx_commands.context import Environment
 from rosx_commands.main import run_tool
-from tests.support.cli import Result, clean_environ, rosx
+from tests.support.cli import Result, clean_environ, rosx, rosx_popen
 from tests.support.procs import free_port, wait_for
 
 String = get_message_class("std_msgs/String")
@@ -699,13 +697,7 @@ def test_echo_from_a_missing_bag_says_so(env: dict[str, str]) -> None:
 
 
 def test_ctrl_c_exits_quietly_and_unregisters(master: str) -> None:
-    process = subprocess.Popen(
-        [sys.executable, "-c", "from rosx_commands.main import run; run()", "rostopic", "echo", "/c/never"],
-        env=clean_environ(ROS_MASTER_URI=master),
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-    )  # fmt: skip
+    process = rosx_popen("rostopic", "echo", "/c/never", ROS_MASTER_URI=master)
     try:
         wait_for(lambda: bool(tool_nodes(master)), what="echo's node")
         assert process.stderr is not None
@@ -739,13 +731,7 @@ def test_ctrl_c_prints_a_last_report_as_ros1(
     stream: Callable[..., None], master: str, command: str, last: str
 ) -> None:
     stream("/c/rated", stamped(), hz=20)
-    process = subprocess.Popen(
-        [sys.executable, "-c", "from rosx_commands.main import run; run()", "rostopic", command, "/c/rated"],
-        env=clean_environ(ROS_MASTER_URI=master),
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-    )  # fmt: skip
+    process = rosx_popen("rostopic", command, "/c/rated", ROS_MASTER_URI=master)
     try:
         assert process.stdout is not None
         assert process.stdout.readline() == "subscribed to [/c/rated]\n"

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.support.cli import clean_environ
+from tests.support.cli import ROSX_COMMAND, clean_environ
 from tests.support.procs import free_port, stop, wait_for
 from tests.support.ros1 import ROS1, ROS1_PYTHON, ros1_environ
 
@@ -150,7 +150,7 @@ def _on(ns: str | None, args: list[str]) -> list[str]:
 
 
 def _rosx(*argv: str) -> list[str]:
-    return [sys.executable, "-c", "from rosx_commands.main import run; run()", *argv]
+    return [*ROSX_COMMAND, *argv]
 
 
 def _wait_for_lines(process: Process, *expected: str) -> None:

@@ -9,7 +9,6 @@ from __future__ import annotations
 import contextlib
 import os
 import signal
-import sys
 import threading
 from typing import Any
 
@@ -19,12 +18,12 @@ from rosx.core import Core
 from rosx.master.client import MasterClient, MasterUnreachable
 from rosx.msg.codec.classes import get_message_class, get_service_class
 from rosx.node import Node
-from tests.support.cli import clean_environ, rosx
+from tests.support.cli import ROSX_COMMAND, clean_environ, rosx
 from tests.support.procs import free_port, running, wait_for
 
 Int32 = get_message_class("std_msgs/Int32")
 
-ROSX = [sys.executable, "-c", "from rosx_commands.main import run; run()"]
+ROSX = ROSX_COMMAND
 
 TALKER = """
 import sys, time

@@ -5,7 +5,6 @@ placed, and q and Ctrl-C quit. Skipped where tmux is not installed."""
 
 from __future__ import annotations
 
-import sys
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -13,7 +12,7 @@ import pytest
 
 from rosx.master.client import MasterClient
 from rosx.packages.crawl import PREFIX
-from tests.support.cli import clean_environ
+from tests.support.cli import ROSX_COMMAND, clean_environ
 from tests.support.procs import free_port, running, wait_for
 from tests.support.tmux import Tmux, needs_tmux
 
@@ -31,7 +30,7 @@ def launched(*argv: str) -> Iterator[str]:
     needs_tmux()
     uri = f"http://127.0.0.1:{free_port()}/"
     environ = clean_environ(ROS_MASTER_URI=uri)
-    command = [sys.executable, "-c", "from rosx_commands.main import run; run()", "roslaunch"]
+    command = [*ROSX_COMMAND, "roslaunch"]
     with running([*command, *argv], environ):
         master = MasterClient(uri, "/rviz_test")
 

@@ -11,6 +11,9 @@ from dataclasses import dataclass
 from rosx_commands.context import Environment
 from rosx_commands.main import run_tool
 
+#: The ``rosx`` command as the installed entry point runs it, with this interpreter.
+ROSX_COMMAND = [sys.executable, "-c", "from rosx_commands.main import run; run()"]
+
 
 @dataclass
 class Result:
@@ -41,7 +44,7 @@ def clean_environ(**extra: str) -> dict[str, str]:
 def rosx_process(*argv: str, stdin: str = "", timeout: float = 60, **extra: str) -> Result:
     """Run the installed ``rosx`` entry point in a child process."""
     done = subprocess.run(
-        [sys.executable, "-c", "from rosx_commands.main import run; run()", *argv],
+        [*ROSX_COMMAND, *argv],
         input=stdin,
         capture_output=True,
         text=True,
@@ -50,3 +53,15 @@ def rosx_process(*argv: str, stdin: str = "", timeout: float = 60, **extra: str)
         check=False,
     )
     return Result(done.returncode, done.stdout, done.stderr)
+
+
+def rosx_popen(*argv: str, **extra: str) -> subprocess.Popen[str]:
+    """Start ``rosx ARGV…`` as a child process (a clean ROS environment plus ``extra``), its
+    output and errors piped as text; the caller stops it."""
+    return subprocess.Popen(
+        [*ROSX_COMMAND, *argv],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=clean_environ(**extra),
+    )

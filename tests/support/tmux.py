@@ -10,7 +10,6 @@ import re
 import shutil
 import signal
 import subprocess
-import sys
 import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -20,7 +19,7 @@ from typing import NamedTuple
 import pytest
 
 from rosx.workspace.path_commands import HINTED
-from tests.support.cli import clean_environ
+from tests.support.cli import ROSX_COMMAND, clean_environ
 
 ROOT = Path(__file__).parents[2]
 
@@ -80,7 +79,7 @@ class Tmux:
             k: v for k, v in os.environ.items() if k not in ("COLUMNS", "LINES")
         }
         environ["PYTHONPATH"] = os.pathsep.join(str(ROOT / p) for p in (".", "commands", "turtle"))
-        command = [sys.executable, "-c", "from rosx_commands.main import run; run()", *argv]
+        command = [*ROSX_COMMAND, *argv]
         columns, rows = size
         # The pane stays, dead, after the program ends (so its end is seen however soon it comes).
         config = folder / "tmux.conf"
