@@ -697,17 +697,12 @@ def test_echo_from_a_missing_bag_says_so(env: dict[str, str]) -> None:
 
 
 def test_ctrl_c_exits_quietly_and_unregisters(master: str) -> None:
-    process = rosx_popen("rostopic", "echo", "/c/never", ROS_MASTER_URI=master)
-    try:
+    with rosx_popen("rostopic", "echo", "/c/never", ROS_MASTER_URI=master) as process:
         wait_for(lambda: bool(tool_nodes(master)), what="echo's node")
         assert process.stderr is not None
         warning = process.stderr.readline()  # echo is waiting for the topic once this is out
         process.send_signal(signal.SIGINT)
         out, err = process.communicate(timeout=15)
-    finally:
-        if process.poll() is None:
-            process.kill()
-            process.wait()
     assert process.returncode == 0
     assert (out, warning + err) == (
         "",
@@ -731,18 +726,13 @@ def test_ctrl_c_prints_a_last_report_as_ros1(
     stream: Callable[..., None], master: str, command: str, last: str
 ) -> None:
     stream("/c/rated", stamped(), hz=20)
-    process = rosx_popen("rostopic", command, "/c/rated", ROS_MASTER_URI=master)
-    try:
+    with rosx_popen("rostopic", command, "/c/rated", ROS_MASTER_URI=master) as process:
         assert process.stdout is not None
         assert process.stdout.readline() == "subscribed to [/c/rated]\n"
         while not process.stdout.readline().startswith("\t"):  # a whole report is out
             pass
         process.send_signal(signal.SIGINT)
         out, err = process.communicate(timeout=15)
-    finally:
-        if process.poll() is None:
-            process.kill()
-            process.wait()
     assert (process.returncode, err) == (0, "")
     assert re.fullmatch(last, out), out
 

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import contextlib
 import io
 import os
 import subprocess
 import sys
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 from rosx_commands.context import Environment
@@ -55,13 +57,20 @@ def rosx_process(*argv: str, stdin: str = "", timeout: float = 60, **extra: str)
     return Result(done.returncode, done.stdout, done.stderr)
 
 
-def rosx_popen(*argv: str, **extra: str) -> subprocess.Popen[str]:
-    """Start ``rosx ARGV…`` as a child process (a clean ROS environment plus ``extra``), its
-    output and errors piped as text; the caller stops it."""
-    return subprocess.Popen(
+@contextlib.contextmanager
+def rosx_popen(*argv: str, **extra: str) -> Iterator[subprocess.Popen[str]]:
+    """``rosx ARGV…`` as a child process for the duration of the block (a clean ROS environment
+    plus ``extra``), its output and errors piped as text; killed at the end if still running."""
+    process = subprocess.Popen(
         [*ROSX_COMMAND, *argv],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
         env=clean_environ(**extra),
     )
+    try:
+        yield process
+    finally:
+        if process.poll() is None:
+            process.kill()
+        process.wait()
