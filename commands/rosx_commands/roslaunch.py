@@ -401,7 +401,7 @@ def _launch(
     try:
         return run.run()
     except LaunchFailedError as error:
-        raise _rlexception(str(error)) from None
+        raise CommandError(f"{error.prefix}{error}", ExitStatus.ERROR) from None
 
 
 def _roslaunch(argv: list[str], env: Environment) -> int:

@@ -42,6 +42,16 @@ class LaunchError(Exception):
         return ": ".join([*parts, message])
 
 
+class ResourceNotFoundError(LaunchError):
+    """A package that ``$(find PACKAGE)`` names is not on the package path; ``package`` names
+    it. ``str()`` says ``Resource not found: PACKAGE``; roslaunch says it as rospkg's error,
+    with the paths it searched (`rosx.launch.run.runner.LaunchRun`)."""
+
+    def __init__(self, file: str, line: int, tag: str, package: str) -> None:
+        super().__init__(file, line, tag, f"Resource not found: {package}")
+        self.package = package
+
+
 class NodePackageError(LaunchError):
     """A node's package is not on the package path; ``package`` names it.
 
@@ -54,4 +64,4 @@ class NodePackageError(LaunchError):
         self.package = package
 
 
-__all__ = ["LaunchError", "NodePackageError"]
+__all__ = ["LaunchError", "NodePackageError", "ResourceNotFoundError"]

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 from rosx.launch import substitution
 from rosx.launch.context import LoadContext
-from rosx.launch.errors import LaunchError
+from rosx.launch.errors import LaunchError, ResourceNotFoundError
 from rosx.launch.model import CORE_SOURCE, LaunchPlan, Machine, Param, Source
 from rosx.launch.tags import ATTRS
 from rosx.launch.tags.machine import add_machine, machine_tag
@@ -96,7 +96,9 @@ class Reader:
                 context, element, f"requires the '{missing.name}' arg to be set"
             ) from None
         except substitution.MissingPackageError as missing:
-            raise self.fail(context, element, f"Resource not found: {missing.name}") from None
+            raise AbortError(
+                ResourceNotFoundError(context.filename, element.line, element.tag, missing.name)
+            ) from None
         except substitution.SubstitutionError as error:
             raise self.fail(context, element, str(error)) from None
 

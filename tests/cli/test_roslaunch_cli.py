@@ -102,9 +102,34 @@ def test_a_launch_file_with_a_mistake_is_reported_after_the_log_opens(
     tmp_path: Path, text: str, error: str
 ) -> None:
     launch = tmp_path / "bad.launch"
+    _reported_after_the_log_opens(tmp_path, launch, text, f"RLException: {launch}:{error}")
+
+
+def test_a_package_find_does_not_find_is_reported_as_rospkgs_error(tmp_path: Path) -> None:
+    """roslaunch lets rospkg's ResourceNotFound through: ``Resource not found: PACKAGE`` and
+    the package path searched (rosx names the file, line and tag before the package)."""
+    workspace = tmp_path / "ws"
+    workspace.mkdir()
+    launch = tmp_path / "find.launch"
+    _reported_after_the_log_opens(
+        tmp_path,
+        launch,
+        '<launch>\n  <include file="$(find no_such_pkg)/a.launch"/>\n</launch>\n',
+        f"Resource not found: {launch}:2: <include>: no_such_pkg\nROS path [0]={workspace}",
+        ROS_PACKAGE_PATH=str(workspace),
+    )
+
+
+def _reported_after_the_log_opens(
+    tmp_path: Path, launch: Path, text: str, message: str, **extra: str
+) -> None:
+    """``roslaunch LAUNCH`` (of ``text``) prints roslaunch's log lines, then ``message`` and
+    that the traceback is in the log, which holds both; status 1."""
     launch.write_text(text)
     home = tmp_path / "home"
-    environ = clean_environ(ROS_HOME=str(home), ROS_MASTER_URI=f"http://localhost:{free_port()}")
+    environ = clean_environ(
+        ROS_HOME=str(home), ROS_MASTER_URI=f"http://localhost:{free_port()}", **extra
+    )
     result = rosx("roslaunch", str(launch), environ=environ)
     log = next((home / "log" / "latest").glob("roslaunch-*.log"))
     assert result.status == 1
@@ -114,7 +139,6 @@ def test_a_launch_file_with_a_mistake_is_reported_after_the_log_opens(
         "Press Ctrl-C to interrupt\n"
         "Done checking log file disk usage. Usage is <1GB.\n"
     )
-    message = f"RLException: {launch}:{error}"
     assert result.err == f"{message}\nThe traceback for the exception was written to the log file\n"
     logged = log.read_text()
     assert f": {message}\n" in logged

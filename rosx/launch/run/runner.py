@@ -50,7 +50,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rosx.launch.errors import LaunchError, NodePackageError
+from rosx.launch.errors import LaunchError, NodePackageError, ResourceNotFoundError
 from rosx.launch.model import CORE_SOURCE
 from rosx.launch.run.monitor import (
     DEFAULT_SIGINT_TIMEOUT,
@@ -85,7 +85,12 @@ _CONNECT_TIMEOUT = 2.0
 
 
 class LaunchFailedError(Exception):
-    """The launch cannot go on; ``str()`` is what follows ``RLException: ``."""
+    """The launch cannot go on; ``str()`` is what follows `prefix`: ``RLException: ``, or
+    rospkg's ``Resource not found: `` for a package ``$(find)`` did not find."""
+
+    def __init__(self, message: str, prefix: str = "RLException: ") -> None:
+        super().__init__(message)
+        self.prefix = prefix
 
 
 class LaunchSettings:
@@ -250,7 +255,7 @@ class LaunchRun:
             except LaunchFailedError as error:
                 if not self.console.logging:
                     raise
-                self.console.error(f"RLException: {error}")
+                self.console.error(f"{error.prefix}{error}")
                 self.console.error("The traceback for the exception was written to the log file")
                 self.console.log_traceback()
                 return 1
@@ -275,6 +280,10 @@ class LaunchRun:
     def _load_plan(self) -> LaunchPlan:
         try:
             return self._load()
+        except ResourceNotFoundError as error:
+            where = LaunchError(error.file, error.line, error.tag, error.package)
+            text = self.package_index.not_found_text(str(where))
+            raise LaunchFailedError(text, prefix="Resource not found: ") from error
         except LaunchError as error:
             raise LaunchFailedError(str(error)) from error
 
