@@ -221,8 +221,19 @@ def test_second_core_on_the_port_refuses(
         "RLException: roscore cannot run as another roscore/master is already running. \n"
         "Please kill other roscore/master processes before relaunching.\n"
         f"The ROS_MASTER_URI is http://localhost:{port}/\n"
+        "The traceback for the exception was written to the log file\n"
     )
     assert out.endswith("NODES\n\n")
+    _assert_logged_with_its_traceback(out, "roscore cannot run as another roscore/master")
+
+
+def _assert_logged_with_its_traceback(out: str, error: str) -> None:
+    """The launcher's log (``... logging to LOG``) holds ``error`` and the traceback, as
+    roslaunch's does."""
+    log = Path(re.findall(r"^\.\.\. logging to (.*)$", out, re.MULTILINE)[0])
+    logged = log.read_text()
+    assert "[roslaunch][ERROR] " in logged and error in logged
+    assert "Traceback (most recent call last):" in logged and "PortInUseError" in logged
 
 
 @needs_ros1
@@ -253,7 +264,9 @@ def test_port_taken_by_something_else(env: dict[str, str]) -> None:
     assert f"ERROR: Unable to start XML-RPC server, port {port} is already in use\n" in out
     assert err.endswith(
         f"RLException: ERROR: could not contact master [http://localhost:{port}/]\n"
+        "The traceback for the exception was written to the log file\n"
     )
+    _assert_logged_with_its_traceback(out, "could not contact master")
 
 
 def test_sigterm_and_shutdown_call_stop_it(env: dict[str, str]) -> None:

@@ -18,9 +18,9 @@ from typing import TYPE_CHECKING, TextIO
 
 from rosx.core import Core, PortInUseError
 from rosx.core.params import ROSDISTRO, ROSVERSION
+from rosx.launch.run.console import LaunchConsole
 from rosx.master.defaults import master_uri
 from rosx.signals import STOP_SIGNALS, handling, soon
-from rosx.terminal import is_terminal
 from rosx.transport.address import address_warnings, foreign_address_warning, is_local_host
 from rosx.wire.xmlrpc_http import parse_http_uri
 from rosx.workspace.logdir import announce_run_log
@@ -39,30 +39,7 @@ def _summary_value(value: str) -> str:
     return stripped if all(32 <= ord(char) <= 126 for char in stripped) else "<...>"
 
 
-class _Printer:
-    """roslaunch's console output: plain lines, bold lines, red errors, the terminal title."""
-
-    def __init__(self, stdout: TextIO, stderr: TextIO, color: bool, error_color: bool) -> None:
-        self.stdout, self.stderr = stdout, stderr
-        self.color, self.error_color = color, error_color
-
-    def line(self, text: str = "") -> None:
-        self.stdout.write(text + "\n")
-        self.stdout.flush()
-
-    def bold(self, text: str) -> None:
-        self.line(f"\033[1m{text}\033[0m" if self.color else text)
-
-    def title(self, text: str) -> None:
-        if self.color:
-            self.line(f"\033]2;{text}\007")
-
-    def error(self, text: str) -> None:
-        self.stderr.write((f"\033[31m{text}\033[0m" if self.error_color else text) + "\n")
-        self.stderr.flush()
-
-
-def _print_summary(out: _Printer) -> None:
+def _print_summary(out: LaunchConsole) -> None:
     out.line(f"ros_comm version {ROSVERSION}")
     params = {"/rosdistro": ROSDISTRO, "/rosversion": ROSVERSION}
     lines = sorted(f" * {key}: {_summary_value(value)}" for key, value in params.items())
@@ -82,20 +59,24 @@ def _master_uri_warning(environ: Mapping[str, str], port: int) -> str | None:
     return None
 
 
-def _refuse(out: _Printer, refused: PortInUseError) -> int:
-    """Explain, as roscore does, why the master could not start; the exit code."""
+def _refuse(out: LaunchConsole, refused: PortInUseError) -> int:
+    """Explain, as roscore does, why the master could not start; the exit code. Called while
+    `PortInUseError` is handled: its traceback goes to the log, as roslaunch's does."""
     _print_summary(out)
     if refused.another_master:
         out.error(refused.message)
-        return 1
-    out.line("auto-starting new master")
-    out.bold(f"process[master]: started with pid [{os.getpid()}]")
-    out.line(refused.message)
-    out.error(f"RLException: ERROR: could not contact master [{refused.uri}]")
+    else:
+        out.line("auto-starting new master")
+        out.bold(f"process[master]: started with pid [{os.getpid()}]")
+        out.line(refused.message)
+        out.error(f"RLException: ERROR: could not contact master [{refused.uri}]")
+    if out.logging:
+        out.error("The traceback for the exception was written to the log file")
+        out.log_traceback()
     return 1
 
 
-def _print_started(out: _Printer, core: Core) -> None:
+def _print_started(out: LaunchConsole, core: Core) -> None:
     out.bold(f"started roslaunch server {core.uri}")
     _print_summary(out)
     uri_warning = _master_uri_warning(core.environ, core.port)
@@ -110,7 +91,7 @@ def _print_started(out: _Printer, core: Core) -> None:
     out.line("started core service [/rosout]")
 
 
-def _print_stopping(out: _Printer, message: str | None) -> None:
+def _print_stopping(out: LaunchConsole, message: str | None) -> None:
     if message is not None:
         # rosmaster's words, misspelling included, for a shutdown call without a message.
         out.line(f"shutdown request: {message}" if message else "shutdown requst")
@@ -169,31 +150,30 @@ def run_roscore(
 
     Signals are caught only on the main thread (elsewhere only a ``shutdown`` call stops it).
     """
-    errors = stderr if stderr is not None else stdout
-    out = _Printer(
-        stdout,
-        errors,
-        is_terminal(stdout) if color is None else color,
-        is_terminal(errors) if color is None else color,
-    )
+    out = LaunchConsole(stdout, stderr if stderr is not None else stdout, color=color)
     for warning in address_warnings(environ):
         out.error(warning)
     foreign = foreign_address_warning(environ)
     if foreign is not None:
         out.error(foreign)
     core = Core(port, environ)
-    announce_run_log(environ, core.run_id, out=out.line, err=out.error)
-    out.title("roscore")
-    with _StopSignals(core) as signals:
-        try:
-            core.start()
-        except PortInUseError as refused:
-            return _refuse(out, refused)
-        try:
-            _print_started(out, core)
-            _print_stopping(out, signals.wait())
-        finally:
-            core.stop()
-    out.line("... shutting down processing monitor complete")
-    out.bold("done")
-    return 0
+    log = announce_run_log(environ, core.run_id, out=out.line, err=out.error)
+    if log is not None:
+        out.open_log(log)
+    try:
+        out.title("roscore")
+        with _StopSignals(core) as signals:
+            try:
+                core.start()
+            except PortInUseError as refused:
+                return _refuse(out, refused)
+            try:
+                _print_started(out, core)
+                _print_stopping(out, signals.wait())
+            finally:
+                core.stop()
+        out.line("... shutting down processing monitor complete")
+        out.bold("done")
+        return 0
+    finally:
+        out.close()
