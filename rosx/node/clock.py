@@ -95,6 +95,15 @@ class Clock:
         current = self._current
         return now() if current is None else current
 
+    def wait_for_valid(self, *, shutdown: threading.Event | None = None) -> bool:
+        """Wait until ROS time is not 0 (roscpp's ``ros::Time::waitForValid``): at once on
+        the wall clock, else until the first ``/clock``; False if ``shutdown`` came first."""
+        stopped = shutdown.is_set if shutdown is not None else (lambda: False)
+        with self._changed:
+            while self.now() == _ZERO and not stopped():
+                self._changed.wait(_SIM_POLL)
+        return not stopped()
+
     def sleep(self, duration: float | Duration, *, shutdown: threading.Event | None = None) -> None:
         """Sleep ``duration`` seconds of ROS time (negative returns at once).
 

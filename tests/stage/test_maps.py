@@ -4,6 +4,7 @@ and the bundled arena whose world and map are one bitmap."""
 from __future__ import annotations
 
 import io
+import threading
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -142,6 +143,40 @@ def test_map_server_latches_and_serves_and_map_saver_writes_it_back(
         assert parse_map_yaml((tmp_path / "saved.yaml").read_text()).origin == (-2.8, -2.45, 0.0)
     finally:
         server.shutdown("test over")
+
+
+def test_map_server_on_simulated_time_stamps_the_map_with_the_first_clock(
+    master: str, make_node: Callable[..., Node]
+) -> None:
+    """As map_server after ``ros::Time::waitForValid()``: under ``/use_sim_time`` it waits for
+    ``/clock`` and stamps the map with it, not with 0."""
+    clock_node = make_node("/clock_source")
+    clock_node.params.set("/use_sim_time", True)
+    clock = clock_node.advertise("/clock", get_message_class("rosgraph_msgs/Clock"), queue_size=1)
+    quiet = io.StringIO()
+    grid = load_map(ARENA / "maps" / "turtlebot3_world.yaml", Console(quiet, quiet, {}).print)
+    server = MapServerNode(
+        NodeArgs.parse([], "map_server"), grid, environ={"ROS_MASTER_URI": master}, console=None
+    )
+    starting = threading.Thread(target=server.start)
+    starting.start()
+    try:
+        wait_for(lambda: clock.get_num_connections() == 1, what="map_server on /clock")
+        assert starting.is_alive()  # waiting for the first /clock
+        tick = get_message_class("rosgraph_msgs/Clock")()
+        tick.clock.secs, tick.clock.nsecs = 84, 100_000_000
+        clock.publish(tick)
+        starting.join(timeout=30)
+        got: list[Any] = []
+        probe = make_node("/probe")
+        probe.subscribe("/map", get_message_class("nav_msgs/OccupancyGrid"), got.append)
+        wait_for(lambda: got, what="the latched map")
+        stamps = (got[0].header.stamp, got[0].info.map_load_time)
+        assert [(t.secs, t.nsecs) for t in stamps] == [(84, 100_000_000)] * 2
+    finally:
+        server.shutdown("test over")
+        starting.join(timeout=30)
+        clock_node.params.delete("/use_sim_time")  # the master is the module's
 
 
 def test_the_arenas_world_and_map_agree() -> None:

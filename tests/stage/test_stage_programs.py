@@ -64,11 +64,16 @@ def test_map_server_serves_and_map_saver_writes_the_same_files(
     master: str, make_node: Callable[[str], Node], tmp_path: Path
 ) -> None:
     maps = ARENA / "maps"
+    probe = make_node("/probe")
+    # On simulated time map_server waits for /clock; stageros (an earlier test on this module's
+    # master) sets /use_sim_time, as ROS 1's does.
+    if probe.params.has("/use_sim_time"):
+        probe.params.delete("/use_sim_time")
     server = start(
         ["map_server", "map_server", str(maps / "turtlebot3_world.yaml")], master, tmp_path
     )
     grids: list[Any] = []
-    make_node("/probe").subscribe("/map", get_message_class("nav_msgs/OccupancyGrid"), grids.append)
+    probe.subscribe("/map", get_message_class("nav_msgs/OccupancyGrid"), grids.append)
     wait_for(lambda: grids, timeout=60, what="the latched map")
     assert (grids[0].info.width, grids[0].info.height) == (112, 98)
     saver = subprocess.run(

@@ -1,6 +1,7 @@
 """``map_server MAP.yaml``: the map latched on ``map`` and ``map_metadata``, and the
 ``static_map`` service (nav_msgs/GetMap), as map_server serves them; ``~frame_id`` ("map").
-The map is stamped with ROS time when it is loaded (simulated time under ``/use_sim_time``)."""
+The map is stamped with ROS time when it is loaded: under ``/use_sim_time`` map_server waits for
+the first ``/clock``, as roscpp's ``ros::Time::waitForValid``."""
 
 from __future__ import annotations
 
@@ -83,8 +84,10 @@ class MapServerNode:
         node.start()
         self.args.set_private_params(node)
         frame = node.params.get("~frame_id", "map")
-        # ROS time, as roscpp's ros::Time::now(): /clock's under /use_sim_time (0 before it).
+        # ROS time, as map_server stamps it after ros::Time::waitForValid(): under
+        # /use_sim_time, the first /clock's or later.
         follow_sim_time(node)
+        node.clock.wait_for_valid(shutdown=node.shutdown_event)
         stamp = node.clock.now()
         grid = self.grid
         grid.header.frame_id = frame if isinstance(frame, str) else "map"
