@@ -9,8 +9,9 @@ from typing import Any
 
 import pytest
 
-from rosx.node import DEBUG, ERROR, INFO, WARN
-from rosx_turtle.console import Console, console_line, ros_time_text
+from rosx.msg.codec.rostime import Time
+from rosx.node import DEBUG, ERROR, INFO, WARN, Node
+from rosx_turtle.console import Console, NodeLog, console_line, ros_time_text
 from rosx_turtle.roscpp import NodeArgs, param_int, typed_param
 
 
@@ -26,6 +27,24 @@ def test_default_line() -> None:
     assert console_line(ERROR, "x", nanos=0).startswith("[ERROR] ")
     assert console_line(DEBUG, "x", nanos=0).startswith("[DEBUG] ")
     assert ros_time_text(12_000_000_001) == "12.000000001"
+
+
+def test_a_node_on_simulated_time_shows_the_wall_clock_then_its_clock() -> None:
+    """rosconsole's time token: ``wall, simulated`` once ROS time is simulated and valid."""
+    line = console_line(INFO, "x", nanos=5, sim_nanos=84_100_000_000)
+    assert line == "[ INFO] [0.000000005, 84.100000000]: x"
+    out = io.StringIO()
+    node = Node("/sim_logger", master_uri="http://localhost:1/")
+    log = NodeLog(node, Console(out, out, {}), logger="ros.map_server")
+    log(INFO, "wall")
+    node.clock.use_sim_time()
+    log(INFO, "no clock yet")
+    node.clock.set(Time(84, 100_000_000))
+    log(INFO, "simulated")
+    lines = out.getvalue().splitlines()
+    assert re.fullmatch(r"\[ INFO\] \[\d+\.\d{9}\]: wall", lines[0])
+    assert re.fullmatch(r"\[ INFO\] \[\d+\.\d{9}\]: no clock yet", lines[1])
+    assert re.fullmatch(r"\[ INFO\] \[\d+\.\d{9}, 84\.100000000\]: simulated", lines[2])
 
 
 def test_format_tokens_are_read_from_the_format_only() -> None:

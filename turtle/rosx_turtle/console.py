@@ -2,7 +2,8 @@
 
 rosconsole's default format is ``[${severity}] [${time}]: ${message}``, with the severities
 ``DEBUG``, `` INFO``, `` WARN``, ``ERROR`` and ``FATAL`` (padded to five characters) and the time
-as ``secs.nsecs`` (nine digits). ``ROSCONSOLE_FORMAT`` may change it (the tokens ``severity``,
+as ``secs.nsecs`` (nine digits; a node on simulated time that has had its first ``/clock`` shows
+``wall, simulated``). ``ROSCONSOLE_FORMAT`` may change it (the tokens ``severity``,
 ``message``, ``time``, ``walltime``, ``thread``, ``logger``, ``file``, ``line``, ``function``,
 ``node``). DEBUG and INFO go to stdout, WARN and above to stderr.
 
@@ -47,13 +48,16 @@ def console_line(
     logger: str = "ros",
     fmt: str = DEFAULT_FORMAT,
     nanos: int | None = None,
+    sim_nanos: int | None = None,
 ) -> str:
-    """One rosconsole line (no newline, no colour) for a record."""
+    """One rosconsole line (no newline, no colour) for a record; with ``sim_nanos`` (a node on
+    simulated time, once it has a ``/clock``) ``${time}`` is the wall clock, then that time,
+    as rosconsole's time token writes them."""
     stamp = ros_time_text(time.time_ns() if nanos is None else nanos)
     values = {
         "severity": SEVERITIES.get(level, " INFO"),
         "message": message,
-        "time": stamp,
+        "time": stamp if sim_nanos is None else f"{stamp}, {ros_time_text(sim_nanos)}",
         "walltime": stamp,
         "thread": f"0x{threading.get_ident():x}",
         "logger": logger,
@@ -75,9 +79,11 @@ class Console:
         self.fmt = environ.get("ROSCONSOLE_FORMAT", DEFAULT_FORMAT)
         self._lock = threading.Lock()
 
-    def print(self, level: int, message: str, *, node: str = "") -> None:
-        """Print one record (coloured only on a terminal)."""
-        line = console_line(level, message, node=node, fmt=self.fmt)
+    def print(
+        self, level: int, message: str, *, node: str = "", sim_nanos: int | None = None
+    ) -> None:
+        """Print one record (coloured only on a terminal); ``sim_nanos``: `console_line`'s."""
+        line = console_line(level, message, node=node, fmt=self.fmt, sim_nanos=sim_nanos)
         stream = self.stdout if level < WARN else self.stderr
         if is_terminal(stream):
             line = f"{_COLOURS.get(level, _COLOURS[ERROR])}{line}{_NORMAL}"
@@ -110,7 +116,9 @@ class NodeLog:
         if not self.enabled(level):
             return
         if self.console is not None:
-            self.console.print(level, message, node=self.node.name)
+            clock = self.node.clock
+            sim = None if clock.is_wallclock else clock.now().to_nsec()
+            self.console.print(level, message, node=self.node.name, sim_nanos=sim or None)
         publish = self.node.log_sink.publish
         if publish is not None and not self.node.is_shutdown():
             publish(level, message, "", "", 0)

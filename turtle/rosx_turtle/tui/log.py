@@ -44,5 +44,7 @@ class ScreenConsole(Console):
         self.offer = offer
 
     @override
-    def print(self, level: int, message: str, *, node: str = "") -> None:
+    def print(
+        self, level: int, message: str, *, node: str = "", sim_nanos: int | None = None
+    ) -> None:
         self.offer(LogRecord(level, SEVERITIES.get(level, " INFO"), message))
