@@ -17,7 +17,7 @@ from rosx._lazy import lazy_names
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from rosx.names.anonymous import anonymous_name, anonymous_node_name
+    from rosx.names.anonymous import anonymous_name, anonymous_node_name, roscpp_anonymous_name
     from rosx.names.remap_args import (
         REMAP,
         RemapArgs,
@@ -58,6 +58,7 @@ _HOMES = {
     "SEP": "rosx.names.resolution",
     "anonymous_name": "rosx.names.anonymous",
     "anonymous_node_name": "rosx.names.anonymous",
+    "roscpp_anonymous_name": "rosx.names.anonymous",
     "basename": "rosx.names.resolution",
     "canonicalize": "rosx.names.resolution",
     "check_name": "rosx.names.validation",
@@ -108,6 +109,7 @@ __all__ = [
     "resolve",
     "resolve_remappings",
     "ros_namespace",
+    "roscpp_anonymous_name",
     "script_resolve_name",
     "strip_remap_args",
     "validate",

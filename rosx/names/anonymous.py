@@ -4,6 +4,8 @@
   used for resources that must not collide across machines.
 * `anonymous_node_name` is what ``rospy.init_node(name, anonymous=True)`` registers, and so what
   ``rosnode list`` shows for ROS 1's own tools: ``base_<pid>_<milliseconds since the epoch>``.
+* `roscpp_anonymous_name` is what roscpp's ``ros::init_options::AnonymousName`` registers (its
+  C++ tools: tf_echo, map_server…): ``base_<wall time in nanoseconds>``.
 
 The host name, process id, random source and clock are parameters so that tests can fix them.
 """
@@ -16,7 +18,7 @@ import socket
 import sys
 import time
 
-__all__ = ["anonymous_name", "anonymous_node_name"]
+__all__ = ["anonymous_name", "anonymous_node_name", "roscpp_anonymous_name"]
 
 # Host names may hold "-" (RFC 952) and addresses "." or ":", none of them legal in a ROS name.
 _ILLEGAL_HOST_CHARS = str.maketrans({".": "_", "-": "_", ":": "_"})
@@ -63,3 +65,9 @@ def anonymous_node_name(base: str, *, pid: int | None = None, now: float | None 
     process = os.getpid() if pid is None else pid
     millis = int((time.time() if now is None else now) * 1000)
     return f"{base}_{process}_{millis}"
+
+
+def roscpp_anonymous_name(base: str, *, now_ns: int | None = None) -> str:
+    """``base_<wall time in nanoseconds>``, as roscpp's ``init_options::AnonymousName`` names a
+    node; ``now_ns`` defaults to `time.time_ns`."""
+    return f"{base}_{time.time_ns() if now_ns is None else now_ns}"

@@ -19,10 +19,10 @@ import pytest
 from rosx.core import Core
 from rosx_commands.context import Environment
 from rosx_commands.main import run_tool
-from rosx_commands.tf_tools import atof
 from rosx_commands.tf_tools.echo import USAGE, failure_text, transform_text
 from rosx_commands.tf_tools.frames import NO_GRAPHVIZ, render, tf2_dot, tree_text
 from rosx_commands.tf_tools.static import TF2_USAGE, TF_USAGE, tf_static_transform_publisher
+from rosx_turtle.roscpp import atof
 from tests.support.cli import clean_environ
 from tests.support.procs import running, wait_for
 from tests.support.ros1 import needs_ros1, ros1_environ

@@ -31,6 +31,9 @@ if TYPE_CHECKING:
     from rosx.msg.codec.message import ServiceDefinition
     from rosx.node import ServiceHandle
 
+_LEADING_FLOAT = re.compile(
+    r"\s*[+-]?(\d+\.?\d*([eE][+-]?\d+)?|\.\d+([eE][+-]?\d+)?|inf|nan)", re.I
+)
 _INT32 = re.compile(r"[+-]?[0-9]+")
 _DOUBLE = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?")
 
@@ -46,6 +49,13 @@ def typed_param(text: str) -> Any:
     if text in ("false", "False", "FALSE"):
         return False
     return text
+
+
+def atof(text: str) -> float:
+    """C's ``atof``, as the C++ programs read numbers from their command lines: the number at
+    the start of ``text``, 0.0 when there is none."""
+    found = _LEADING_FLOAT.match(text)
+    return float(found.group(0)) if found else 0.0
 
 
 class NodeArgs(NamedTuple):

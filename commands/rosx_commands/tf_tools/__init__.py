@@ -12,24 +12,3 @@ nodes anonymous as roscpp names them, their logs roscpp's lines (`rosx_turtle.co
 """
 
 from __future__ import annotations
-
-import re
-import time
-
-_LEADING_FLOAT = re.compile(
-    r"\s*[+-]?(\d+\.?\d*([eE][+-]?\d+)?|\.\d+([eE][+-]?\d+)?|inf|nan)", re.I
-)
-
-
-def atof(text: str) -> float:
-    """C's ``atof``: the number at the start of ``text``, 0.0 when there is none."""
-    found = _LEADING_FLOAT.match(text)
-    return float(found.group(0)) if found else 0.0
-
-
-def anonymous(name: str) -> str:
-    """The name roscpp's ``init_options::AnonymousName`` gives: ``name_<wall time in ns>``."""
-    return f"{name}_{time.time_ns()}"
-
-
-__all__ = ["anonymous", "atof"]

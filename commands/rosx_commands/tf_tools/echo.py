@@ -15,7 +15,7 @@ import math
 import time
 from typing import TYPE_CHECKING
 
-from rosx_commands.tf_tools import anonymous, atof
+from rosx.names.anonymous import roscpp_anonymous_name
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -102,9 +102,9 @@ def echo_loop(
 
 def tf_echo(argv: Sequence[str], env: Environment) -> int:
     """Run ``tf_echo ARGV…``; its exit status (255 for a wrong command line, as ROS 1's)."""
-    from rosx_turtle.roscpp import NodeArgs  # noqa: PLC0415 - roscpp's command line
+    from rosx_turtle.roscpp import NodeArgs, atof  # noqa: PLC0415 - roscpp's command line
 
-    args = NodeArgs.parse(argv, anonymous("tf_echo"))
+    args = NodeArgs.parse(argv, roscpp_anonymous_name("tf_echo"))
     if len(args.argv) not in (2, 3):
         env.stdout.write(USAGE)
         env.stdout.flush()

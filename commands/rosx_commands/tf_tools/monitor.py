@@ -13,7 +13,7 @@ import threading
 from collections import deque
 from typing import TYPE_CHECKING, Any
 
-from rosx_commands.tf_tools import anonymous
+from rosx.names.anonymous import roscpp_anonymous_name
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Sequence
@@ -92,7 +92,7 @@ def tf_monitor(argv: Sequence[str], env: Environment) -> int:
     from rosx_turtle.console import Console  # noqa: PLC0415 - turtlesim's parts load only when used
     from rosx_turtle.roscpp import NodeArgs  # noqa: PLC0415 - turtlesim's parts load only when used
 
-    args = NodeArgs.parse(argv, anonymous("tf_monitor"))
+    args = NodeArgs.parse(argv, roscpp_anonymous_name("tf_monitor"))
     words = list(args.argv)
     if len(words) not in (0, 2):
         Console(env.stdout, env.stderr, env.environ).print(

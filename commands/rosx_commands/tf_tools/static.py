@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from rosx_commands.tf_tools import anonymous, atof
+from rosx.names.anonymous import roscpp_anonymous_name
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -67,6 +67,7 @@ def _console(env: Environment) -> Console:
 def _numbers(words: Sequence[str]) -> tuple[float, ...]:
     """Translation and rotation from ``x y z qx qy qz qw`` or ``x y z yaw pitch roll``."""
     from rosx.tf.linear import from_rpy  # noqa: PLC0415 - tf code loads only when used
+    from rosx_turtle.roscpp import atof  # noqa: PLC0415 - roscpp's habits
 
     values = [atof(w) for w in words]
     if len(values) == 7:
@@ -100,7 +101,7 @@ def static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
     from rosx.node import ERROR, FATAL, INFO  # noqa: PLC0415 - the node runtime loads with the first node
     from rosx_turtle.roscpp import NodeArgs  # noqa: PLC0415 - turtlesim's parts load only when used
 
-    args = NodeArgs.parse(argv, anonymous("static_transform_publisher"))
+    args = NodeArgs.parse(argv, roscpp_anonymous_name("static_transform_publisher"))
     words = list(args.argv)
     console = _console(env)
     if len(words) not in (1, 8, 9):
@@ -175,9 +176,9 @@ def tf_static_transform_publisher(argv: Sequence[str], env: Environment) -> int:
     """tf's ``static_transform_publisher ARGV… PERIOD_MS``; its exit status."""
     from rosx.node import ERROR, FATAL  # noqa: PLC0415 - the node runtime loads with the first node
     from rosx.tf import linear  # noqa: PLC0415 - tf code loads only when used
-    from rosx_turtle.roscpp import NodeArgs  # noqa: PLC0415 - turtlesim's parts load only when used
+    from rosx_turtle.roscpp import NodeArgs, atof  # noqa: PLC0415 - turtlesim's parts load only when used
 
-    args = NodeArgs.parse(argv, anonymous("static_transform_publisher"))
+    args = NodeArgs.parse(argv, roscpp_anonymous_name("static_transform_publisher"))
     words = list(args.argv)
     console = _console(env)
     if len(words) not in (9, 10):
