@@ -4,10 +4,11 @@ and the bundled arena whose world and map are one bitmap."""
 from __future__ import annotations
 
 import io
+import re
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
-from typing import Any
+from typing import Any, TextIO
 
 import numpy as np
 import pytest
@@ -25,7 +26,7 @@ from rosx_turtle.maps.files import (
     saved_yaml,
 )
 from rosx_turtle.maps.saver import save_map
-from rosx_turtle.maps.server import MapServerNode, load_map
+from rosx_turtle.maps.server import MapServerNode, load_map, run_map_server
 from rosx_turtle.roscpp import NodeArgs
 from rosx_turtle.stage.world.images import format_pgm, parse_pgm
 from rosx_turtle.stage.world.load import load_world
@@ -63,6 +64,53 @@ def test_the_yaml_and_its_errors_in_map_servers_words() -> None:
         with pytest.raises(MapFileError) as error:
             parse_map_yaml(text)
         assert str(error.value) == message
+
+
+class Captured:
+    """An `rosx_turtle.env.Env` whose streams are captured."""
+
+    def __init__(self) -> None:
+        self._out, self._err = io.StringIO(), io.StringIO()
+        self.stdout: TextIO = self._out
+        self.stderr: TextIO = self._err
+        self.stdin: TextIO = io.StringIO()
+        self.environ: Mapping[str, str] = {"ROS_MASTER_URI": "http://localhost:1/"}
+
+    def printed(self) -> str:
+        return self._out.getvalue() + self._err.getvalue()
+
+
+def _refused(argv: list[str]) -> str:
+    """What map_server prints (after its timestamps) refusing ``argv``; it exits 255."""
+    env = Captured()
+    assert run_map_server(argv, env) == 255
+    lines = env.printed().splitlines()
+    return "\n".join(re.sub(r"^\[(.....)\] \[[\d.]+\]: ", r"[\1] ", line) for line in lines)
+
+
+def test_map_server_refuses_a_broken_map_in_its_words(tmp_path: Path) -> None:
+    (tmp_path / "bad.yaml").write_text("image: x.pgm\nresolution: [0.05\n")
+    assert _refused([str(tmp_path / "bad.yaml")]).startswith(
+        "[ERROR] map_server exception: yaml-cpp: error at line 3, column 1: "
+    )
+    assert "\n" not in _refused([str(tmp_path / "bad.yaml")])
+    spec = (
+        "resolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"
+    )
+    (tmp_path / "text.yaml").write_text(spec + "image: text.yaml\n")
+    assert _refused([str(tmp_path / "text.yaml")]) == (
+        f'[ INFO] Loading map from image "{tmp_path}/text.yaml"\n'
+        f'[ERROR] failed to open image file "{tmp_path}/text.yaml": Unsupported image format'
+    )
+    (tmp_path / "gone.yaml").write_text(spec + "image: nosuch.pgm\n")
+    assert _refused([str(tmp_path / "gone.yaml")]).endswith(
+        f'[ERROR] failed to open image file "{tmp_path}/nosuch.pgm": '
+        f"Couldn't open {tmp_path}/nosuch.pgm"
+    )
+    assert _refused([str(tmp_path / "nosuch.yaml")]) == (
+        f"[ERROR] Map_server could not open {tmp_path}/nosuch.yaml."
+    )
+    assert _refused([]).startswith("[ERROR] \nUSAGE: map_server <map.yaml>")
 
 
 def test_pixels_become_occupancy_as_map_server_reads_them() -> None:

@@ -3,6 +3,7 @@ the test's master, their log lines, their topics and files, and a clean exit on 
 
 from __future__ import annotations
 
+import re
 import signal
 import subprocess
 import sys
@@ -16,7 +17,7 @@ from rosx.msg.codec.classes import get_message_class
 from rosx.node import Node
 from rosx.packages.crawl import bundled_packages
 from rosx_turtle.stage.world.images import parse_pgm
-from tests.support.cli import clean_environ
+from tests.support.cli import clean_environ, rosx
 from tests.support.procs import stop, wait_for
 from tests.support.stage_worlds import room
 
@@ -98,6 +99,35 @@ def test_map_server_serves_and_map_saver_writes_the_same_files(
     status, out = interrupted(server)
     assert status == 0, out
     assert "Read a 112 X 98 map @ 0.050 m/cell" in out
+
+
+def test_map_server_of_an_image_and_a_resolution_is_the_deprecated_form(
+    master: str, make_node: Callable[[str], Node], tmp_path: Path
+) -> None:
+    """``map_server IMAGE RESOLUTION``: the image at the origin with map_server's thresholds,
+    after its warning; its node anonymous, as map_server's ``ros::init`` asks."""
+    (tmp_path / "tiny.pgm").write_bytes(b"P5\n2 2\n255\n\x00\xfe\xfe\x00")
+    probe = make_node("/probe")
+    if probe.params.has("/use_sim_time"):  # set by stageros's test on this module's master
+        probe.params.delete("/use_sim_time")
+    server = start(["map_server", "map_server", "tiny.pgm", "0.5"], master, tmp_path)
+    grids: list[Any] = []
+    probe.subscribe("/map", get_message_class("nav_msgs/OccupancyGrid"), grids.append)
+    wait_for(lambda: grids, timeout=60, what="the latched map")
+    info = grids[0].info
+    assert (info.width, info.height, info.resolution) == (2, 2, 0.5)
+    assert (info.origin.position.x, info.origin.position.y, info.origin.orientation.w) == (0, 0, 1)
+    assert list(grids[0].data) == [0, 100, 100, 0]  # rows from the bottom; black is occupied
+    nodes = rosx("rosnode", "list", environ=clean_environ(ROS_MASTER_URI=master)).out.split()
+    assert any(re.fullmatch(r"/map_server_\d{19}", name) for name in nodes), nodes
+    status, out = interrupted(server)
+    assert status == 0, out
+    assert re.search(
+        r"^\[ WARN\] \[[\d.]+\]: Using deprecated map server interface\. "
+        r"Please switch to new interface\.$",
+        out,
+        re.MULTILINE,
+    ), out
 
 
 def test_map_saver_that_cannot_write_its_file_says_so_and_exits_1(

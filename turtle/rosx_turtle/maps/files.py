@@ -46,6 +46,16 @@ def _number(doc: dict[str, Any], key: str, message: str) -> float:
     return float(value)
 
 
+def _yaml_error(exc: Exception) -> str:
+    """A YAML error on one line, where it is as yaml-cpp says it (``yaml-cpp: error at line L,
+    column C: PROBLEM``)."""
+    mark = getattr(exc, "problem_mark", None)
+    problem = " ".join(str(getattr(exc, "problem", None) or exc).split())
+    if mark is None:
+        return f"yaml-cpp: error: {problem}"
+    return f"yaml-cpp: error at line {mark.line + 1}, column {mark.column + 1}: {problem}"
+
+
 def parse_map_yaml(text: str) -> MapSpec:
     """The map described by ``text``.
 
@@ -58,7 +68,7 @@ def parse_map_yaml(text: str) -> MapSpec:
     try:
         doc = YAML(typ="safe", pure=True).load(text)
     except YAMLError as exc:
-        raise MapFileError(f"The map description is not YAML: {exc}") from None
+        raise MapFileError(f"map_server exception: {_yaml_error(exc)}") from None
     if not isinstance(doc, dict):
         raise MapFileError("The map does not contain a resolution tag or it is invalid.")
     resolution = _number(

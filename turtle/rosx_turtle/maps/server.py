@@ -10,14 +10,15 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rosx.msg.codec.classes import get_message_class, get_service_class
-from rosx.node import ERROR, INFO
+from rosx.names.anonymous import roscpp_anonymous_name
+from rosx.node import ERROR, INFO, WARN
 from rosx.node.simtime import follow_sim_time
 from rosx_turtle import roscpp
 from rosx_turtle.console import Console, NodeLog
 from rosx_turtle.env import ProcessEnv
-from rosx_turtle.maps.files import MapFileError, occupancy, parse_map_yaml
+from rosx_turtle.maps.files import MapFileError, MapSpec, occupancy, parse_map_yaml
 from rosx_turtle.program import master_address, run_until_stopped
-from rosx_turtle.roscpp import NodeArgs
+from rosx_turtle.roscpp import NodeArgs, atof
 
 if TYPE_CHECKING:
     from collections.abc import Mapping, Sequence
@@ -34,26 +35,32 @@ USAGE = (
 )
 
 
-def load_map(path: Path, log: Any) -> Any:
-    """The nav_msgs/OccupancyGrid of the map described at ``path``; None after logging why not."""
+def load_map(path: Path, log: Any, deprecated: MapSpec | None = None) -> Any:
+    """The nav_msgs/OccupancyGrid of the map described at ``path``; None after logging why not.
+    With ``deprecated`` (``map_server IMAGE RESOLUTION``), ``path`` is the image itself."""
     from rosx_turtle.stage.world.images import ImageError, read_channels  # noqa: PLC0415 - turtlesim's parts load only when used
 
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError:
-        log(ERROR, f"Map_server could not open {path}.")
-        return None
-    try:
-        spec = parse_map_yaml(text)
-    except MapFileError as exc:
-        log(ERROR, str(exc))
-        return None
-    image = Path(spec.image) if spec.image.startswith("/") else path.parent / spec.image
+    if deprecated is None:
+        try:
+            text = path.read_text(encoding="utf-8")
+        except OSError:
+            log(ERROR, f"Map_server could not open {path}.")
+            return None
+        try:
+            spec = parse_map_yaml(text)
+        except MapFileError as exc:
+            log(ERROR, str(exc))
+            return None
+        image = Path(spec.image) if spec.image.startswith("/") else path.parent / spec.image
+    else:
+        spec, image = deprecated, path
     log(INFO, f'Loading map from image "{image}"')
     try:
         pixels = read_channels(image)
     except ImageError as exc:
-        log(ERROR, f'failed to open image file "{image}": {exc}')
+        # SDL_image's words, which map_server reads its images with.
+        why = f"Couldn't open {image}" if exc.missing else "Unsupported image format"
+        log(ERROR, f'failed to open image file "{image}": {why}')
         return None
     grid = get_message_class("nav_msgs/OccupancyGrid")()
     info = grid.info
@@ -118,16 +125,41 @@ class MapServerNode:
         return self.node.wait_for_shutdown(timeout)
 
 
+def _deprecated_spec(words: Sequence[str], params: Mapping[str, Any]) -> MapSpec:
+    """``map_server IMAGE RESOLUTION``: the image at the origin, its thresholds and ``negate``
+    from the private parameters given on the command line (``_negate:=1``), else
+    map_server's defaults."""
+
+    def number(name: str, default: float) -> float:
+        value = params.get(name, default)
+        return float(value) if isinstance(value, (int, float)) else default
+
+    return MapSpec(
+        words[0],
+        atof(words[1]),
+        (0.0, 0.0, 0.0),
+        bool(number("negate", 0)),
+        number("occupied_thresh", 0.65),
+        number("free_thresh", 0.196),
+    )
+
+
 def run_map_server(argv: Sequence[str], env: Env | None = None) -> int:
     """Run map_server until a signal or a shutdown; the exit status (255 as ``exit(-1)``)."""
     env = env or ProcessEnv()
-    args = NodeArgs.parse(argv, "map_server")
+    args = NodeArgs.parse(argv, roscpp_anonymous_name("map_server"))
     console = Console(env.stdout, env.stderr, env.environ)
     words = list(args.argv)
-    if len(words) != 1:
+    if len(words) not in (1, 2):
         console.print(ERROR, USAGE)
         return 255
-    grid = load_map(Path(words[0]), console.print)
+    deprecated = None
+    if len(words) == 2:
+        console.print(
+            WARN, "Using deprecated map server interface. Please switch to new interface."
+        )
+        deprecated = _deprecated_spec(words, args.params)
+    grid = load_map(Path(words[0]), console.print, deprecated)
     if grid is None:
         return 255
 

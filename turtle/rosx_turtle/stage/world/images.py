@@ -20,7 +20,12 @@ _HEADER_FIELD = re.compile(rb"\s*(?:#[^\n]*\n\s*)*(\S+)")
 
 
 class ImageError(ValueError):
-    """An image that cannot be read; the message names the file."""
+    """An image that cannot be read; the message names the file. ``missing``: the file could
+    not be opened at all (else it is not an image rosx reads)."""
+
+    def __init__(self, message: str, *, missing: bool = False) -> None:
+        super().__init__(message)
+        self.missing = missing
 
 
 def parse_pgm(data: bytes, name: str = "image") -> npt.NDArray[np.uint8]:
@@ -78,7 +83,7 @@ def read_channels(path: Path) -> npt.NDArray[np.uint8]:
     try:
         data = path.read_bytes()
     except OSError as exc:
-        raise ImageError(f"{path}: {exc.strerror or exc}") from None
+        raise ImageError(f"{path}: {exc.strerror or exc}", missing=True) from None
     if data[:2] in (b"P2", b"P5"):
         return parse_pgm(data, str(path))[:, :, None]
     try:
@@ -99,8 +104,8 @@ def read_channels(path: Path) -> npt.NDArray[np.uint8]:
             else:
                 converted = image.convert("RGBA" if "A" in mode else "RGB")
             pixels = np.asarray(converted, dtype=np.uint8)
-    except (OSError, ValueError) as exc:
-        raise ImageError(f"{path}: not an image Pillow can read ({exc})") from None
+    except (OSError, ValueError):
+        raise ImageError(f"{path}: not an image Pillow can read") from None
     return pixels if pixels.ndim == 3 else pixels[:, :, None]
 
 
