@@ -97,6 +97,7 @@ class Node:
         io: LoopThread | None = None,
         private_params: Mapping[str, str] | None = None,
         warn_refusals: bool = False,
+        first_seq: int = 1,
     ) -> None:
         env = os.environ if environ is None else environ
         self.environ = env
@@ -120,6 +121,8 @@ class Node:
         self.subscriptions: dict[str, Subscription] = {}
         self.services: dict[str, ServiceServer] = {}
         self._pub_handles: dict[str, int] = {}
+        #: The ``header.seq`` of each publication's first message (1: rospy's count; 0: roscpp's).
+        self.first_seq = first_seq
         self._lock = threading.RLock()
         self._shutdown = threading.Event()
         self._closed = threading.Event()
@@ -357,6 +360,7 @@ class Node:
                     PublicationInfo(name, info.type, info.md5sum, info.message_definition, False),
                     queue_size=queue_size,
                     has_header=has_header,
+                    first_seq=self.first_seq,
                 )
                 publication.unix_address = self._tcpros.unix_address
                 self.publications[name] = publication

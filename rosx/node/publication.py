@@ -6,7 +6,7 @@ holding a large byte array (an image, a point cloud) is framed in parts instead,
 itself one of them, sent without a serialized copy (`rosx.msg.codec.parts`). A latching
 publication keeps the last frame and sends it to each new subscriber right after the header
 (ROS wiki ROS/TCPROS). Messages with a ``std_msgs/Header`` get the publication's sequence
-number in ``header.seq``, as rospy does.
+number in ``header.seq``, from 1 as rospy counts (from 0, as roscpp, for a node that asks).
 
 Subscribers of the same process are `rosx.node.local.LocalLink` objects: each gets a copy of
 the message object (never serialized), queued on its subscription's receiver from the
@@ -137,6 +137,7 @@ class Publication:
         *,
         queue_size: int | None,
         has_header: bool = False,
+        first_seq: int = 1,
     ) -> None:
         self.io = io
         self.info = info
@@ -150,8 +151,9 @@ class Publication:
         self.latched: Frame | None = None
         #: The latched message as published in this process (None: only `latched` holds it).
         self.latched_local: LocalMessage | None = None
-        #: The last ``header.seq`` given (messages with a header only).
-        self.seq = 0
+        #: The last ``header.seq`` given (messages with a header only); the first message gets
+        #: ``first_seq``: 1 as rospy counts, 0 as roscpp does.
+        self.seq = first_seq - 1
         self.bytes_published = 0
         self.closed = False
         #: The node's UNIXROS address, for describing connections (`rosx.node.unixros`).

@@ -66,6 +66,22 @@ def test_same_messages_in_the_same_order(make_node: Callable[..., Node]) -> None
     assert [m.header.seq for m in got] == list(range(1, 2001))
 
 
+def test_a_node_that_counts_as_roscpp_numbers_its_headers_from_0(
+    make_node: Callable[..., Node],
+) -> None:
+    """rospy's first ``header.seq`` is 1 (above); roscpp's is 0, and rosx's C++ programs
+    (map_server's latched map, stageros's odometry) count as roscpp does."""
+    a, b = make_node("cpp_pub", first_seq=0), make_node("cpp_sub")
+    got: list[Any] = []
+    sub = b.subscribe("/cpp_pose", PoseStamped, got.append)
+    pub = a.advertise("/cpp_pose", PoseStamped, queue_size=None)
+    wait_for(linked(pub, sub))
+    for _ in range(3):
+        pub.publish(PoseStamped())
+    wait_for(lambda: len(got) == 3)
+    assert [m.header.seq for m in got] == [0, 1, 2]
+
+
 def test_the_local_thread_is_ready_when_the_link_connects(make_node: Callable[..., Node]) -> None:
     """Before the first message: a publisher may flood as soon as it sees the subscriber, and
     a thread still starting then would wait for the GIL while the queue overflows."""

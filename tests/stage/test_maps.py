@@ -177,6 +177,7 @@ def test_map_server_latches_and_serves_and_map_saver_writes_it_back(
             112,
             98,
         )
+        assert grid_msg.header.seq == 0  # roscpp's first
         assert (meta[0].width, meta[0].height) == (112, 98)
         get_map = get_service_class("nav_msgs/GetMap")
         served = client.service_client("/static_map", get_map).call(

@@ -84,7 +84,8 @@ class NodeArgs(NamedTuple):
         )
 
     def make_node(self, environ: Mapping[str, str]) -> Node:
-        """A `Node` (not started) as these arguments describe it, quiet on the console."""
+        """A `Node` (not started) as these arguments describe it, quiet on the console; its
+        messages' ``header.seq`` counts from 0, as roscpp's do."""
         return Node(
             self.name,
             namespace=self.namespace,
@@ -93,6 +94,7 @@ class NodeArgs(NamedTuple):
             host=self.host,
             environ=environ,
             console=None,
+            first_seq=0,
         )
 
     def set_private_params(self, node: Node) -> None:
