@@ -447,9 +447,8 @@ def test_respawn_restarts_a_node_that_exits(world: dict[str, Any]) -> None:
     first, second, *_ = launch.pids()["resp-2"]
     assert first != second
     log_dir = Path(re.findall(r"logging to (\S+)", launch.out)[0]).parent
-    died = (
-        f"[resp-2] process has died [pid {first}, exit code 4, cmd {sys.executable} -m "
-        "rosx_commands run-script "
+    died = (  # the script's command line, as ROS 1 runs it
+        f"[resp-2] process has died [pid {first}, exit code 4, cmd "
         f"{world['home'] / 'src' / 'labl' / 'scripts' / 'quitter.py'} __name:=resp "
         f"__log:={log_dir / 'resp-2.log'}].\n"
         f"log file: {log_dir / 'resp-2'}*.log\n"

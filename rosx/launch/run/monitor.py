@@ -93,6 +93,8 @@ class LocalProcess:
         required: Its exit ends the launch.
         is_node: Pass ``__log:=`` (programs that are not ROS nodes do not get it).
         package: The package the program is from.
+        runner: Where in ``argv`` the words that run a Python script start, and how many they
+            are: left out where the command is shown (ROS 1 runs the script itself).
     """
 
     def __init__(
@@ -109,9 +111,11 @@ class LocalProcess:
         required: bool = False,
         is_node: bool = True,
         package: str = "",
+        runner: tuple[int, int] = (0, 0),
     ) -> None:
         self.name = name
         self.package = package
+        self.runner = runner
         self.base_argv = list(argv)
         self.environ = environ
         self.cwd = cwd
@@ -213,9 +217,17 @@ class LocalProcess:
         """Whether the process has been started and has not ended (records nothing)."""
         return self.popen is not None and self.popen.poll() is None
 
+    @property
+    def shown_argv(self) -> list[str]:
+        """`argv` as ROS 1 would run it: a Python script's path first, not the words that run
+        it with rosx's Python (`runner`)."""
+        start, count = self.runner
+        argv = self.argv
+        return [*argv[:start], *argv[start + count :]]
+
     def exit_description(self) -> str:
         """ROS 1's words for how the process ended, with its log files."""
-        command = " ".join(self.argv)
+        command = " ".join(self.shown_argv)
         if self.exit_code is None:
             text = f"process has died without exit code [pid {self.pid}, cmd {command}]."
         elif self.exit_code != 0:

@@ -620,6 +620,7 @@ class LaunchRun:
             "respawn_delay": node.respawn_delay,
             "required": node.required or self.settings.force_required,
             "package": node.package,
+            "runner": self._runner(node, executable),
         }
         cwd = self._cwd(node, executable)
         if self.zygote is not None and argv[: len(self.script_command)] == self.script_command:
@@ -651,6 +652,13 @@ class LaunchRun:
                 *command[prefix + 1 :],
             ], executable
         return command, executable
+
+    def _runner(self, node: Node, executable: Path | None) -> tuple[int, int]:
+        """Where `_program` put ``script_command`` in the command line, and its length."""
+        if executable is None or not is_python_script(executable):
+            return (0, 0)
+        prefix = len(shlex.split(node.launch_prefix)) if node.launch_prefix else 0
+        return (prefix, len(self.script_command))
 
     def _cwd(self, node: Node, executable: Path | None) -> Path:
         if node.cwd == "node" and executable is not None:
