@@ -3,11 +3,12 @@ the test's master, their log lines, their topics and files, and a clean exit on 
 
 from __future__ import annotations
 
+import contextlib
 import re
 import signal
 import subprocess
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -33,6 +34,16 @@ def start(args: list[str], master: str, cwd: Path) -> subprocess.Popen[str]:
     )  # fmt: skip
 
 
+@contextlib.contextmanager
+def stopped_after(process: subprocess.Popen[str]) -> Iterator[None]:
+    """Stop ``process`` if the block fails (its test goes on to `interrupted` otherwise)."""
+    try:
+        yield
+    except BaseException:
+        stop(process)
+        raise
+
+
 def interrupted(process: subprocess.Popen[str]) -> tuple[int, str]:
     """SIGINT, as Ctrl-C sends it; the exit status and everything printed."""
     process.send_signal(signal.SIGINT)
@@ -52,8 +63,9 @@ def test_stageros_runs_headless_publishes_and_stops_on_sigint(
     make_node("/probe").subscribe(
         "/base_scan", get_message_class("sensor_msgs/LaserScan"), scans.append
     )
-    wait_for(lambda: scans, timeout=60, what="a scan")
-    assert len(scans[0].ranges) == 181 and scans[0].header.frame_id == "base_laser_link"
+    with stopped_after(process):
+        wait_for(lambda: scans, timeout=60, what="a scan")
+        assert len(scans[0].ranges) == 181 and scans[0].header.frame_id == "base_laser_link"
     status, out = interrupted(process)
     assert status == 0, out
     assert 'Subscribed to Stage position model "r0"' in out
@@ -75,27 +87,29 @@ def test_map_server_serves_and_map_saver_writes_the_same_files(
     )
     grids: list[Any] = []
     probe.subscribe("/map", get_message_class("nav_msgs/OccupancyGrid"), grids.append)
-    wait_for(lambda: grids, timeout=60, what="the latched map")
-    assert (grids[0].info.width, grids[0].info.height) == (112, 98)
-    saver = subprocess.run(
-        [*ROSRUN, "map_server", "map_saver", "-f", "saved"], env=clean_environ(ROS_MASTER_URI=master),
-        cwd=tmp_path, capture_output=True, text=True, timeout=60, check=False,
-    )  # fmt: skip
-    assert saver.returncode == 0, saver.stdout + saver.stderr
-    said = saver.stdout + saver.stderr
-    assert "Received a 112 X 98 map @ 0.050 m/pix" in said
-    assert "Writing map occupancy data to saved.pgm" in said
-    saved = (tmp_path / "saved.pgm").read_bytes()
-    assert saved.startswith(b"P5\n# CREATOR: map_saver.cpp 0.050 m/pix\n112 98\n255\n")
-    original = (maps / "turtlebot3_world.pgm").read_bytes()
-    assert np.array_equal(parse_pgm(saved), parse_pgm(original))
-    assert (
-        (tmp_path / "saved.yaml")
-        .read_text()
-        .startswith(
-            "image: saved.pgm\nresolution: 0.050000\norigin: [-2.800000, -2.450000, 0.000000]\n"
+    with stopped_after(server):
+        wait_for(lambda: grids, timeout=60, what="the latched map")
+        assert (grids[0].info.width, grids[0].info.height) == (112, 98)
+        saver = subprocess.run(
+            [*ROSRUN, "map_server", "map_saver", "-f", "saved"],
+            env=clean_environ(ROS_MASTER_URI=master),
+            cwd=tmp_path, capture_output=True, text=True, timeout=60, check=False,
+        )  # fmt: skip
+        assert saver.returncode == 0, saver.stdout + saver.stderr
+        said = saver.stdout + saver.stderr
+        assert "Received a 112 X 98 map @ 0.050 m/pix" in said
+        assert "Writing map occupancy data to saved.pgm" in said
+        saved = (tmp_path / "saved.pgm").read_bytes()
+        assert saved.startswith(b"P5\n# CREATOR: map_saver.cpp 0.050 m/pix\n112 98\n255\n")
+        original = (maps / "turtlebot3_world.pgm").read_bytes()
+        assert np.array_equal(parse_pgm(saved), parse_pgm(original))
+        assert (
+            (tmp_path / "saved.yaml")
+            .read_text()
+            .startswith(
+                "image: saved.pgm\nresolution: 0.050000\norigin: [-2.800000, -2.450000, 0.000000]\n"
+            )
         )
-    )
     status, out = interrupted(server)
     assert status == 0, out
     assert "Read a 112 X 98 map @ 0.050 m/cell" in out
@@ -113,13 +127,18 @@ def test_map_server_of_an_image_and_a_resolution_is_the_deprecated_form(
     server = start(["map_server", "map_server", "tiny.pgm", "0.5"], master, tmp_path)
     grids: list[Any] = []
     probe.subscribe("/map", get_message_class("nav_msgs/OccupancyGrid"), grids.append)
-    wait_for(lambda: grids, timeout=60, what="the latched map")
-    info = grids[0].info
-    assert (info.width, info.height, info.resolution) == (2, 2, 0.5)
-    assert (info.origin.position.x, info.origin.position.y, info.origin.orientation.w) == (0, 0, 1)
-    assert list(grids[0].data) == [0, 100, 100, 0]  # rows from the bottom; black is occupied
-    nodes = rosx("rosnode", "list", environ=clean_environ(ROS_MASTER_URI=master)).out.split()
-    assert any(re.fullmatch(r"/map_server_\d{19}", name) for name in nodes), nodes
+    with stopped_after(server):
+        wait_for(lambda: grids, timeout=60, what="the latched map")
+        info = grids[0].info
+        assert (info.width, info.height, info.resolution) == (2, 2, 0.5)
+        assert (info.origin.position.x, info.origin.position.y, info.origin.orientation.w) == (
+            0,
+            0,
+            1,
+        )
+        assert list(grids[0].data) == [0, 100, 100, 0]  # rows from the bottom; black is occupied
+        nodes = rosx("rosnode", "list", environ=clean_environ(ROS_MASTER_URI=master)).out.split()
+        assert any(re.fullmatch(r"/map_server_\d{19}", name) for name in nodes), nodes
     status, out = interrupted(server)
     assert status == 0, out
     assert re.search(

@@ -6,6 +6,7 @@ the first ``/clock``, as roscpp's ``ros::Time::waitForValid``."""
 from __future__ import annotations
 
 import math
+import threading
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -86,15 +87,32 @@ class MapServerNode:
         self._log = NodeLog(self.node, console, logger="ros.map_server")
 
     def start(self) -> MapServerNode:
-        """Register, latch ``map`` and ``map_metadata``, serve ``static_map``."""
+        """Register, then latch ``map`` and ``map_metadata`` and serve ``static_map``: at once
+        on the wall clock; under ``/use_sim_time`` once the first ``/clock`` has come (a
+        thread waits for it, as map_server's ``ros::Time::waitForValid()`` does, until the node
+        shuts down)."""
         node = self.node
         node.start()
         self.args.set_private_params(node)
         frame = node.params.get("~frame_id", "map")
-        # ROS time, as map_server stamps it after ros::Time::waitForValid(): under
-        # /use_sim_time, the first /clock's or later.
-        follow_sim_time(node)
-        node.clock.wait_for_valid(shutdown=node.shutdown_event)
+        if not follow_sim_time(node):
+            self._serve_map(frame)
+            return self
+        threading.Thread(target=self._serve_in_time, args=(frame,), daemon=True).start()
+        return self
+
+    def _serve_in_time(self, frame: object) -> None:
+        node = self.node
+        if not node.clock.wait_for_valid(shutdown=node.shutdown_event):
+            return
+        try:
+            self._serve_map(frame)
+        except Exception:
+            if not node.is_shutdown():  # shut down while it advertised: nothing to serve
+                raise
+
+    def _serve_map(self, frame: object) -> None:
+        node = self.node
         stamp = node.clock.now()
         grid = self.grid
         grid.header.frame_id = frame if isinstance(frame, str) else "map"
@@ -110,7 +128,6 @@ class MapServerNode:
         node.advertise(
             "map", get_message_class("nav_msgs/OccupancyGrid"), queue_size=1, latch=True
         ).publish(grid)
-        return self
 
     def _serve(self, request: Any) -> object:
         self._log(INFO, "Sending map")
