@@ -43,25 +43,17 @@ class LaunchError(Exception):
 
 
 class ResourceNotFoundError(LaunchError):
-    """A package that ``$(find PACKAGE)`` names is not on the package path; ``package`` names
-    it. ``str()`` says ``Resource not found: PACKAGE``; roslaunch says it as rospkg's error,
-    with the paths it searched (`rosx.launch.run.runner.LaunchRun`)."""
+    """A package not on the package path, named by ``$(find PACKAGE)`` or a node's ``pkg``;
+    ``package`` names it. ``str()`` says ``Resource not found: PACKAGE``; roslaunch says it as
+    rospkg's error, the package and the paths searched (`located`)."""
 
     def __init__(self, file: str, line: int, tag: str, package: str) -> None:
         super().__init__(file, line, tag, f"Resource not found: {package}")
         self.package = package
 
-
-class NodePackageError(LaunchError):
-    """A node's package is not on the package path; ``package`` names it.
-
-    ``str()`` says ``Resource not found: PACKAGE``; roslaunch, starting the node, says the
-    package alone and the paths it searched (`rosx.packages.index.PackageIndex.not_found_text`).
-    """
-
-    def __init__(self, file: str, line: int, tag: str, package: str) -> None:
-        super().__init__(file, line, tag, f"Resource not found: {package}")
-        self.package = package
+    def located(self) -> str:
+        """``FILE:LINE: <TAG>: PACKAGE``: where, then the package alone (what rospkg names)."""
+        return str(LaunchError(self.file, self.line, self.tag, self.package))
 
 
-__all__ = ["LaunchError", "NodePackageError", "ResourceNotFoundError"]
+__all__ = ["LaunchError", "ResourceNotFoundError"]

@@ -15,7 +15,7 @@ from __future__ import annotations
 import shlex
 from typing import TYPE_CHECKING
 
-from rosx.launch.errors import LaunchError, NodePackageError
+from rosx.launch.errors import LaunchError, ResourceNotFoundError
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Mapping
@@ -34,7 +34,8 @@ def node_program(node: Node, package_index: PackageIndex) -> Path:
 
     Raises:
         LaunchError: roslaunch's ``Cannot locate node of type [T] in package [P]…``, or
-            `NodePackageError`: the package is not found; the error names the ``<node>`` tag.
+            `ResourceNotFoundError`: the package is not found; the error names the ``<node>``
+            tag.
     """
     from rosx.packages.index import PackageNotFoundError  # noqa: PLC0415 - the package index loads only when used
     from rosx.workspace.executables import find_executables  # noqa: PLC0415 - workspace code loads only when used
@@ -43,7 +44,7 @@ def node_program(node: Node, package_index: PackageIndex) -> Path:
     try:
         directory = package_index.find(node.package)
     except PackageNotFoundError:
-        raise NodePackageError(node.source.file, node.source.line, tag, node.package) from None
+        raise ResourceNotFoundError(node.source.file, node.source.line, tag, node.package) from None
     # roslaunch looks for a file *named* type: a type holding "/" is never found.
     found = find_executables(directory, node.type).executables if "/" not in node.type else []
     if not found:

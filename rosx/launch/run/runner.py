@@ -50,7 +50,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rosx.launch.errors import LaunchError, NodePackageError, ResourceNotFoundError
+from rosx.launch.errors import LaunchError, ResourceNotFoundError
 from rosx.launch.model import CORE_SOURCE
 from rosx.launch.run.monitor import (
     DEFAULT_SIGINT_TIMEOUT,
@@ -281,8 +281,7 @@ class LaunchRun:
         try:
             return self._load()
         except ResourceNotFoundError as error:
-            where = LaunchError(error.file, error.line, error.tag, error.package)
-            text = self.package_index.not_found_text(str(where))
+            text = self.package_index.not_found_text(error.located())
             raise LaunchFailedError(text, prefix="Resource not found: ") from error
         except LaunchError as error:
             raise LaunchFailedError(str(error)) from error
@@ -595,9 +594,8 @@ class LaunchRun:
             )
         except LaunchError as exc:
             text = str(exc)
-            if isinstance(exc, NodePackageError):
-                where = LaunchError(exc.file, exc.line, exc.tag, "")
-                text = f"{where}{index.not_found_text(exc.package)}"
+            if isinstance(exc, ResourceNotFoundError):
+                text = index.not_found_text(exc.located())
             kind = f"{node.package}/{node.type}"
             self.console.error(f"ERROR: cannot launch node of type [{kind}]: {text}")
             return None
