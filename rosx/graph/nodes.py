@@ -65,19 +65,11 @@ def unreachable_reasons(
     def why(node: str) -> str | None:
         uri = master.lookup_node(node)
         if uri is None:
-            return f"cannot ping [{node}]: unknown node"
+            return _failure_words(node, None, None)
         try:
             master.node_call(uri, "getPid", timeout=timeout)
-        except CallTimeoutError:
-            return f"connection to [{node}] timed out"
-        except ConnectError as error:
-            if error.errno == errno.ECONNREFUSED:
-                return f"ERROR: connection refused to [{uri}]"
-            if error.errno in (socket.EAI_NONAME, socket.EAI_AGAIN):
-                return f"ERROR: Unknown host [{urlsplit(uri).hostname}] for node [{node}]"
-            return f"connection to [{node}] failed"
-        except (TransportError, FaultError):
-            return f"connection to [{node}] failed"
+        except (TransportError, FaultError) as error:
+            return _failure_words(node, uri, error)
         except MasterError:
             return None  # it answered
         return None
@@ -93,19 +85,29 @@ def contact_failure(node: str, uri: str | None, timeout: float = PING_TIMEOUT) -
     """Why ``node`` (at ``uri``, None when the master does not know it) did not answer, in the
     words rosnode's ping prints."""
     if uri is None:
-        return f"cannot ping [{node}]: unknown node"
+        return _failure_words(node, None, None)
     parts = urlsplit(uri)
     try:
         with socket.create_connection((parts.hostname or "", parts.port or 80), timeout=timeout):
             pass
-    except socket.gaierror:
-        return f"ERROR: Unknown host [{parts.hostname}] for node [{node}]"
-    except ConnectionRefusedError:
+    except OSError as error:
+        return _failure_words(node, uri, error)
+    return _failure_words(node, uri, None)
+
+
+def _failure_words(node: str, uri: str | None, error: BaseException | None) -> str:
+    """rosnode ping's words for ``node`` not answering: unknown to the master (``uri`` None),
+    its host unknown, the connection refused or timed out (``error``: a socket's or a call's),
+    else failed."""
+    if uri is None:
+        return f"cannot ping [{node}]: unknown node"
+    number = error.errno if isinstance(error, (OSError, ConnectError)) else None
+    if isinstance(error, socket.gaierror) or number in (socket.EAI_NONAME, socket.EAI_AGAIN):
+        return f"ERROR: Unknown host [{urlsplit(uri).hostname}] for node [{node}]"
+    if isinstance(error, ConnectionRefusedError) or number == errno.ECONNREFUSED:
         return f"ERROR: connection refused to [{uri}]"
-    except TimeoutError:
+    if isinstance(error, (TimeoutError, CallTimeoutError)):
         return f"connection to [{node}] timed out"
-    except OSError:
-        return f"connection to [{node}] failed"
     return f"connection to [{node}] failed"
 
 
